@@ -1,0 +1,38 @@
+# gnomon: the two quick-start commands (`make demo`, `make test`) and their helpers.
+# SANITIZE=1 builds with ASan+UBSan (Debug) into build/asan instead of build/release.
+
+SANITIZE ?= 0
+JOBS ?= $(shell nproc)
+ifeq ($(SANITIZE),1)
+  BUILD_DIR := build/asan
+  CMAKE_ARGS := -DCMAKE_BUILD_TYPE=Debug -DGNOMON_SANITIZE=ON
+else
+  BUILD_DIR := build/release
+  CMAKE_ARGS := -DCMAKE_BUILD_TYPE=Release
+endif
+GNOMON := $(BUILD_DIR)/apps/gnomon/gnomon
+OUT ?= out
+
+.PHONY: all deps configure build demo test format clean
+all: build
+
+deps:
+	@scripts/deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD_DIR) $(CMAKE_ARGS) >/dev/null
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+demo: build
+	@scripts/demo.sh $(GNOMON) $(OUT)
+
+test: build
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+format:
+	@git ls-files '*.cpp' '*.h' | xargs clang-format -i
+
+clean:
+	@rm -rf build out

@@ -1,0 +1,113 @@
+#include <regex>
+
+#include "RenderOptionsCli.h"
+#include "gnomon/Error.h"
+
+namespace gnomon::cli {
+namespace {
+
+const RenderOptions kDefaults;
+
+template <typename T>
+std::string str(T v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+[[noreturn]] void bad(const std::string& flag, const std::string& message) {
+    throw Error(ErrorKind::InvalidInput, flag + ": " + message);
+}
+
+template <typename E>
+E parseEnum(const std::string& flag, const std::string& value,
+            std::optional<E> (*parse)(const std::string&), const char* choices) {
+    if (auto v = parse(value)) return *v;
+    bad(flag, "expected one of " + std::string(choices) + ", got '" + value + "'");
+}
+
+}  // namespace
+
+void RenderFlags::add(CLI::App& a) {
+    app = &a;
+    const ShadowOptions& s = kDefaults.shadow;
+    a.add_option("--size", size,
+                 "output size WIDTHxHEIGHT (default: the scene's, usually 512x512)");
+    a.add_option("--time", time,
+                 "seconds of animation to pose (default 0: book triangle unrotated)");
+    a.add_option("--light-only", lightOnly,
+                 "render with only light N on (default: scene's switches)");
+    a.add_option("--shadows", shadows,
+                 "on|off: off disables every shadow test, lighting unchanged (default on)");
+    a.add_option(
+        "--outside", outside,
+        "lit|clamp: lookups outside a light's map (default lit; clamp shows the textbooks' error)");
+    a.add_option(
+        "--map-size", mapSize,
+        "shadow map texels per side for every light, 16..16384 (default 0: each light's own)");
+    a.add_option(
+        "--bias-constant", biasConstant,
+        "tolerance added to the stored depth, [0,1) (default " + str(s.biasConstant) + ")");
+    a.add_option("--bias-slope", biasSlope,
+                 "polygon-offset factor in the depth pass (default " + str(s.biasSlope) + ")");
+    a.add_option("--bias-units", biasUnits,
+                 "polygon-offset units in the depth pass (default " + str(s.biasUnits) + ")");
+    a.add_option("--normal-offset", normalOffset,
+                 "lookup offset along the normal, in texels x (1 - N.L) (default " +
+                     str(s.normalOffset) + ")");
+    a.add_option("--cull", cull,
+                 "back|front|none: faces culled in the depth pass (default back; double-sided "
+                 "materials never)");
+    a.add_option("--filter", filter, "none|hw2x2|pcf: shadow map lookup filter (default pcf)");
+    a.add_option("--pcf-size", pcfSize,
+                 "PCF kernel width, odd 1..9 (default " + str(s.pcfSize) + ")");
+    a.add_option("--shadowed", shadowed,
+                 "ambient|factor: a shadowed fragment keeps ambient only, or is multiplied by "
+                 "--shadow-factor (default: scene's; ambient)");
+    a.add_option("--shadow-factor", shadowFactor,
+                 "colour multiplier in shadow for --shadowed factor, 0..1 (default 0.7)");
+}
+
+void RenderFlags::apply(RenderOptions& o) const {
+    auto given = [&](const char* flag) { return app->count(flag) > 0; };
+    if (given("--size")) {
+        static const std::regex kSize(R"((\d{1,5})x(\d{1,5}))");
+        std::smatch m;
+        if (!std::regex_match(size, m, kSize)) {
+            bad("--size", "expected WIDTHxHEIGHT such as 512x512, got '" + size + "'");
+        }
+        o.width = std::stoi(m[1].str());
+        o.height = std::stoi(m[2].str());
+    }
+    if (given("--time")) o.time = time;
+    if (given("--light-only")) o.lightOnly = lightOnly;
+    if (given("--shadows")) {
+        if (shadows != "on" && shadows != "off")
+            bad("--shadows", "expected on or off, got '" + shadows + "'");
+        o.shadow.enabled = shadows == "on";
+    }
+    if (given("--outside"))
+        o.shadow.outside = parseEnum("--outside", outside, parseOutsidePolicy, "lit, clamp");
+    if (given("--map-size")) o.shadow.mapSize = mapSize;
+    if (given("--bias-constant")) o.shadow.biasConstant = biasConstant;
+    if (given("--bias-slope")) o.shadow.biasSlope = biasSlope;
+    if (given("--bias-units")) o.shadow.biasUnits = biasUnits;
+    if (given("--normal-offset")) o.shadow.normalOffset = normalOffset;
+    if (given("--cull"))
+        o.shadow.cull = parseEnum("--cull", cull, parseCullMode, "back, front, none");
+    if (given("--filter"))
+        o.shadow.filter = parseEnum("--filter", filter, parseShadowFilter, "none, hw2x2, pcf");
+    if (given("--pcf-size")) o.shadow.pcfSize = pcfSize;
+    if (given("--shadowed"))
+        o.shading.shadowedRule =
+            parseEnum("--shadowed", shadowed, parseShadowedRule, "ambient, factor");
+    if (given("--shadow-factor")) o.shading.shadowFactor = shadowFactor;
+    if (auto problems = o.validate(); !problems.empty()) {
+        std::string all;
+        for (const auto& p : problems)
+            all += (all.empty() ? "" : "; ") + p;
+        throw Error(ErrorKind::InvalidInput, all);
+    }
+}
+
+}  // namespace gnomon::cli

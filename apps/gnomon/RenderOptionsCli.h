@@ -1,0 +1,25 @@
+// Command-line flags for RenderOptions: one flag per option, each with its one-line doc and
+// the library's default. Flags the user did not give keep the scene's authored value.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "gnomon/Options.h"
+
+namespace gnomon::cli {
+
+struct RenderFlags {
+    std::string size, shadows, outside, cull, filter, shadowed;
+    int lightOnly = -1, mapSize = 0, pcfSize = 3;
+    double time = 0.0;
+    float biasConstant = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0, shadowFactor = 0;
+    CLI::App* app = nullptr;
+
+    // Declares the flags on `app`.
+    void add(CLI::App& app);
+    // Applies the given flags over `options`; throws gnomon::Error for bad values.
+    void apply(RenderOptions& options) const;
+};
+
+}  // namespace gnomon::cli

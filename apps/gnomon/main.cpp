@@ -1,0 +1,113 @@
+// gnomon: the command-line tool. Subcommands: `scenes` lists the built-in scenes, `render`
+// draws one frame to a PNG (and optionally each light's shadow map). Exit codes: 0 success,
+// 1 failure (I/O, OpenGL), 2 bad usage or input.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+
+#include "RenderOptionsCli.h"
+#include "gnomon/gnomon.h"
+
+namespace {
+
+int runScenes(bool namesOnly) {
+    for (const gnomon::SceneInfo& s : gnomon::builtinScenes()) {
+        if (namesOnly) {
+            std::printf("%s\n", s.name.c_str());
+        } else {
+            std::printf("%-20s %s\n", s.name.c_str(), s.description.c_str());
+        }
+    }
+    return 0;
+}
+
+struct RenderArgs {
+    std::string scene, out, shadowMaps;
+    gnomon::cli::RenderFlags flags;
+};
+
+int runRender(const RenderArgs& args, bool verbose) {
+    gnomon::Scene scene = gnomon::loadScene(args.scene);
+    gnomon::RenderOptions options = scene.options;
+    args.flags.apply(options);
+    if (options.lightOnly >= int(scene.lights.size())) {
+        throw gnomon::Error(gnomon::ErrorKind::InvalidInput,
+                            "--light-only " + std::to_string(options.lightOnly) + ": scene '" +
+                                scene.name + "' has " + std::to_string(scene.lights.size()) +
+                                " light(s)");
+    }
+    gnomon::ContextOptions context;
+    context.verbose = verbose;
+    gnomon::Renderer renderer(context);
+    const gnomon::Image image = renderer.render(scene, options);
+    gnomon::writePng(args.out, image);
+    if (!args.shadowMaps.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(args.shadowMaps, ec);
+        if (ec) {
+            throw gnomon::Error(gnomon::ErrorKind::Io, "--shadow-maps: cannot create folder '" +
+                                                           args.shadowMaps + "': " + ec.message());
+        }
+        for (const gnomon::ShadowMapImage& map : renderer.shadowMaps()) {
+            const std::string path =
+                args.shadowMaps + "/light-" + std::to_string(map.light) + ".png";
+            gnomon::writePng(path, map.depth);
+            if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
+        }
+    }
+    if (verbose) {
+        const gnomon::FrameStats stats = renderer.lastFrameStats();
+        std::fprintf(stderr, "gnomon: %d shadow pass(es), %.1f MiB of shadow maps\n",
+                     stats.shadowPasses, double(stats.shadowMapBytes) / (1024.0 * 1024.0));
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"gnomon: real-time shadows you can measure (OpenGL 4.5 core, headless)"};
+    app.require_subcommand(1);
+    bool verbose = false;
+    app.add_flag("-v,--verbose", verbose,
+                 "print OpenGL vendor/renderer/version and what was written");
+    app.set_version_flag("--version", gnomon::version());
+
+    bool namesOnly = false;
+    CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes");
+    scenes->add_flag("--names", namesOnly, "names only, one per line");
+
+    RenderArgs render;
+    CLI::App* renderCmd = app.add_subcommand("render", "render one frame to a PNG file");
+    renderCmd
+        ->add_option("--scene", render.scene,
+                     "built-in scene name (see `gnomon scenes`) or model file")
+        ->required();
+    renderCmd->add_option("--out", render.out, "output PNG path (written atomically)")->required();
+    renderCmd->add_option(
+        "--shadow-maps", render.shadowMaps,
+        "also write each light's shadow map as DIR/light-N.png (16-bit grey, darker = nearer)");
+    render.flags.add(*renderCmd);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+    try {
+        if (*scenes) return runScenes(namesOnly);
+        if (*renderCmd) return runRender(render, verbose);
+    } catch (const gnomon::Error& e) {
+        std::fprintf(stderr, "gnomon: error: %s\n", e.what());
+        return e.kind() == gnomon::ErrorKind::InvalidInput ? 2 : 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "gnomon: error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,74 @@
+// Render options: everything a user can set for a frame, as documented structs with one
+// default each (unit, range, default on one line). The CLI flags, the viewer and tests all
+// fill these same structs; validate() explains what is wrong in words.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gnomon {
+
+// What a shadowed fragment keeps (SPEC S4).
+enum class ShadowedRule {
+    AmbientOnly,  // the light's diffuse and specular terms are dropped (course text)
+    Factor,       // the fragment's colour is multiplied by shadowFactor (WebGL book: 0.7)
+};
+
+// A fragment outside a light's shadow map (SPEC S9).
+enum class OutsidePolicy {
+    Lit,    // correct: nothing in the map can shadow it
+    Clamp,  // the textbooks' clamp-to-edge lookup, shows the error they warn about
+};
+
+// Faces drawn in the depth pass (SPEC S14).
+enum class CullMode { Back, Front, None };
+
+// How the shadow map is sampled (SPEC S13, S17).
+enum class ShadowFilter {
+    None,   // one nearest texel, one comparison: hard, aliased edges
+    Hw2x2,  // hardware comparison sampler with LINEAR: 2x2 bilinear PCF
+    Pcf,    // pcfSize x pcfSize box of hardware 2x2 comparisons
+};
+
+struct ShadowOptions {
+    bool enabled = true;                         // false: every shadow test off, lighting unchanged
+    OutsidePolicy outside = OutsidePolicy::Lit;  // lookups outside a light's map
+    float biasConstant = 0.0002f;                // stored-depth units [0,1] added to the map depth
+    float biasSlope = 1.5f;                      // glPolygonOffset factor in the depth pass, >= 0
+    float biasUnits = 2.0f;                      // glPolygonOffset units in the depth pass, >= 0
+    float normalOffset = 1.0f;                // shift along the normal, in map texels x (1 - N.L)
+    CullMode cull = CullMode::Back;           // faces culled in the depth pass
+    ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
+    int pcfSize = 3;                          // kernel width for Pcf, odd, 1..9
+    int mapSize = 0;  // texels per side for every light, 0 = each light's own
+};
+
+struct ShadingOptions {
+    ShadowedRule shadowedRule = ShadowedRule::AmbientOnly;  // what a shadowed fragment keeps
+    float shadowFactor = 0.7f;  // colour multiplier for ShadowedRule::Factor, 0..1
+};
+
+struct RenderOptions {
+    int width = 512;       // output width in pixels, 1..16384
+    int height = 512;      // output height in pixels, 1..16384
+    double time = 0.0;     // seconds: poses animated scenes (book triangle: 40 deg/s)
+    int lightOnly = -1;    // >= 0: only this light (index) is on; -1: the scene's own switches
+    ShadowOptions shadow;  // shadow technique
+    ShadingOptions shading;
+
+    // Empty when valid; otherwise one sentence per problem, naming the option.
+    std::vector<std::string> validate() const;
+};
+
+// Names as the CLI spells them, for parsing and printing.
+const char* toString(ShadowedRule v);
+const char* toString(OutsidePolicy v);
+const char* toString(CullMode v);
+const char* toString(ShadowFilter v);
+std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
+std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
+std::optional<CullMode> parseCullMode(const std::string& s);
+std::optional<ShadowFilter> parseShadowFilter(const std::string& s);
+
+}  // namespace gnomon

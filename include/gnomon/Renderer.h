@@ -1,0 +1,54 @@
+// The one headless path: render(scene, options) -> Image, used by the CLI, the tests and
+// later the viewer. A Renderer owns an OpenGL 4.5 core context (EGL, no window) and the GPU
+// copies of the last scene it drew; geometry is uploaded once and reused across frames.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gnomon/Image.h"
+#include "gnomon/Options.h"
+#include "gnomon/Scene.h"
+
+namespace gnomon {
+
+struct ContextOptions {
+    bool verbose = false;  // print GL vendor/renderer/version to stderr
+    bool debug = false;    // KHR_debug messages to stderr (on by default in Debug builds)
+};
+
+// One light's shadow map read back from the GPU (SPEC S26: grey, darker = nearer).
+struct ShadowMapImage {
+    int light = 0;  // index into Scene::lights
+    Image16 depth;  // stored depth 0..1 scaled to 0..65535
+};
+
+struct FrameStats {
+    int shadowPasses = 0;            // shadow maps rendered this frame
+    std::size_t shadowMapBytes = 0;  // GPU memory held by shadow maps
+};
+
+class Renderer {
+public:
+    // Creates the headless context; throws gnomon::Error (kind Gl) with one sentence
+    // naming what is missing when no usable OpenGL 4.5 core is available.
+    explicit Renderer(const ContextOptions& options = {});
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Renders one frame. Throws gnomon::Error for invalid options or scenes.
+    Image render(const Scene& scene, const RenderOptions& options);
+    // The shadow maps of the last frame, one per shadowed light.
+    std::vector<ShadowMapImage> shadowMaps();
+    FrameStats lastFrameStats() const;
+    // "vendor / renderer / version".
+    std::string glInfo() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> mImpl;
+};
+
+}  // namespace gnomon

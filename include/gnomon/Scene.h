@@ -1,0 +1,141 @@
+// The scene model (no GL): meshes, materials, objects placing meshes in the world, the view
+// camera, lights with their shadow settings, and the options the scene was authored with.
+// Built-in scenes reproduce the textbooks' set-ups with their exact numbers (SPEC section 8).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gnomon/Options.h"
+
+namespace gnomon {
+
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;    // model space
+    std::vector<glm::vec3> normals;      // model space, unit length, one per position
+    std::vector<glm::vec3> colours;      // optional per-vertex colour (empty: material colour)
+    std::vector<std::uint32_t> indices;  // triangle list; 3 per triangle
+};
+
+struct Material {
+    std::string name;
+    glm::vec3 baseColour{1.0f};  // linear RGB, 0..1
+    float specular = 0.3f;       // strength of the Blinn-Phong highlight, 0..1
+    float shininess = 30.0f;     // Blinn-Phong exponent, > 0
+    bool unlit = false;          // colour is output as is (times shadow factor), no lighting
+    bool doubleSided = false;    // open surface: never culled, lit from either side
+};
+
+// A constant rotation over time about an axis through `pivot` (SPEC S27).
+struct Spin {
+    glm::vec3 axis{0.0f, 1.0f, 0.0f};
+    float degreesPerSecond = 0.0f;
+    glm::vec3 pivot{0.0f};
+};
+
+struct Object {
+    std::string name;
+    std::uint32_t mesh = 0;      // index into Scene::meshes
+    std::uint32_t material = 0;  // index into Scene::materials
+    glm::mat4 worldFromModel{1.0f};
+    Spin spin;                    // applied after worldFromModel, at RenderOptions::time
+    bool castsShadows = true;     // drawn into shadow maps (SPEC S23)
+    bool receivesShadows = true;  // looks up shadow maps in the main pass (SPEC S23)
+
+    glm::mat4 worldFromModelAt(double seconds) const;
+};
+
+enum class Projection { Perspective, Orthographic };
+
+struct Camera {
+    glm::vec3 eye{0.0f, 0.0f, 5.0f};
+    glm::vec3 centre{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    Projection projection = Projection::Perspective;
+    float fovyDegrees = 45.0f;  // perspective vertical field of view
+    float aspect = 0.0f;        // width / height; 0 = from the output image
+    float near = 1.0f;
+    float far = 100.0f;
+    float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;  // orthographic volume
+};
+
+enum class LightType {
+    Directional,  // parallel rays along `direction`, no falloff (SPEC S18)
+    Spot,         // from `position` along `direction` inside a cone, falls off (SPEC S19)
+    Point,        // from `position` in all directions, falls off (SPEC S21)
+};
+
+// How a light's shadow camera is placed (SPEC S6-S8).
+enum class ShadowCameraPolicy {
+    Fit,     // fitted to the scene's bounds: tightest volume, tight near/far
+    Manual,  // look at `target` with `up`, the projection numbers as given
+    Course,  // the course text: look at the view camera's centre with the view camera's up
+};
+
+struct ShadowCamera {
+    ShadowCameraPolicy policy = ShadowCameraPolicy::Fit;
+    Projection projection = Projection::Perspective;  // Manual/Course; Fit picks per type
+    glm::vec3 target{0.0f};                           // Manual look-at point
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovyDegrees = 90.0f;  // perspective
+    float aspect = 1.0f;
+    float near = 1.0f;
+    float far = 100.0f;
+    float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;  // orthographic
+};
+
+// Distance falloff 1 / (c0 + c1 d + c2 d^2) (SPEC S4).
+struct Attenuation {
+    float constant = 1.0f;
+    float linear = 0.0f;
+    float quadratic = 0.0f;
+};
+
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    bool enabled = true;
+    glm::vec3 position{0.0f};                // world space (spot, point)
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // world space, towards where light goes
+    glm::vec3 colour{1.0f};
+    float intensity = 1.0f;
+    Attenuation attenuation;         // ignored for directional lights
+    float innerConeDegrees = 20.0f;  // spot: full intensity inside (half-angle)
+    float outerConeDegrees = 30.0f;  // spot: zero outside (half-angle)
+    bool castsShadows = true;
+    int shadowMapSize = 1024;  // texels per side, 16..16384
+    ShadowCamera shadowCamera;
+};
+
+struct Scene {
+    std::string name;
+    std::string description;  // one line
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Object> objects;
+    std::vector<Light> lights;
+    Camera camera;
+    glm::vec3 ambient{0.1f};  // ambient light colour, times the material colour
+    RenderOptions options;    // the options the scene was authored with; callers start here
+
+    // Empty when consistent; otherwise one sentence per problem (index out of range, NaN...).
+    std::vector<std::string> validate() const;
+};
+
+struct SceneInfo {
+    std::string name;
+    std::string description;
+};
+
+// The scenes gnomon ships, in a stable order.
+std::vector<SceneInfo> builtinScenes();
+// A built-in scene by name; throws gnomon::Error listing the known names.
+Scene builtinScene(const std::string& name);
+// A built-in scene name or a path to a model file; throws gnomon::Error.
+Scene loadScene(const std::string& nameOrPath);
+
+}  // namespace gnomon

@@ -1,0 +1,13 @@
+// gnomon: real-time shadows you can measure. Include this for the whole public API.
+#pragma once
+
+#include "gnomon/Error.h"
+#include "gnomon/Image.h"
+#include "gnomon/Options.h"
+#include "gnomon/Renderer.h"
+#include "gnomon/Scene.h"
+
+namespace gnomon {
+// "MAJOR.MINOR.PATCH" of the library.
+const char* version();
+}  // namespace gnomon

@@ -1,0 +1,82 @@
+#version 450 core
+// Main pass shading (SPEC S4): ambient + Blinn-Phong diffuse and specular per light in view
+// space, attenuation 1/(c0 + c1 d + c2 d^2), spot cones, and per-light shadow visibility.
+// A shadowed fragment keeps ambient only (SHADOWED_FACTOR undefined) or has its colour
+// multiplied by uShadowFactor per shadowing light (SHADOWED_FACTOR, the WebGL book's 0.7).
+// SHADOWS_OFF skips every lookup and leaves lighting unchanged.
+#include "scene_data.glsl"
+#include "lights.glsl"
+#include "shadow_lookup.glsl"
+
+in VertexOut {
+    vec3 wsPosition;
+    vec3 wsNormal;
+    vec3 vsPosition;
+    vec3 vsNormal;
+    vec3 colour;
+} vIn;
+
+layout(location = 3) uniform vec3 uAmbient;
+layout(location = 4) uniform float uShadowFactor;
+layout(location = 5) uniform mat4 uWorldFromView;
+
+layout(location = 0) out vec4 fragColour;
+
+void main() {
+    ObjectData o = objects[uObject];
+    bool unlit = o.material.z > 0.5;
+    bool receives = o.flags.x > 0.5;
+    vec3 vsN = normalize(vIn.vsNormal);
+    vec3 wsN = normalize(vIn.wsNormal);
+    if (o.material.w > 0.5 && !gl_FrontFacing) {  // double-sided: light the side we see
+        vsN = -vsN;
+        wsN = -wsN;
+    }
+    vec3 base = vIn.colour;
+    vec3 vsToEye = normalize(-vIn.vsPosition);
+
+    vec3 lit = unlit ? base : uAmbient * base;
+    float factor = 1.0;
+    for (int i = 0; i < lights.length(); ++i) {
+        LightData light = lights[i];
+        if (light.vsDirection.w < 0.5) continue;
+        int type = int(light.vsPosition.w);
+        vec3 vsToLight;
+        float falloff = 1.0;
+        if (type == kDirectional) {
+            vsToLight = -normalize(light.vsDirection.xyz);
+        } else {
+            vec3 d = light.vsPosition.xyz - vIn.vsPosition;
+            float dist = length(d);
+            vsToLight = d / dist;
+            vec3 c = light.attenuation.xyz;
+            falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
+            if (type == kSpot) {
+                float cosAngle = dot(-vsToLight, normalize(light.vsDirection.xyz));
+                falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
+            }
+        }
+        float visibility = 1.0;
+#ifndef SHADOWS_OFF
+        if (receives && light.colour.w >= 0.0) {
+            vec3 wsToLight = mat3(uWorldFromView) * vsToLight;
+            visibility = shadowVisibility(light, vIn.wsPosition, wsN, wsToLight);
+        }
+#endif
+        if (unlit) {
+            factor *= mix(uShadowFactor, 1.0, visibility);
+            continue;
+        }
+        float nDotL = max(dot(vsN, vsToLight), 0.0);
+        vec3 h = normalize(vsToLight + vsToEye);
+        float spec = nDotL > 0.0 ? o.material.x * pow(max(dot(vsN, h), 0.0), o.material.y) : 0.0;
+        vec3 contribution = light.colour.rgb * falloff * (nDotL * base + spec);
+#ifdef SHADOWED_FACTOR
+        lit += contribution;
+        factor *= mix(uShadowFactor, 1.0, visibility);
+#else
+        lit += visibility * contribution;
+#endif
+    }
+    fragColour = vec4(lit * factor, 1.0);
+}

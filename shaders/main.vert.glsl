@@ -1,0 +1,32 @@
+#version 450 core
+// Main pass (SPEC S1, S2): carries each surface point in world space (shadow lookups) and
+// view space (lighting), and to clip space for the rasteriser.
+#include "scene_data.glsl"
+
+layout(location = 0) in vec3 msPosition;
+layout(location = 1) in vec3 msNormal;
+layout(location = 2) in vec3 vertexColour;
+
+layout(location = 1) uniform mat4 uViewFromWorld;
+layout(location = 2) uniform mat4 uClipFromView;
+
+out VertexOut {
+    vec3 wsPosition;
+    vec3 wsNormal;
+    vec3 vsPosition;
+    vec3 vsNormal;
+    vec3 colour;
+} vOut;
+
+void main() {
+    ObjectData o = objects[uObject];
+    vec4 wsPosition = o.worldFromModel * vec4(msPosition, 1.0);
+    vec3 wsNormal = normalize(mat3(o.worldFromModelNormal) * msNormal);
+    vec4 vsPosition = uViewFromWorld * wsPosition;
+    vOut.wsPosition = wsPosition.xyz;
+    vOut.wsNormal = wsNormal;
+    vOut.vsPosition = vsPosition.xyz;
+    vOut.vsNormal = mat3(uViewFromWorld) * wsNormal;
+    vOut.colour = vertexColour * o.baseColour.rgb;
+    gl_Position = uClipFromView * vsPosition;
+}

@@ -1,0 +1,49 @@
+// Shadow map lookup (SPEC S2, S9, S13, S17): world point -> light texture space, divide by
+// w, compare with the stored depth plus tolerance. Depth maps of all lights live in one
+// texture array (one layer per light, a light's map in the layer's lower-left corner).
+//
+// Variants (injected #defines): FILTER_NONE | FILTER_HW2X2 | FILTER_PCF with PCF_SIZE,
+// OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
+layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
+
+// Visibility of a world point for one light, 0 (shadowed) .. 1 (lit).
+float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
+    float layer = light.colour.w;
+    float uvScale = light.shadow.w;
+    float texelUv = light.shadowBias.z;
+
+    // Normal offset: move the lookup point off the surface by a fraction of a texel's
+    // world size, more where the surface is steep to the light (fewer texels per area).
+    vec4 clip = light.textureFromWorld * vec4(wsPosition, 1.0);
+    float texelWorld = light.shadow.y * (light.shadow.z > 0.5 ? 1.0 : clip.w);
+    float nDotL = clamp(dot(wsNormal, wsToLight), 0.0, 1.0);
+    vec3 offset = wsNormal * (light.shadowBias.y * texelWorld * (1.0 - nDotL));
+    vec4 shadowCoord = light.textureFromWorld * vec4(wsPosition + offset, 1.0);
+    vec3 coord = shadowCoord.xyz / shadowCoord.w;
+
+#ifdef OUTSIDE_CLAMP
+    coord.xy = clamp(coord.xy, 0.0, 1.0);
+#else
+    if (shadowCoord.w <= 0.0 || any(lessThan(coord, vec3(0.0))) ||
+        any(greaterThan(coord, vec3(1.0)))) {
+        return 1.0;
+    }
+#endif
+    float reference = coord.z - light.shadowBias.x;
+    // The light's map covers [0, uvScale] of the layer; keep every tap inside it.
+    vec2 lo = vec2(0.5 * texelUv), hi = vec2(uvScale - 0.5 * texelUv);
+    vec2 uv = coord.xy * uvScale;
+#if defined(FILTER_PCF)
+    float sum = 0.0;
+    const int r = PCF_SIZE / 2;
+    for (int y = -r; y <= r; ++y) {
+        for (int x = -r; x <= r; ++x) {
+            vec2 tap = clamp(uv + vec2(x, y) * texelUv, lo, hi);
+            sum += texture(uShadowMaps, vec4(tap, layer, reference));
+        }
+    }
+    return sum / float(PCF_SIZE * PCF_SIZE);
+#else
+    return texture(uShadowMaps, vec4(clamp(uv, lo, hi), layer, reference));
+#endif
+}

@@ -1,0 +1,96 @@
+// Option names as the CLI spells them, and validation with one sentence per problem.
+#include <cmath>
+#include <string>
+
+#include "gnomon/Options.h"
+
+namespace gnomon {
+namespace {
+
+template <typename E, size_t N>
+std::optional<E> lookup(const std::string& s, const std::pair<const char*, E> (&table)[N]) {
+    for (const auto& [name, value] : table) {
+        if (s == name) return value;
+    }
+    return std::nullopt;
+}
+
+template <typename E, size_t N>
+const char* nameOf(E v, const std::pair<const char*, E> (&table)[N]) {
+    for (const auto& [name, value] : table) {
+        if (v == value) return name;
+    }
+    return "?";
+}
+
+const std::pair<const char*, ShadowedRule> kRules[] = {{"ambient", ShadowedRule::AmbientOnly},
+                                                       {"factor", ShadowedRule::Factor}};
+const std::pair<const char*, OutsidePolicy> kOutside[] = {{"lit", OutsidePolicy::Lit},
+                                                          {"clamp", OutsidePolicy::Clamp}};
+const std::pair<const char*, CullMode> kCull[] = {
+    {"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}};
+const std::pair<const char*, ShadowFilter> kFilters[] = {
+    {"none", ShadowFilter::None}, {"hw2x2", ShadowFilter::Hw2x2}, {"pcf", ShadowFilter::Pcf}};
+
+bool finite(float v) {
+    return std::isfinite(v);
+}
+
+}  // namespace
+
+const char* toString(ShadowedRule v) {
+    return nameOf(v, kRules);
+}
+const char* toString(OutsidePolicy v) {
+    return nameOf(v, kOutside);
+}
+const char* toString(CullMode v) {
+    return nameOf(v, kCull);
+}
+const char* toString(ShadowFilter v) {
+    return nameOf(v, kFilters);
+}
+std::optional<ShadowedRule> parseShadowedRule(const std::string& s) {
+    return lookup(s, kRules);
+}
+std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s) {
+    return lookup(s, kOutside);
+}
+std::optional<CullMode> parseCullMode(const std::string& s) {
+    return lookup(s, kCull);
+}
+std::optional<ShadowFilter> parseShadowFilter(const std::string& s) {
+    return lookup(s, kFilters);
+}
+
+std::vector<std::string> RenderOptions::validate() const {
+    std::vector<std::string> problems;
+    auto need = [&](bool ok, const std::string& what) {
+        if (!ok) problems.push_back(what);
+    };
+    need(width >= 1 && width <= 16384 && height >= 1 && height <= 16384,
+         "size " + std::to_string(width) + "x" + std::to_string(height) +
+             " is outside 1x1..16384x16384");
+    need(std::isfinite(time), "time must be a finite number of seconds");
+    need(lightOnly >= -1, "light-only must be a light index >= 0 (or -1 for all)");
+    const ShadowOptions& s = shadow;
+    need(finite(s.biasConstant) && s.biasConstant >= 0.0f && s.biasConstant < 1.0f,
+         "bias-constant must be in [0, 1) (stored-depth units), got " +
+             std::to_string(s.biasConstant));
+    need(finite(s.biasSlope) && s.biasSlope >= 0.0f && s.biasSlope <= 100.0f,
+         "bias-slope must be in [0, 100], got " + std::to_string(s.biasSlope));
+    need(finite(s.biasUnits) && s.biasUnits >= 0.0f && s.biasUnits <= 1.0e6f,
+         "bias-units must be in [0, 1e6], got " + std::to_string(s.biasUnits));
+    need(finite(s.normalOffset) && s.normalOffset >= 0.0f && s.normalOffset <= 100.0f,
+         "normal-offset must be in [0, 100] texels, got " + std::to_string(s.normalOffset));
+    need(s.pcfSize >= 1 && s.pcfSize <= 9 && s.pcfSize % 2 == 1,
+         "pcf-size must be odd and in 1..9, got " + std::to_string(s.pcfSize));
+    need(s.mapSize == 0 || (s.mapSize >= 16 && s.mapSize <= 16384),
+         "map-size must be 0 (each light's own) or in 16..16384, got " + std::to_string(s.mapSize));
+    need(finite(shading.shadowFactor) && shading.shadowFactor >= 0.0f &&
+             shading.shadowFactor <= 1.0f,
+         "shadow-factor must be in [0, 1], got " + std::to_string(shading.shadowFactor));
+    return problems;
+}
+
+}  // namespace gnomon

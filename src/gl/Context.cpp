@@ -1,0 +1,207 @@
+#include "gl/Context.h"
+
+#include <dlfcn.h>
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <vector>
+
+#include "gnomon/Error.h"
+
+namespace gnomon::gl {
+namespace {
+
+std::string eglErrorName(EGLint e) {
+    switch (e) {
+        case EGL_NOT_INITIALIZED:
+            return "EGL_NOT_INITIALIZED";
+        case EGL_BAD_ACCESS:
+            return "EGL_BAD_ACCESS";
+        case EGL_BAD_ALLOC:
+            return "EGL_BAD_ALLOC";
+        case EGL_BAD_ATTRIBUTE:
+            return "EGL_BAD_ATTRIBUTE";
+        case EGL_BAD_CONFIG:
+            return "EGL_BAD_CONFIG";
+        case EGL_BAD_CONTEXT:
+            return "EGL_BAD_CONTEXT";
+        case EGL_BAD_DISPLAY:
+            return "EGL_BAD_DISPLAY";
+        case EGL_BAD_MATCH:
+            return "EGL_BAD_MATCH";
+        case EGL_BAD_PARAMETER:
+            return "EGL_BAD_PARAMETER";
+        default: {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "EGL error 0x%04X", unsigned(e));
+            return buf;
+        }
+    }
+}
+
+[[noreturn]] void fail(const std::string& sentence) {
+    throw Error(ErrorKind::Gl, sentence);
+}
+
+bool hasExtension(const char* list, const char* name) {
+    if (!list) return false;
+    const std::size_t n = std::strlen(name);
+    for (const char* p = std::strstr(list, name); p; p = std::strstr(p + 1, name)) {
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+    }
+    return false;
+}
+
+// eglInitialize/eglTerminate are per display, shared by every context on it: count users.
+std::mutex gDisplayMutex;
+int gDisplayUsers = 0;
+
+EGLDisplay openDisplay(std::string& platform) {
+    // epoxy aborts the process when libEGL is missing; check first to say so in words.
+    if (void* lib = dlopen("libEGL.so.1", RTLD_LAZY | RTLD_LOCAL)) {
+        dlclose(lib);
+    } else {
+        fail("no usable OpenGL: libEGL.so.1 is missing (install the Debian package libegl1)");
+    }
+    const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    std::string tried;
+    if (hasExtension(clientExts, "EGL_MESA_platform_surfaceless")) {
+        EGLDisplay d =
+            eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) {
+            platform = "EGL surfaceless";
+            return d;
+        }
+        tried += " surfaceless: " + eglErrorName(eglGetError()) + ";";
+    }
+    if (hasExtension(clientExts, "EGL_EXT_platform_device") &&
+        hasExtension(clientExts, "EGL_EXT_device_enumeration")) {
+        EGLDeviceEXT devices[16];
+        EGLint count = 0;
+        if (eglQueryDevicesEXT(16, devices, &count)) {
+            for (EGLint i = 0; i < count; ++i) {
+                EGLDisplay d =
+                    eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+                if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) {
+                    platform = "EGL device " + std::to_string(i);
+                    return d;
+                }
+            }
+        }
+        tried += " device: " + eglErrorName(eglGetError()) + ";";
+    }
+    if (tried.empty()) {
+        fail(
+            "no usable OpenGL: EGL offers neither the surfaceless nor the device platform "
+            "(client extensions: " +
+            std::string(clientExts ? clientExts : "none") + ")");
+    }
+    fail("no usable OpenGL: EGL could not be initialised (" + tried.substr(1) +
+         " is Mesa's driver package libgl1-mesa-dri installed?)");
+}
+
+}  // namespace
+
+HeadlessContext::HeadlessContext(bool debug, bool verbose) {
+    std::lock_guard lock(gDisplayMutex);
+    EGLDisplay display = openDisplay(mPlatform);
+    ++gDisplayUsers;
+    mDisplay = display;
+    auto cleanup = [&] {
+        if (--gDisplayUsers == 0) eglTerminate(display);
+    };
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        cleanup();
+        fail("no usable OpenGL: this EGL cannot bind the desktop OpenGL API (" +
+             eglErrorName(eglGetError()) + ")");
+    }
+    EGLConfig config = EGL_NO_CONFIG_KHR;
+    if (!hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) {
+        const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+        EGLint n = 0;
+        if (!eglChooseConfig(display, attribs, &config, 1, &n) || n < 1) {
+            cleanup();
+            fail("no usable OpenGL: EGL has no config for desktop OpenGL");
+        }
+    }
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     4,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     5,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_CONTEXT_OPENGL_DEBUG,
+                                     debug ? EGL_TRUE : EGL_FALSE,
+                                     EGL_NONE};
+    mContext = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs);
+    if (mContext == EGL_NO_CONTEXT) {
+        const EGLint e = eglGetError();
+        cleanup();
+        fail("no usable OpenGL: the driver cannot create an OpenGL 4.5 core context (" +
+             eglErrorName(e) + "; gnomon needs OpenGL 4.5, Mesa's llvmpipe provides it)");
+    }
+    makeCurrent();
+    if (verbose) {
+        std::fprintf(stderr, "gnomon: OpenGL %s via %s\n", currentGlInfo().c_str(),
+                     mPlatform.c_str());
+    }
+    requireGl45();
+    if (debug) installDebugOutput();
+}
+
+HeadlessContext::~HeadlessContext() {
+    std::lock_guard lock(gDisplayMutex);
+    eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(mDisplay, mContext);
+    if (--gDisplayUsers == 0) eglTerminate(mDisplay);
+}
+
+void HeadlessContext::makeCurrent() {
+    if (eglGetCurrentContext() == mContext) return;
+    if (!eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, mContext)) {
+        fail("cannot make the OpenGL context current without a surface (" +
+             eglErrorName(eglGetError()) + ")");
+    }
+}
+
+std::string currentGlInfo() {
+    auto str = [](GLenum e) {
+        const GLubyte* s = glGetString(e);
+        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+    };
+    return str(GL_VENDOR) + " / " + str(GL_RENDERER) + " / " + str(GL_VERSION);
+}
+
+void requireGl45() {
+    const int version = epoxy_gl_version();
+    GLint mask = 0;
+    glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+    if (version < 45 || !(mask & GL_CONTEXT_CORE_PROFILE_BIT)) {
+        fail("no usable OpenGL: gnomon needs OpenGL 4.5 core, the driver gave " + currentGlInfo());
+    }
+}
+
+namespace {
+void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
+                               GLsizei length, const GLchar* message, const void*) {
+    (void)source;
+    (void)id;
+    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+    const char* kind = type == GL_DEBUG_TYPE_ERROR         ? "error"
+                       : type == GL_DEBUG_TYPE_PERFORMANCE ? "performance"
+                                                           : "warning";
+    std::fprintf(stderr, "gnomon: GL %s: %.*s\n", kind, int(length), message);
+}
+}  // namespace
+
+void installDebugOutput() {
+    if (!epoxy_has_gl_extension("GL_KHR_debug") && epoxy_gl_version() < 43) return;
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    glDebugMessageCallback(onDebugMessage, nullptr);
+}
+
+}  // namespace gnomon::gl

@@ -1,0 +1,120 @@
+#include "gl/Objects.h"
+
+#include "gnomon/Error.h"
+
+namespace gnomon::gl {
+
+void setLabel(GLenum identifier, GLuint name, const std::string& label) {
+    if (!label.empty() && epoxy_has_gl_extension("GL_KHR_debug")) {
+        glObjectLabel(identifier, name, GLsizei(label.size()), label.c_str());
+    }
+}
+
+Buffer::Buffer(const std::string& label, std::size_t bytes, const void* data, GLbitfield flags) {
+    GLuint n = 0;
+    glCreateBuffers(1, &n);
+    static_cast<Object&>(*this) = Object(n);
+    mSize = bytes;
+    // Zero-size storage is an error in GL; keep one byte so empty scenes stay valid.
+    glNamedBufferStorage(n, GLsizeiptr(bytes > 0 ? bytes : 1), bytes > 0 ? data : nullptr, flags);
+    setLabel(GL_BUFFER, n, label);
+}
+
+void Buffer::update(std::size_t offset, std::size_t bytes, const void* data) {
+    if (bytes > 0) glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
+}
+
+VertexArray::VertexArray(const std::string& label) {
+    GLuint n = 0;
+    glCreateVertexArrays(1, &n);
+    static_cast<Object&>(*this) = Object(n);
+    setLabel(GL_VERTEX_ARRAY, n, label);
+}
+
+Texture Texture::array2D(const std::string& label, GLenum internalFormat, int width, int height,
+                         int layers) {
+    GLuint n = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &n);
+    glTextureStorage3D(n, 1, internalFormat, width, height, layers);
+    setLabel(GL_TEXTURE, n, label);
+    return Texture(n, internalFormat, width, height, layers);
+}
+
+Texture Texture::plain2D(const std::string& label, GLenum internalFormat, int width, int height) {
+    GLuint n = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &n);
+    glTextureStorage2D(n, 1, internalFormat, width, height);
+    setLabel(GL_TEXTURE, n, label);
+    return Texture(n, internalFormat, width, height, 1);
+}
+
+Sampler::Sampler(const std::string& label) {
+    GLuint n = 0;
+    glCreateSamplers(1, &n);
+    static_cast<Object&>(*this) = Object(n);
+    setLabel(GL_SAMPLER, n, label);
+}
+
+Sampler& Sampler::set(GLenum parameter, GLint value) {
+    glSamplerParameteri(id(), parameter, value);
+    return *this;
+}
+
+Sampler& Sampler::setBorder(float r, float g, float b, float a) {
+    const float colour[4] = {r, g, b, a};
+    glSamplerParameterfv(id(), GL_TEXTURE_BORDER_COLOR, colour);
+    return *this;
+}
+
+Framebuffer::Framebuffer(const std::string& label) : mLabel(label) {
+    GLuint n = 0;
+    glCreateFramebuffers(1, &n);
+    static_cast<Object&>(*this) = Object(n);
+    setLabel(GL_FRAMEBUFFER, n, label);
+}
+
+std::string framebufferStatusText(GLenum status) {
+    switch (status) {
+        case GL_FRAMEBUFFER_COMPLETE:
+            return "complete";
+        case GL_FRAMEBUFFER_UNDEFINED:
+            return "undefined (no default framebuffer)";
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+            return "incomplete attachment (an attached image is not renderable or has no size)";
+        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+            return "missing attachment (nothing is attached)";
+        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
+            return "incomplete draw buffer (a draw buffer names an empty attachment)";
+        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
+            return "incomplete read buffer (the read buffer names an empty attachment)";
+        case GL_FRAMEBUFFER_UNSUPPORTED:
+            return "unsupported (this combination of formats is not supported by the driver)";
+        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+            return "incomplete multisample (attachments differ in sample count)";
+        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
+            return "incomplete layer targets (layered and non-layered attachments mixed)";
+        default:
+            return "unknown status 0x" + [&] {
+                char buf[16];
+                std::snprintf(buf, sizeof buf, "%04X", status);
+                return std::string(buf);
+            }();
+    }
+}
+
+void Framebuffer::checkComplete() const {
+    const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        throw Error(ErrorKind::Gl, "framebuffer '" + mLabel +
+                                       "' is not complete: " + framebufferStatusText(status));
+    }
+}
+
+Query::Query(const std::string& label, GLenum target) {
+    GLuint n = 0;
+    glCreateQueries(target, 1, &n);
+    static_cast<Object&>(*this) = Object(n);
+    setLabel(GL_QUERY, n, label);
+}
+
+}  // namespace gnomon::gl

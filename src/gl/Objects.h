@@ -1,0 +1,111 @@
+// The GL object wrappers gnomon uses: buffers, vertex arrays, textures, samplers,
+// framebuffers (completeness reported in words, SPEC S5), shaders/programs and queries.
+// All creation is DSA; every object gets a debug label so captures and KHR_debug read well.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "gl/Object.h"
+
+namespace gnomon::gl {
+
+struct BufferDeleter {
+    static void destroy(GLuint n) { glDeleteBuffers(1, &n); }
+};
+struct VertexArrayDeleter {
+    static void destroy(GLuint n) { glDeleteVertexArrays(1, &n); }
+};
+struct TextureDeleter {
+    static void destroy(GLuint n) { glDeleteTextures(1, &n); }
+};
+struct SamplerDeleter {
+    static void destroy(GLuint n) { glDeleteSamplers(1, &n); }
+};
+struct FramebufferDeleter {
+    static void destroy(GLuint n) { glDeleteFramebuffers(1, &n); }
+};
+struct ProgramDeleter {
+    static void destroy(GLuint n) { glDeleteProgram(n); }
+};
+struct ShaderDeleter {
+    static void destroy(GLuint n) { glDeleteShader(n); }
+};
+struct QueryDeleter {
+    static void destroy(GLuint n) { glDeleteQueries(1, &n); }
+};
+
+class Buffer : public Object<BufferDeleter> {
+public:
+    Buffer() = default;
+    // Immutable storage of `bytes` (data may be null); flags as glNamedBufferStorage.
+    Buffer(const std::string& label, std::size_t bytes, const void* data, GLbitfield flags);
+    std::size_t size() const { return mSize; }
+    void update(std::size_t offset, std::size_t bytes, const void* data);
+
+private:
+    std::size_t mSize = 0;
+};
+
+class VertexArray : public Object<VertexArrayDeleter> {
+public:
+    VertexArray() = default;
+    explicit VertexArray(const std::string& label);
+};
+
+class Texture : public Object<TextureDeleter> {
+public:
+    Texture() = default;
+    // 2D texture array with `layers` layers of width x height, one mip level.
+    static Texture array2D(const std::string& label, GLenum internalFormat, int width, int height,
+                           int layers);
+    // 2D texture, one mip level.
+    static Texture plain2D(const std::string& label, GLenum internalFormat, int width, int height);
+    int width() const { return mWidth; }
+    int height() const { return mHeight; }
+    int layers() const { return mLayers; }
+    GLenum format() const { return mFormat; }
+
+private:
+    Texture(GLuint name, GLenum format, int w, int h, int layers)
+        : Object(name), mWidth(w), mHeight(h), mLayers(layers), mFormat(format) {}
+    int mWidth = 0, mHeight = 0, mLayers = 0;
+    GLenum mFormat = 0;
+};
+
+class Sampler : public Object<SamplerDeleter> {
+public:
+    Sampler() = default;
+    explicit Sampler(const std::string& label);
+    Sampler& set(GLenum parameter, GLint value);
+    Sampler& setBorder(float r, float g, float b, float a);
+};
+
+class Framebuffer : public Object<FramebufferDeleter> {
+public:
+    Framebuffer() = default;
+    explicit Framebuffer(const std::string& label);
+    // Throws gnomon::Error naming the completeness status in words (SPEC S5).
+    void checkComplete() const;
+
+private:
+    std::string mLabel;
+};
+
+// The status returned by glCheckNamedFramebufferStatus, in words.
+std::string framebufferStatusText(GLenum status);
+
+class Program : public Object<ProgramDeleter> {
+public:
+    Program() = default;
+    explicit Program(GLuint name) : Object(name) {}
+    GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+};
+
+class Query : public Object<QueryDeleter> {
+public:
+    Query() = default;
+    Query(const std::string& label, GLenum target);
+};
+
+}  // namespace gnomon::gl

@@ -1,0 +1,132 @@
+#include "render/GpuScene.h"
+
+#include <cstring>
+#include <string_view>
+
+#include "scene/SceneUtil.h"
+
+namespace gnomon::render {
+namespace {
+
+struct GpuVertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec3 colour;
+};
+
+template <typename T>
+void hashBytes(std::uint64_t& h, const std::vector<T>& v) {
+    const std::string_view bytes(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    h = h * 0x100000001b3ull ^ std::hash<std::string_view>{}(bytes) ^ v.size();
+}
+
+std::uint64_t geometryHash(const Scene& scene) {
+    std::uint64_t h = 0xcbf29ce484222325ull ^ scene.meshes.size();
+    for (const Mesh& m : scene.meshes) {
+        hashBytes(h, m.positions);
+        hashBytes(h, m.normals);
+        hashBytes(h, m.colours);
+        hashBytes(h, m.indices);
+    }
+    return h;
+}
+
+}  // namespace
+
+void GpuScene::uploadGeometry(const Scene& scene) {
+    std::vector<GpuVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    mMeshRanges.clear();
+    for (const Mesh& m : scene.meshes) {
+        mMeshRanges.emplace_back(indices.size() * sizeof(std::uint32_t), GLint(vertices.size()));
+        for (size_t i = 0; i < m.positions.size(); ++i) {
+            vertices.push_back(
+                {m.positions[i], m.normals[i], m.colours.empty() ? glm::vec3(1.0f) : m.colours[i]});
+        }
+        indices.insert(indices.end(), m.indices.begin(), m.indices.end());
+    }
+    mVertices =
+        gl::Buffer("scene vertices", vertices.size() * sizeof(GpuVertex), vertices.data(), 0);
+    mIndices =
+        gl::Buffer("scene indices", indices.size() * sizeof(std::uint32_t), indices.data(), 0);
+    mVao = gl::VertexArray("scene");
+    glVertexArrayVertexBuffer(mVao.id(), 0, mVertices.id(), 0, sizeof(GpuVertex));
+    glVertexArrayElementBuffer(mVao.id(), mIndices.id());
+    const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
+                               offsetof(GpuVertex, colour)};
+    for (GLuint a = 0; a < 3; ++a) {
+        glEnableVertexArrayAttrib(mVao.id(), a);
+        glVertexArrayAttribFormat(mVao.id(), a, 3, GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribBinding(mVao.id(), a, 0);
+    }
+    mMeshBounds = meshBounds(scene);
+    mObjectData.clear();  // forces the object upload below
+    mHaveGeometry = true;
+}
+
+bool GpuScene::sync(const Scene& scene, double seconds) {
+    bool changed = false;
+    const std::uint64_t hash = geometryHash(scene);
+    if (!mHaveGeometry || hash != mGeometryHash) {
+        uploadGeometry(scene);
+        mGeometryHash = hash;
+        changed = true;
+    }
+
+    // Object records: rebuilt on the CPU (cheap), uploaded only when they differ.
+    const size_t n = scene.objects.size();
+    const bool resized = mObjectData.size() != n;
+    mObjectData.resize(n);
+    mItems.resize(n);
+    bool dataChanged = resized;
+    mBounds = Aabb();
+    mCasterBounds = Aabb();
+    for (size_t i = 0; i < n; ++i) {
+        const Object& o = scene.objects[i];
+        const Material& mat = scene.materials[o.material];
+        GpuObject g;
+        g.worldFromModel = o.worldFromModelAt(seconds);
+        g.worldFromModelNormal =
+            glm::mat4(glm::transpose(glm::inverse(glm::mat3(g.worldFromModel))));
+        g.baseColour = glm::vec4(mat.baseColour, 1.0f);
+        g.material = {mat.specular, mat.shininess, mat.unlit ? 1.0f : 0.0f,
+                      mat.doubleSided ? 1.0f : 0.0f};
+        g.flags = {o.receivesShadows ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f};
+        if (resized || std::memcmp(&g, &mObjectData[i], sizeof g) != 0) {
+            mObjectData[i] = g;
+            dataChanged = true;
+        }
+        const Aabb box = mMeshBounds[o.mesh].transformed(g.worldFromModel);
+        mBounds.extend(box);
+        if (o.castsShadows) mCasterBounds.extend(box);
+        const Mesh& mesh = scene.meshes[o.mesh];
+        mItems[i] = {std::uint32_t(i),          GLsizei(mesh.indices.size()),
+                     mMeshRanges[o.mesh].first, mMeshRanges[o.mesh].second,
+                     mat.doubleSided,           o.castsShadows};
+    }
+    if (dataChanged) {
+        if (mObjects.size() != n * sizeof(GpuObject) || !mObjects) {
+            mObjects = gl::Buffer("scene objects", n * sizeof(GpuObject), mObjectData.data(),
+                                  GL_DYNAMIC_STORAGE_BIT);
+        } else {
+            mObjects.update(0, n * sizeof(GpuObject), mObjectData.data());
+        }
+        changed = true;
+    }
+    if (changed) ++mRevision;
+    return changed;
+}
+
+void GpuScene::bind() const {
+    glBindVertexArray(mVao.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mObjects.id());
+}
+
+void GpuScene::draw(const DrawItem& item) const {
+    if (item.indexCount == 0) return;
+    glUniform1ui(0, item.object);
+    glDrawElementsBaseVertex(GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT,
+                             reinterpret_cast<const void*>(item.firstIndexByte), item.baseVertex);
+}
+
+}  // namespace gnomon::render

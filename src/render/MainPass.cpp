@@ -1,0 +1,105 @@
+#include "render/MainPass.h"
+
+#include <cstring>
+
+#include "gl/Program.h"
+
+namespace gnomon::render {
+
+const gl::Program& MainPass::program(const RenderOptions& options) {
+    std::vector<std::string> defines;
+    const ShadowOptions& s = options.shadow;
+    if (!s.enabled) defines.push_back("SHADOWS_OFF");
+    if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
+    if (s.filter == ShadowFilter::Pcf) {
+        defines.push_back("FILTER_PCF");
+        defines.push_back("PCF_SIZE " + std::to_string(s.pcfSize));
+    } else {
+        defines.push_back(s.filter == ShadowFilter::None ? "FILTER_NONE" : "FILTER_HW2X2");
+    }
+    if (options.shading.shadowedRule == ShadowedRule::Factor) {
+        defines.push_back("SHADOWED_FACTOR");
+    }
+    std::string key;
+    for (const auto& d : defines)
+        key += d + ";";
+    auto it = mPrograms.find(key);
+    if (it == mPrograms.end()) {
+        it = mPrograms
+                 .emplace(key, gl::buildProgram("main [" + key + "]",
+                                                {{GL_VERTEX_SHADER, "main.vert.glsl"},
+                                                 {GL_FRAGMENT_SHADER, "main.frag.glsl"}},
+                                                defines))
+                 .first;
+    }
+    return it->second;
+}
+
+void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
+                      const RenderOptions& options) {
+    const gl::Program& prog = program(options);
+
+    // Lights: upload only when they differ from what the GPU holds.
+    const std::vector<GpuLight>& lights = *in.lights;
+    const size_t bytes = lights.size() * sizeof(GpuLight);
+    if (lights.size() != mUploaded.size() ||
+        (bytes > 0 && std::memcmp(lights.data(), mUploaded.data(), bytes) != 0) || !mLights) {
+        if (!mLights || mLights.size() < bytes) {
+            mLights = gl::Buffer("lights", bytes, lights.data(), GL_DYNAMIC_STORAGE_BIT);
+        } else {
+            mLights.update(0, bytes, lights.data());
+        }
+        mUploaded = lights;
+    }
+    // An empty buffer range would be unbindable; a zero-length array is what the shader needs.
+    if (bytes > 0) {
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, mLights.id(), 0, GLsizeiptr(bytes));
+    } else {
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, mLights.id(), 0, 1);
+    }
+
+    // Hardware comparison with NEAREST is one texel; LINEAR gives the 2x2 bilinear PCF.
+    if (!mSampler || mSamplerFilter != options.shadow.filter) {
+        const GLint filter = options.shadow.filter == ShadowFilter::None ? GL_NEAREST : GL_LINEAR;
+        mSampler = gl::Sampler("shadow map sampler");
+        mSampler.set(GL_TEXTURE_MIN_FILTER, filter)
+            .set(GL_TEXTURE_MAG_FILTER, filter)
+            .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
+            .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE)
+            .set(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE)
+            .set(GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        mSamplerFilter = options.shadow.filter;
+    }
+    if (!in.shadowMaps && !mDummyMaps) {
+        mDummyMaps = gl::Texture::array2D("no shadow maps", GL_DEPTH_COMPONENT32F, 1, 1, 1);
+    }
+    glBindTextureUnit(0, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
+    glBindSampler(0, mSampler.id());
+
+    glUseProgram(prog.id());
+    const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
+    glUniformMatrix4fv(1, 1, GL_FALSE, &in.viewFromWorld[0][0]);
+    glUniformMatrix4fv(2, 1, GL_FALSE, &in.clipFromView[0][0]);
+    glUniform3fv(3, 1, &in.ambient[0]);
+    glUniform1f(4, options.shading.shadowFactor);
+    glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
+
+    scene.bind();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glCullFace(GL_BACK);
+    bool culling = false;
+    glDisable(GL_CULL_FACE);
+    for (const DrawItem& item : scene.items()) {
+        if (item.doubleSided == culling) {
+            culling = !item.doubleSided;
+            culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+        }
+        scene.draw(item);
+    }
+    glDisable(GL_CULL_FACE);
+    glBindSampler(0, 0);
+}
+
+}  // namespace gnomon::render

@@ -1,0 +1,52 @@
+// The main pass (SPEC S1, S2, S4): the scene from the view camera, lit per light in view
+// space, each fragment looking up every shadowed light's map. Program variants (filter,
+// outside policy, shadowed rule, shadows off) are #defines injected into one shader file,
+// compiled once and cached.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl/Objects.h"
+#include "gnomon/Options.h"
+#include "render/GpuScene.h"
+#include "render/ShadowPass.h"
+
+namespace gnomon::render {
+
+// The std430 light record of shaders/lights.glsl.
+struct GpuLight {
+    glm::mat4 textureFromWorld{1.0f};
+    glm::vec4 vsPosition{0.0f};
+    glm::vec4 vsDirection{0.0f};
+    glm::vec4 colour{0.0f};
+    glm::vec4 attenuation{0.0f};
+    glm::vec4 shadow{0.0f};
+    glm::vec4 shadowBias{0.0f};
+};
+
+struct MainPassInputs {
+    glm::mat4 viewFromWorld{1.0f};
+    glm::mat4 clipFromView{1.0f};
+    glm::vec3 ambient{0.0f};
+    const std::vector<GpuLight>* lights = nullptr;
+    const gl::Texture* shadowMaps = nullptr;  // null when no light has a map
+};
+
+class MainPass {
+public:
+    void render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options);
+
+private:
+    const gl::Program& program(const RenderOptions& options);
+
+    std::map<std::string, gl::Program> mPrograms;
+    gl::Buffer mLights;
+    std::vector<GpuLight> mUploaded;
+    gl::Sampler mSampler;
+    ShadowFilter mSamplerFilter = ShadowFilter::Pcf;
+    gl::Texture mDummyMaps;  // bound when there is no shadow map, keeps the sampler valid
+};
+
+}  // namespace gnomon::render

@@ -1,0 +1,182 @@
+// Orchestrates a frame (SPEC S1): validate, sync the GPU scene, place each shadowed light's
+// camera, render the shadow maps, render the main pass into an offscreen target, read back.
+#include "gnomon/Renderer.h"
+
+#include <cmath>
+
+#include "gl/Context.h"
+#include "gnomon/Error.h"
+#include "render/GpuScene.h"
+#include "render/MainPass.h"
+#include "render/ShadowPass.h"
+#include "scene/SceneUtil.h"
+
+namespace gnomon {
+
+namespace {
+#ifdef NDEBUG
+constexpr bool kDebugBuild = false;
+#else
+constexpr bool kDebugBuild = true;
+#endif
+
+[[noreturn]] void invalid(const std::vector<std::string>& problems) {
+    std::string message;
+    for (const auto& p : problems)
+        message += (message.empty() ? "" : "; ") + p;
+    throw Error(ErrorKind::InvalidInput, message);
+}
+}  // namespace
+
+struct Renderer::Impl {
+    gl::HeadlessContext context;  // first: destroyed last, after every GL object below
+    render::GpuScene scene;
+    render::ShadowPass shadowPass;
+    render::MainPass mainPass;
+    gl::Texture colour, depth;
+    gl::Framebuffer target;
+    std::vector<render::ShadowedLight> shadowed;
+    std::vector<render::GpuLight> lights;
+    FrameStats stats;
+
+    explicit Impl(const ContextOptions& o) : context(o.debug || kDebugBuild, o.verbose) {}
+
+    void ensureTarget(int width, int height) {
+        if (target && colour.width() == width && colour.height() == height) return;
+        colour = gl::Texture::plain2D("output colour", GL_RGBA8, width, height);
+        depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT24, width, height);
+        target = gl::Framebuffer("output");
+        glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
+        glNamedFramebufferTexture(target.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        target.checkComplete();
+    }
+
+    void planLights(const Scene& s, const RenderOptions& options, const glm::mat4& viewFromWorld) {
+        shadowed.clear();
+        lights.clear();
+        const glm::mat4 textureFromClip = shadow::textureFromClip();
+        for (size_t i = 0; i < s.lights.size(); ++i) {
+            const Light& light = s.lights[i];
+            render::GpuLight g;
+            const int type = light.type == LightType::Directional ? 0
+                             : light.type == LightType::Spot      ? 1
+                                                                  : 2;
+            const glm::vec3 direction = glm::length(light.direction) > 0.0f
+                                            ? glm::normalize(light.direction)
+                                            : glm::vec3(0, -1, 0);
+            g.vsPosition =
+                glm::vec4(glm::vec3(viewFromWorld * glm::vec4(light.position, 1.0f)), float(type));
+            g.vsDirection = glm::vec4(glm::mat3(viewFromWorld) * direction,
+                                      lightIsOn(s, options, i) ? 1.0f : 0.0f);
+            g.colour = glm::vec4(light.colour * light.intensity, -1.0f);
+            g.attenuation = {light.attenuation.constant, light.attenuation.linear,
+                             light.attenuation.quadratic,
+                             std::cos(glm::radians(light.outerConeDegrees))};
+            g.shadow.x = std::cos(glm::radians(light.innerConeDegrees));
+            const int mapSize =
+                options.shadow.mapSize > 0 ? options.shadow.mapSize : light.shadowMapSize;
+            if (options.shadow.enabled && light.castsShadows && g.vsDirection.w > 0.5f) {
+                const shadow::LightCameraFrame frame =
+                    shadow::lightCameraFrame(light, s.camera, scene.bounds(), mapSize);
+                if (frame.valid) {
+                    g.colour.w = float(shadowed.size());
+                    g.textureFromWorld = textureFromClip * frame.clipFromWorld();
+                    g.shadow.y = frame.texelWorldSize;
+                    g.shadow.z = frame.orthographic ? 1.0f : 0.0f;
+                    shadowed.push_back({int(i), mapSize, frame,
+                                        light.shadowCamera.policy == ShadowCameraPolicy::Fit});
+                }
+            }
+            lights.push_back(g);
+        }
+        // uv scale and texel size depend on the array size, the largest map.
+        int arraySize = 0;
+        for (const auto& sl : shadowed)
+            arraySize = std::max(arraySize, sl.mapSize);
+        for (const auto& sl : shadowed) {
+            render::GpuLight& g = lights[size_t(sl.light)];
+            g.shadow.w = float(sl.mapSize) / float(arraySize);
+            g.shadowBias = {options.shadow.biasConstant, options.shadow.normalOffset,
+                            1.0f / float(arraySize), 0.0f};
+        }
+    }
+
+    Image render(const Scene& s, const RenderOptions& options) {
+        if (auto problems = options.validate(); !problems.empty()) invalid(problems);
+        if (auto problems = s.validate(); !problems.empty()) invalid(problems);
+        if (options.lightOnly >= int(s.lights.size())) {
+            throw Error(ErrorKind::InvalidInput, "light-only " + std::to_string(options.lightOnly) +
+                                                     ": scene '" + s.name + "' has " +
+                                                     std::to_string(s.lights.size()) + " lights");
+        }
+        context.makeCurrent();
+        scene.sync(s, options.time);
+
+        const float aspect = float(options.width) / float(options.height);
+        const glm::mat4 viewFromWorld = shadow::viewFromWorld(s.camera);
+        planLights(s, options, viewFromWorld);
+
+        stats = {};
+        stats.shadowPasses = shadowPass.render(scene, shadowed, options.shadow);
+        stats.shadowMapBytes = shadowed.empty() ? 0 : shadowPass.bytes();
+
+        ensureTarget(options.width, options.height);
+        glBindFramebuffer(GL_FRAMEBUFFER, target.id());
+        glViewport(0, 0, options.width, options.height);
+        const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        const float far = 1.0f;
+        glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, black);
+        glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &far);
+        render::MainPassInputs in;
+        in.viewFromWorld = viewFromWorld;
+        in.clipFromView = shadow::clipFromView(s.camera, aspect);
+        in.ambient = s.ambient;
+        in.lights = &lights;
+        in.shadowMaps = shadowed.empty() ? nullptr : &shadowPass.maps();
+        mainPass.render(scene, in, options);
+
+        Image image(options.width, options.height, 4);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                     image.pixels.data());
+        // GL rows run bottom-up; images top-down.
+        const size_t row = size_t(options.width) * 4;
+        std::vector<std::uint8_t> tmp(row);
+        for (int y = 0; y < options.height / 2; ++y) {
+            std::uint8_t* a = image.at(0, y);
+            std::uint8_t* b = image.at(0, options.height - 1 - y);
+            std::copy(a, a + row, tmp.data());
+            std::copy(b, b + row, a);
+            std::copy(tmp.data(), tmp.data() + row, b);
+        }
+        return image;
+    }
+};
+
+Renderer::Renderer(const ContextOptions& options) : mImpl(std::make_unique<Impl>(options)) {}
+Renderer::~Renderer() = default;
+
+Image Renderer::render(const Scene& scene, const RenderOptions& options) {
+    return mImpl->render(scene, options);
+}
+
+std::vector<ShadowMapImage> Renderer::shadowMaps() {
+    mImpl->context.makeCurrent();
+    std::vector<ShadowMapImage> out;
+    for (size_t layer = 0; layer < mImpl->shadowed.size(); ++layer) {
+        const auto& sl = mImpl->shadowed[layer];
+        out.push_back({sl.light, mImpl->shadowPass.readBack(int(layer), sl.mapSize)});
+    }
+    return out;
+}
+
+FrameStats Renderer::lastFrameStats() const {
+    return mImpl->stats;
+}
+
+std::string Renderer::glInfo() const {
+    mImpl->context.makeCurrent();
+    return gl::currentGlInfo();
+}
+
+}  // namespace gnomon

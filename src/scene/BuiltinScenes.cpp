@@ -1,0 +1,290 @@
+// The built-in scenes: the textbooks' set-ups with their exact numbers (SPEC section 8).
+// book-*: the WebGL book's Shadow / Shadow_highp samples; course-*: the course text's
+// two-light experiment (models of seeds/models rebuilt from their numbers); tutorial-room*:
+// the tutorial's sun over a room, with thick (boxes) or thin (single quads) walls (SPEC S15).
+#include <functional>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gnomon/Error.h"
+#include "scene/MeshBuilder.h"
+
+namespace gnomon {
+namespace {
+
+std::uint32_t addMesh(Scene& s, Mesh m) {
+    s.meshes.push_back(std::move(m));
+    return std::uint32_t(s.meshes.size() - 1);
+}
+
+std::uint32_t addMaterial(Scene& s, Material m) {
+    s.materials.push_back(std::move(m));
+    return std::uint32_t(s.materials.size() - 1);
+}
+
+Object& addObject(Scene& s, const std::string& name, std::uint32_t mesh, std::uint32_t material,
+                  const glm::mat4& worldFromModel = glm::mat4(1.0f)) {
+    Object o;
+    o.name = name;
+    o.mesh = mesh;
+    o.material = material;
+    o.worldFromModel = worldFromModel;
+    s.objects.push_back(o);
+    return s.objects.back();
+}
+
+// WebGL book, Shadow.js / Shadow_highp.js.
+Scene bookTriangle(const glm::vec3& lightPosition, float lightFar, const std::string& name,
+                   const std::string& description) {
+    Scene s;
+    s.name = name;
+    s.description = description;
+    Material unlit;
+    unlit.name = "vertex colour";
+    unlit.unlit = true;
+    unlit.doubleSided = true;
+    const std::uint32_t mat = addMaterial(s, unlit);
+
+    const glm::vec3 tri[3] = {{-0.8f, 3.5f, 0.0f}, {0.8f, 3.5f, 0.0f}, {0.0f, 3.5f, 1.8f}};
+    const glm::vec3 triColour[3] = {{1.0f, 0.5f, 0.0f}, {1.0f, 0.5f, 0.0f}, {1.0f, 0.0f, 0.0f}};
+    Object& triangle =
+        addObject(s, "triangle", addMesh(s, mesh::triangle("triangle", tri, triColour)), mat);
+    triangle.spin = Spin{{0.0f, 1.0f, 0.0f}, 40.0f, {0.0f, 0.0f, 0.0f}};
+
+    Mesh plane = mesh::quad("plane", {3.0f, -1.7f, 2.5f}, {3.0f, -1.7f, -2.5f},
+                            {-3.0f, -1.7f, -2.5f}, {-3.0f, -1.7f, 2.5f});
+    plane.colours.assign(plane.positions.size(), glm::vec3(1.0f));
+    const glm::mat4 tilt =
+        glm::rotate(glm::mat4(1.0f), glm::radians(-45.0f), glm::normalize(glm::vec3(0, 1, 1)));
+    addObject(s, "plane", addMesh(s, std::move(plane)), mat, tilt);
+
+    Light light;
+    light.name = "light";
+    light.type = LightType::Point;
+    light.position = lightPosition;
+    light.shadowMapSize = 2048;  // the shipped code (the text says 1024)
+    light.shadowCamera.policy = ShadowCameraPolicy::Manual;
+    light.shadowCamera.projection = Projection::Perspective;
+    light.shadowCamera.target = glm::vec3(0.0f);
+    light.shadowCamera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    light.shadowCamera.fovyDegrees = 70.0f;
+    light.shadowCamera.aspect = 1.0f;
+    light.shadowCamera.near = 1.0f;
+    light.shadowCamera.far = lightFar;
+    s.lights.push_back(light);
+
+    s.camera.eye = {0.0f, 7.0f, 9.0f};
+    s.camera.centre = {0.0f, 0.0f, 0.0f};
+    s.camera.up = {0.0f, 1.0f, 0.0f};
+    s.camera.fovyDegrees = 45.0f;
+    s.camera.near = 1.0f;
+    s.camera.far = 100.0f;
+    s.ambient = glm::vec3(0.0f);
+    s.options.width = s.options.height = 400;
+    s.options.shading.shadowedRule = ShadowedRule::Factor;
+    s.options.shading.shadowFactor = 0.7f;
+    return s;
+}
+
+// Course text, lesson 12.6: two lights, orthographic light cameras looking at the view
+// camera's centre with its up vector; the model drawn at the origin and at (-4, 0, -4).
+Scene courseScene(const std::string& name, const std::string& description,
+                  const std::function<void(Scene&, const glm::mat4&)>& addModel) {
+    Scene s;
+    s.name = name;
+    s.description = description;
+    addModel(s, glm::mat4(1.0f));
+    addModel(s, glm::translate(glm::mat4(1.0f), glm::vec3(-4.0f, 0.0f, -4.0f)));
+    for (int i = 0; i < 2; ++i) {
+        Light light;
+        light.name = i == 0 ? "light 0" : "light 1";
+        light.type = LightType::Point;
+        light.position = {i == 0 ? 3.0f : -3.0f, 0.0f, 5.0f};
+        light.attenuation = {1.0f, 0.1f, 0.0f};
+        light.shadowMapSize = 512;
+        light.shadowCamera.policy = ShadowCameraPolicy::Course;
+        light.shadowCamera.projection = Projection::Orthographic;
+        light.shadowCamera.left = light.shadowCamera.bottom = -2.0f;
+        light.shadowCamera.right = light.shadowCamera.top = 2.0f;
+        light.shadowCamera.near = 1.0f;
+        light.shadowCamera.far = 20.0f;
+        light.shadowCamera.fovyDegrees = 45.0f;  // used when switched to perspective
+        light.shadowCamera.aspect = 1.0f;
+        s.lights.push_back(light);
+    }
+    s.camera.eye = {0.0f, 0.0f, 5.0f};
+    s.camera.centre = {0.0f, 0.0f, 0.0f};
+    s.camera.fovyDegrees = 45.0f;
+    s.camera.aspect = 1.0f;
+    s.camera.near = 1.0f;
+    s.camera.far = 20.0f;
+    s.ambient = glm::vec3(0.3f);
+    s.options.shading.shadowedRule = ShadowedRule::AmbientOnly;
+    return s;
+}
+
+Material courseMaterial(const std::string& name, const glm::vec3& diffuse) {
+    Material m;
+    m.name = name;
+    m.baseColour = diffuse;
+    m.specular = 0.5f;
+    m.shininess = 30.0f;
+    m.doubleSided = true;
+    return m;
+}
+
+void addThreePlanes(Scene& s, const glm::mat4& at) {
+    if (s.meshes.empty()) {
+        s.meshes.push_back(mesh::quad("blue", {-0.5f, 1.25f, 0.5f}, {0.5f, 1.25f, 0.5f},
+                                      {0.5f, 1.25f, -0.5f}, {-0.5f, 1.25f, -0.5f}));
+        s.meshes.push_back(mesh::quad("green", {-0.5f, -0.5f, 0.5f}, {0.5f, -0.5f, 0.5f},
+                                      {0.5f, 0.5f, 0.5f}, {-0.5f, 0.5f, 0.5f}));
+        s.meshes.push_back(mesh::quad("red", {-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f},
+                                      {1.0f, 1.0f, 0.0f}, {-1.0f, 1.0f, 0.0f}));
+        addMaterial(s, courseMaterial("blue", {0.0f, 0.0f, 0.8f}));
+        addMaterial(s, courseMaterial("green", {0.0f, 0.8f, 0.0f}));
+        addMaterial(s, courseMaterial("red", {0.8f, 0.0f, 0.0f}));
+    }
+    for (std::uint32_t i = 0; i < 3; ++i)
+        addObject(s, s.meshes[i].name, i, i, at);
+}
+
+// "Cubes along axes": cube size and offsets measured from seeds/models/xyz_blocks.obj.
+void addCubes(Scene& s, const glm::mat4& at) {
+    const float size = 0.982f;
+    if (s.meshes.empty()) {
+        s.meshes.push_back(mesh::box("cube", glm::vec3(0.0f), glm::vec3(size)));
+        addMaterial(s, courseMaterial("white", glm::vec3(0.8f)));
+        addMaterial(s, courseMaterial("x red", {0.64f, 0.15f, 0.109f}));
+        addMaterial(s, courseMaterial("y green", {0.311f, 0.64f, 0.347f}));
+        addMaterial(s, courseMaterial("z blue", {0.075f, 0.285f, 0.8f}));
+        for (Material& m : s.materials)
+            m.doubleSided = false;  // closed boxes
+    }
+    const glm::vec3 offsets[4] = {{0, 0, 0}, {size, 0, 0}, {0, size, 0}, {0, 0, size}};
+    const char* names[4] = {"centre cube", "x cube", "y cube", "z cube"};
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        addObject(s, names[i], 0, i, at * glm::translate(glm::mat4(1.0f), offsets[i]));
+    }
+}
+
+// The tutorial's sun over a room: floor, two walls, boxes (one against a wall).
+Scene tutorialRoom(bool thin, const std::string& name, const std::string& description) {
+    Scene s;
+    s.name = name;
+    s.description = description;
+    Material floor{"floor", {0.75f, 0.75f, 0.7f}, 0.1f, 16.0f, false, thin};
+    Material wall{"wall", {0.7f, 0.72f, 0.8f}, 0.1f, 16.0f, false, thin};
+    Material boxMat{"box", {0.85f, 0.45f, 0.25f}, 0.4f, 40.0f, false, false};
+    const auto mFloor = addMaterial(s, floor), mWall = addMaterial(s, wall),
+               mBox = addMaterial(s, boxMat);
+    const float half = 10.0f, height = 6.0f, t = 0.5f;
+    if (thin) {
+        addObject(s, "floor",
+                  addMesh(s, mesh::quad("floor", {-half, 0, -half}, {-half, 0, half},
+                                        {half, 0, half}, {half, 0, -half})),
+                  mFloor);
+        addObject(s, "back wall",
+                  addMesh(s, mesh::quad("back wall", {-half, 0, half}, {-half, height, half},
+                                        {half, height, half}, {half, 0, half})),
+                  mWall);
+        addObject(s, "side wall",
+                  addMesh(s, mesh::quad("side wall", {half, 0, half}, {half, height, half},
+                                        {half, height, -half}, {half, 0, -half})),
+                  mWall);
+    } else {
+        addObject(
+            s, "floor",
+            addMesh(s, mesh::box("floor", {0, -t / 2, 0}, {2 * half + 2 * t, t, 2 * half + 2 * t})),
+            mFloor);
+        addObject(s, "back wall",
+                  addMesh(s, mesh::box("back wall", {0, height / 2, half + t / 2},
+                                       {2 * half + 2 * t, height, t})),
+                  mWall);
+        addObject(s, "side wall",
+                  addMesh(s, mesh::box("side wall", {half + t / 2, height / 2, 0},
+                                       {t, height, 2 * half})),
+                  mWall);
+    }
+    addObject(s, "cube", addMesh(s, mesh::box("cube", {-3.0f, 1.0f, -2.0f}, glm::vec3(2.0f))),
+              mBox);
+    addObject(s, "pillar", addMesh(s, mesh::box("pillar", {4.0f, 2.0f, 5.0f}, {1.0f, 4.0f, 1.0f})),
+              mBox);
+    addObject(s, "slab on wall",
+              addMesh(s, mesh::box("slab on wall", {9.0f, 1.5f, -4.0f}, {2.0f, 3.0f, 2.0f})), mBox);
+    addObject(s, "low box",
+              addMesh(s, mesh::box("low box", {0.5f, 0.25f, 3.0f}, {3.0f, 0.5f, 1.5f})), mBox);
+
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.267f, -0.802f, 0.535f));
+    sun.intensity = 0.75f;
+    sun.shadowMapSize = 2048;
+    sun.shadowCamera.policy = ShadowCameraPolicy::Fit;
+    s.lights.push_back(sun);
+
+    s.camera.eye = {-13.0f, 10.0f, -14.0f};
+    s.camera.centre = {2.0f, 1.0f, 2.0f};
+    s.camera.fovyDegrees = 50.0f;
+    s.camera.near = 0.5f;
+    s.camera.far = 80.0f;
+    s.ambient = glm::vec3(0.1f);
+    return s;
+}
+
+struct Builtin {
+    const char* name;
+    const char* description;
+    std::function<Scene(const std::string&, const std::string&)> make;
+};
+
+const std::vector<Builtin>& builtins() {
+    static const std::vector<Builtin> kScenes = {
+        {"book-triangle",
+         "WebGL book 'Shadow': spinning triangle over a tilted plane, light at (0, 7, 2)",
+         [](const std::string& n, const std::string& d) {
+             return bookTriangle({0.0f, 7.0f, 2.0f}, 100.0f, n, d);
+         }},
+        {"book-triangle-far",
+         "WebGL book 'Shadow_highp': the same with the light far away at (0, 40, 2)",
+         [](const std::string& n, const std::string& d) {
+             return bookTriangle({0.0f, 40.0f, 2.0f}, 200.0f, n, d);
+         }},
+        {"course-two-lights",
+         "course text's experiment: three planes, twice, under two orthographic-shadow lights",
+         [](const std::string& n, const std::string& d) {
+             return courseScene(n, d, addThreePlanes);
+         }},
+        {"course-cubes", "course text's experiment with 'cubes along axes' under two lights",
+         [](const std::string& n, const std::string& d) { return courseScene(n, d, addCubes); }},
+        {"tutorial-room",
+         "tutorial's sun (0.267, -0.802, 0.535) over a room with thick walls and floor",
+         [](const std::string& n, const std::string& d) { return tutorialRoom(false, n, d); }},
+        {"tutorial-room-thin",
+         "the same room with zero-thickness walls and floor (peter-panning, SPEC S15)",
+         [](const std::string& n, const std::string& d) { return tutorialRoom(true, n, d); }},
+    };
+    return kScenes;
+}
+
+}  // namespace
+
+std::vector<SceneInfo> builtinScenes() {
+    std::vector<SceneInfo> out;
+    for (const Builtin& b : builtins())
+        out.push_back({b.name, b.description});
+    return out;
+}
+
+Scene builtinScene(const std::string& name) {
+    std::string known;
+    for (const Builtin& b : builtins()) {
+        if (name == b.name) return b.make(b.name, b.description);
+        known += (known.empty() ? "" : ", ") + std::string(b.name);
+    }
+    throw Error(ErrorKind::InvalidInput,
+                "unknown scene '" + name + "' (built-in scenes: " + known + ")");
+}
+
+}  // namespace gnomon

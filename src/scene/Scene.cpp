@@ -1,0 +1,109 @@
+// Scene model behaviour: animated transforms, consistency checks with readable messages,
+// bounds for shadow fitting.
+#include <cmath>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/SceneUtil.h"
+
+namespace gnomon {
+
+glm::mat4 Object::worldFromModelAt(double seconds) const {
+    if (spin.degreesPerSecond == 0.0f || seconds == 0.0) return worldFromModel;
+    const double degrees = std::fmod(double(spin.degreesPerSecond) * seconds, 360.0);
+    glm::mat4 r = glm::translate(glm::mat4(1.0f), spin.pivot);
+    r = glm::rotate(r, glm::radians(float(degrees)), glm::normalize(spin.axis));
+    r = glm::translate(r, -spin.pivot);
+    return r * worldFromModel;
+}
+
+namespace {
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+}  // namespace
+
+std::vector<std::string> Scene::validate() const {
+    std::vector<std::string> problems;
+    auto add = [&](const std::string& s) { problems.push_back("scene '" + name + "': " + s); };
+    for (size_t m = 0; m < meshes.size(); ++m) {
+        const Mesh& mesh = meshes[m];
+        const std::string where = "meshes[" + std::to_string(m) + "] ('" + mesh.name + "')";
+        if (mesh.normals.size() != mesh.positions.size()) {
+            add(where + " has " + std::to_string(mesh.normals.size()) + " normals for " +
+                std::to_string(mesh.positions.size()) + " positions");
+        }
+        if (!mesh.colours.empty() && mesh.colours.size() != mesh.positions.size()) {
+            add(where + " has " + std::to_string(mesh.colours.size()) + " colours for " +
+                std::to_string(mesh.positions.size()) + " positions");
+        }
+        if (mesh.indices.size() % 3 != 0) add(where + " index count is not a multiple of 3");
+        for (size_t i = 0; i < mesh.indices.size(); ++i) {
+            if (mesh.indices[i] >= mesh.positions.size()) {
+                add(where + " index " + std::to_string(i) + " = " +
+                    std::to_string(mesh.indices[i]) + " is out of range (" +
+                    std::to_string(mesh.positions.size()) + " vertices)");
+                break;
+            }
+        }
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            if (!finite(mesh.positions[i])) {
+                add(where + " position " + std::to_string(i) + " is not finite");
+                break;
+            }
+        }
+    }
+    for (size_t o = 0; o < objects.size(); ++o) {
+        const std::string where = "objects[" + std::to_string(o) + "] ('" + objects[o].name + "')";
+        if (objects[o].mesh >= meshes.size()) add(where + " refers to a missing mesh");
+        if (objects[o].material >= materials.size()) add(where + " refers to a missing material");
+    }
+    for (size_t l = 0; l < lights.size(); ++l) {
+        const Light& light = lights[l];
+        const std::string where = "lights[" + std::to_string(l) + "] ('" + light.name + "')";
+        if (!finite(light.position) || !finite(light.direction) || !finite(light.colour)) {
+            add(where + " has a non-finite position, direction or colour");
+        }
+        if (light.type != LightType::Point && glm::length(light.direction) < 1e-6f) {
+            add(where + " has a zero direction");
+        }
+        if (light.shadowMapSize < 16 || light.shadowMapSize > 16384) {
+            add(where + " shadow map size " + std::to_string(light.shadowMapSize) +
+                " is outside 16..16384");
+        }
+        const ShadowCamera& c = light.shadowCamera;
+        if (c.policy != ShadowCameraPolicy::Fit && !(c.near > 0.0f && c.far > c.near)) {
+            add(where + " shadow camera needs 0 < near < far");
+        }
+    }
+    if (!(camera.near > 0.0f && camera.far > camera.near)) add("camera needs 0 < near < far");
+    if (glm::length(camera.centre - camera.eye) < 1e-6f) add("camera eye equals its centre");
+    return problems;
+}
+
+std::vector<Aabb> meshBounds(const Scene& scene) {
+    std::vector<Aabb> boxes(scene.meshes.size());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        for (const glm::vec3& p : scene.meshes[m].positions)
+            boxes[m].extend(p);
+    }
+    return boxes;
+}
+
+Aabb worldBounds(const Scene& scene, const std::vector<Aabb>& meshBoxes, double seconds,
+                 bool castersOnly) {
+    Aabb box;
+    for (const Object& o : scene.objects) {
+        if (castersOnly && !o.castsShadows) continue;
+        box.extend(meshBoxes[o.mesh].transformed(o.worldFromModelAt(seconds)));
+    }
+    return box;
+}
+
+bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
+    if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
+    return scene.lights[index].enabled;
+}
+
+}  // namespace gnomon

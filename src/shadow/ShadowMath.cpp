@@ -1,0 +1,152 @@
+#include "shadow/ShadowMath.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace gnomon::shadow {
+
+glm::mat4 textureFromClip() {
+    glm::mat4 m(0.5f);
+    m[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    return m;
+}
+
+glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::vec3& up) {
+    const glm::vec3 forward = glm::normalize(centre - eye);
+    glm::vec3 u = up;
+    if (glm::length(glm::cross(forward, glm::normalize(u))) < 1e-3f) {
+        const glm::vec3 a = glm::abs(forward);
+        u = (a.x <= a.y && a.x <= a.z) ? glm::vec3(1, 0, 0)
+            : (a.y <= a.z)             ? glm::vec3(0, 1, 0)
+                                       : glm::vec3(0, 0, 1);
+    }
+    return glm::lookAt(eye, centre, u);
+}
+
+glm::mat4 viewFromWorld(const Camera& camera) {
+    return safeLookAt(camera.eye, camera.centre, camera.up);
+}
+
+glm::mat4 clipFromView(const Camera& camera, float aspect) {
+    const float a = camera.aspect > 0.0f ? camera.aspect : aspect;
+    if (camera.projection == Projection::Orthographic) {
+        return glm::ortho(camera.left, camera.right, camera.bottom, camera.top, camera.near,
+                          camera.far);
+    }
+    return glm::perspective(glm::radians(camera.fovyDegrees), a, camera.near, camera.far);
+}
+
+namespace {
+
+// Depth range of the bounds' corners in front of a light camera (view looks down -z).
+void depthRange(const Aabb& bounds, const glm::mat4& lightFromWorld, float& nearest,
+                float& farthest) {
+    nearest = std::numeric_limits<float>::max();
+    farthest = std::numeric_limits<float>::lowest();
+    for (const glm::vec3& c : bounds.corners()) {
+        const float d = -(lightFromWorld * glm::vec4(c, 1.0f)).z;
+        nearest = std::min(nearest, d);
+        farthest = std::max(farthest, d);
+    }
+}
+
+LightCameraFrame fromNumbers(const ShadowCamera& c, const glm::mat4& lightFromWorld, int mapSize) {
+    LightCameraFrame f;
+    f.lightFromWorld = lightFromWorld;
+    f.near = c.near;
+    f.far = c.far;
+    f.orthographic = c.projection == Projection::Orthographic;
+    if (f.orthographic) {
+        f.clipFromLight = glm::ortho(c.left, c.right, c.bottom, c.top, c.near, c.far);
+        f.texelWorldSize = std::max(c.right - c.left, c.top - c.bottom) / float(mapSize);
+    } else {
+        const float fovy = glm::radians(c.fovyDegrees);
+        f.clipFromLight = glm::perspective(fovy, c.aspect, c.near, c.far);
+        f.texelWorldSize = 2.0f * std::tan(0.5f * fovy) * std::max(1.0f, c.aspect) / float(mapSize);
+    }
+    return f;
+}
+
+// Orthographic camera along `direction` holding the whole box, near/far at its corners.
+LightCameraFrame fitOrthographic(const glm::vec3& direction, const Aabb& bounds, int mapSize) {
+    LightCameraFrame f;
+    f.orthographic = true;
+    const glm::vec3 centre = bounds.centre();
+    const float radius = std::max(bounds.radius(), 1e-4f);
+    const glm::vec3 eye = centre - glm::normalize(direction) * (2.0f * radius);
+    f.lightFromWorld = safeLookAt(eye, centre, glm::vec3(0, 1, 0));
+    Aabb ls = bounds.transformed(f.lightFromWorld);
+    // A small margin keeps the outermost texels and depths inside the map.
+    const float margin = 1e-3f * radius;
+    f.near = -ls.max.z - margin;
+    f.far = -ls.min.z + margin;
+    const float w = ls.max.x - ls.min.x + 2 * margin, h = ls.max.y - ls.min.y + 2 * margin;
+    f.clipFromLight = glm::ortho(ls.min.x - margin, ls.max.x + margin, ls.min.y - margin,
+                                 ls.max.y + margin, f.near, f.far);
+    f.texelWorldSize = std::max(w, h) / float(mapSize);
+    return f;
+}
+
+// Perspective camera from `eye` along `axis` with fovy, near/far fitted to the box.
+LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, float fovyRadians,
+                                const Aabb& bounds, int mapSize) {
+    LightCameraFrame f;
+    f.lightFromWorld = safeLookAt(eye, eye + axis, glm::vec3(0, 1, 0));
+    float nearest = 0.0f, farthest = 0.0f;
+    depthRange(bounds, f.lightFromWorld, nearest, farthest);
+    // The light may sit inside the bounds: keep near positive, at most 1/1000 of far,
+    // so depth precision stays usable (SPEC S12).
+    f.far = std::max(farthest * 1.01f, 1e-3f);
+    f.near = std::clamp(nearest * 0.99f, f.far * 1e-3f, f.far * 0.999f);
+    f.clipFromLight = glm::perspective(fovyRadians, 1.0f, f.near, f.far);
+    f.texelWorldSize = 2.0f * std::tan(0.5f * fovyRadians) / float(mapSize);
+    return f;
+}
+
+}  // namespace
+
+LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const Aabb& bounds,
+                                  int mapSize) {
+    const ShadowCamera& c = light.shadowCamera;
+    switch (c.policy) {
+        case ShadowCameraPolicy::Manual:
+            return fromNumbers(c, safeLookAt(light.position, c.target, c.up), mapSize);
+        case ShadowCameraPolicy::Course:
+            return fromNumbers(c, safeLookAt(light.position, view.centre, view.up), mapSize);
+        case ShadowCameraPolicy::Fit:
+            break;
+    }
+    if (bounds.empty()) {
+        LightCameraFrame f;
+        f.valid = false;
+        return f;
+    }
+    switch (light.type) {
+        case LightType::Directional:
+            return fitOrthographic(light.direction, bounds, mapSize);
+        case LightType::Spot:
+            return fitPerspective(
+                light.position, glm::normalize(light.direction),
+                glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), bounds,
+                mapSize);
+        case LightType::Point: {
+            // One frustum aimed at the bounds, wide enough for their bounding sphere.
+            const glm::vec3 toCentre = bounds.centre() - light.position;
+            const float distance = glm::length(toCentre);
+            const float radius = bounds.radius();
+            if (distance <= radius * 1.05f) {
+                // Inside the bounds a single frustum cannot see everything; use 120 degrees
+                // towards the centre (omnidirectional cube maps lift this limit).
+                const glm::vec3 axis = distance > 1e-6f ? toCentre / distance : glm::vec3(0, -1, 0);
+                return fitPerspective(light.position, axis, glm::radians(120.0f), bounds, mapSize);
+            }
+            const float fovy = 2.0f * std::asin(std::min(radius / distance, 0.999f));
+            return fitPerspective(light.position, toCentre / distance, fovy, bounds, mapSize);
+        }
+    }
+    return {};
+}
+
+}  // namespace gnomon::shadow

@@ -1,0 +1,45 @@
+// Pure shadow-mapping math (no GL): the light camera of each light (SPEC S6-S8), the
+// clip -> texture mapping of S2, and texel sizes for normal offset. Matrices are named
+// bFromA: `lightFromWorld` takes world points into the light camera's view space.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "core/Aabb.h"
+#include "gnomon/Scene.h"
+
+namespace gnomon::shadow {
+
+struct LightCameraFrame {
+    glm::mat4 lightFromWorld{1.0f};  // view matrix of the light camera
+    glm::mat4 clipFromLight{1.0f};   // its projection
+    bool orthographic = false;
+    float near = 1.0f;
+    float far = 100.0f;
+    // World-space size of one map texel: orthographic: constant; perspective: at distance 1
+    // along the view axis (multiply by the distance).
+    float texelWorldSize = 0.0f;
+    bool valid = true;  // false: nothing to shadow (empty scene bounds)
+
+    glm::mat4 clipFromWorld() const { return clipFromLight * lightFromWorld; }
+};
+
+// Maps clip-space x, y, z in [-1, 1] (after the divide) to [0, 1] texture coordinates and
+// stored depth (SPEC S2): textureFromClip * (x, y, z, 1) = (x/2 + 1/2, ...).
+glm::mat4 textureFromClip();
+
+// A right-handed look-at that survives `up` parallel to the view direction (it then picks
+// the world axis least aligned with the direction).
+glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::vec3& up);
+
+// The light camera of `light` for a frame: Manual and Course use the light's numbers;
+// Fit encloses `casterAndReceiverBounds` as tightly as an axis-aligned fit in light space
+// allows, with near/far at the bounds. `mapSize` sets texelWorldSize.
+LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
+                                  const Aabb& casterAndReceiverBounds, int mapSize);
+
+// View-camera matrices for an output of `aspect` (width / height).
+glm::mat4 viewFromWorld(const Camera& camera);
+glm::mat4 clipFromView(const Camera& camera, float aspect);
+
+}  // namespace gnomon::shadow
