@@ -6,18 +6,30 @@
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
 layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
 
+// Texels a lookup reaches from its centre, plus the bilinear footprint's one.
+#if defined(FILTER_PCF)
+const float kFilterReach = float(PCF_SIZE / 2) + 1.0;
+#elif defined(FILTER_HW2X2)
+const float kFilterReach = 1.0;
+#else
+const float kFilterReach = 0.5;
+#endif
+
 // Visibility of a world point for one light, 0 (shadowed) .. 1 (lit).
 float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
     float layer = light.colour.w;
     float uvScale = light.shadow.w;
     float texelUv = light.shadowBias.z;
 
-    // Normal offset: move the lookup point off the surface by a fraction of a texel's
-    // world size, more where the surface is steep to the light (fewer texels per area).
+    // Normal offset: move the lookup point off the surface along its normal. A planar
+    // receiver tilted by theta to the light changes stored depth by tan(theta) per texel of
+    // world size w; a filter reaching k texels (plus one for bilinear) needs the point
+    // (k + 1) w sin(theta) off the surface to stay lit everywhere it should.
     vec4 clip = light.textureFromWorld * vec4(wsPosition, 1.0);
     float texelWorld = light.shadow.y * (light.shadow.z > 0.5 ? 1.0 : clip.w);
     float nDotL = clamp(dot(wsNormal, wsToLight), 0.0, 1.0);
-    vec3 offset = wsNormal * (light.shadowBias.y * texelWorld * (1.0 - nDotL));
+    float sinTheta = sqrt(1.0 - nDotL * nDotL);
+    vec3 offset = wsNormal * (light.shadowBias.y * kFilterReach * texelWorld * sinTheta);
     vec4 shadowCoord = light.textureFromWorld * vec4(wsPosition + offset, 1.0);
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
 

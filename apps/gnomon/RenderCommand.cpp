@@ -53,7 +53,8 @@ void RenderFlags::add(CLI::App& a) {
     a.add_option("--bias-units", biasUnits,
                  "polygon-offset units in the depth pass (default " + str(s.biasUnits) + ")");
     a.add_option("--normal-offset", normalOffset,
-                 "lookup offset along the normal, in texels x (1 - N.L) (default " +
+                 "lookup shift along the normal, in texels x the filter's reach x sin(light angle) "
+                 "(default " +
                      str(s.normalOffset) + ")");
     a.add_option("--cull", cull,
                  "back|front|none: faces culled in the depth pass (default back; double-sided "

@@ -16,6 +16,10 @@ ImageDiff compareImages(const Image& a, const Image& b, int threshold) {
                         std::to_string(b.width) + "x" + std::to_string(b.height) + "x" +
                         std::to_string(b.channels));
     }
+    const size_t need = size_t(a.width) * a.height * a.channels;
+    if (a.pixels.size() != need || b.pixels.size() != need) {
+        throw Error(ErrorKind::InvalidInput, "image pixel data does not match its shape");
+    }
     ImageDiff d;
     d.diff = Image(a.width, a.height, 3);
     size_t failing = 0;

@@ -3,6 +3,7 @@
 #include <png.h>
 #include <stb/stb_image.h>
 
+#include <bit>
 #include <csetjmp>
 #include <memory>
 
@@ -30,7 +31,8 @@ void writePngRows(const std::string& path, int width, int height, int bitDepth, 
         png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), bitDepth, colourType,
                      PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
         png_write_info(png, info);
-        if (bitDepth == 16) png_set_swap(png);  // PNG is big-endian, our samples are native
+        // PNG stores 16-bit samples big-endian; ours are native.
+        if (bitDepth == 16 && std::endian::native == std::endian::little) png_set_swap(png);
         png_write_image(png, const_cast<png_bytepp>(rows.data()));
         png_write_end(png, nullptr);
         png_destroy_write_struct(&png, &info);

@@ -224,8 +224,9 @@ Scene tutorialRoom(bool thin, const std::string& name, const std::string& descri
     sun.shadowCamera.policy = ShadowCameraPolicy::Fit;
     s.lights.push_back(sun);
 
-    s.camera.eye = {-13.0f, 10.0f, -14.0f};
-    s.camera.centre = {2.0f, 1.0f, 2.0f};
+    // From the side, so the shadows (cast towards +z) lie across the view, not behind boxes.
+    s.camera.eye = {-14.0f, 9.0f, -3.0f};
+    s.camera.centre = {2.0f, 1.0f, 3.0f};
     s.camera.fovyDegrees = 50.0f;
     s.camera.near = 0.5f;
     s.camera.far = 80.0f;

@@ -58,6 +58,11 @@ std::vector<std::string> Scene::validate() const {
         const std::string where = "objects[" + std::to_string(o) + "] ('" + objects[o].name + "')";
         if (objects[o].mesh >= meshes.size()) add(where + " refers to a missing mesh");
         if (objects[o].material >= materials.size()) add(where + " refers to a missing material");
+        const Spin& spin = objects[o].spin;
+        if (!std::isfinite(spin.degreesPerSecond) ||
+            (spin.degreesPerSecond != 0.0f && !(glm::length(spin.axis) > 1e-6f))) {
+            add(where + " spins about a zero or non-finite axis");
+        }
     }
     for (size_t l = 0; l < lights.size(); ++l) {
         const Light& light = lights[l];
@@ -75,6 +80,14 @@ std::vector<std::string> Scene::validate() const {
         const ShadowCamera& c = light.shadowCamera;
         if (c.policy != ShadowCameraPolicy::Fit && !(c.near > 0.0f && c.far > c.near)) {
             add(where + " shadow camera needs 0 < near < far");
+        }
+        if (c.policy == ShadowCameraPolicy::Manual &&
+            glm::length(c.target - light.position) < 1e-6f) {
+            add(where + " shadow camera looks at its own position (target == position)");
+        }
+        if (c.policy == ShadowCameraPolicy::Course &&
+            glm::length(camera.centre - light.position) < 1e-6f) {
+            add(where + " sits at the view camera's centre, where its course-policy camera looks");
         }
     }
     if (!(camera.near > 0.0f && camera.far > camera.near)) add("camera needs 0 < near < far");

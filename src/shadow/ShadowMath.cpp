@@ -1,6 +1,7 @@
 #include "shadow/ShadowMath.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,7 +17,9 @@ glm::mat4 textureFromClip() {
 glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::vec3& up) {
     const glm::vec3 forward = glm::normalize(centre - eye);
     glm::vec3 u = up;
-    if (glm::length(glm::cross(forward, glm::normalize(u))) < 1e-3f) {
+    // Not normalised first: a zero `up` must take the fallback, not produce NaN.
+    const float upLength = glm::length(u);
+    if (!(upLength > 0.0f) || !(glm::length(glm::cross(forward, u)) >= 1e-3f * upLength)) {
         const glm::vec3 a = glm::abs(forward);
         u = (a.x <= a.y && a.x <= a.z) ? glm::vec3(1, 0, 0)
             : (a.y <= a.z)             ? glm::vec3(0, 1, 0)
@@ -78,8 +81,11 @@ LightCameraFrame fitOrthographic(const glm::vec3& direction, const Aabb& bounds,
     const glm::vec3 eye = centre - glm::normalize(direction) * (2.0f * radius);
     f.lightFromWorld = safeLookAt(eye, centre, glm::vec3(0, 1, 0));
     Aabb ls = bounds.transformed(f.lightFromWorld);
-    // A small margin keeps the outermost texels and depths inside the map.
-    const float margin = 1e-3f * radius;
+    // A margin keeps the outermost texels and depths inside the map: relative to the box,
+    // and never below the float rounding of the view transform, whose translation grows with
+    // the distance from the world origin (a small box far away).
+    const float worldScale = glm::length(centre) + 2.0f * radius;
+    const float margin = std::max(1e-3f * radius, 16.0f * FLT_EPSILON * worldScale);
     f.near = -ls.max.z - margin;
     f.far = -ls.min.z + margin;
     const float w = ls.max.x - ls.min.x + 2 * margin, h = ls.max.y - ls.min.y + 2 * margin;

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# CLI behaviour: exit codes and messages. Usage: cli_test.sh GNOMON_BINARY CASE WORKDIR
+# Exit codes of gnomon: 0 success, 1 failure (I/O, GL), 2 bad usage or input.
+set -uo pipefail
+gnomon=$1; case=$2; work=$3
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL ($case): $*"; exit 1; }
+run() { "$gnomon" "$@" >"$work/stdout" 2>"$work/stderr"; echo $? >"$work/code"; }
+expect() {  # expect CODE TEXT: exit code and a substring of stdout+stderr
+    local code; code=$(cat "$work/code")
+    [[ "$code" == "$1" ]] || fail "exit code $code, expected $1; output: $(cat "$work/stdout" "$work/stderr")"
+    grep -qF -- "$2" "$work/stdout" "$work/stderr" || fail "output lacks '$2': $(cat "$work/stdout" "$work/stderr")"
+}
+skip_without_gl() {
+    if grep -q "no usable OpenGL" "$work/stderr"; then echo "skipped: $(cat "$work/stderr")"; exit 77; fi
+}
+
+case $case in
+unknown_scene)
+    run render --scene no-such-scene --out "$work/a.png"
+    expect 2 "unknown scene 'no-such-scene'"
+    expect 2 "book-triangle"  # the message lists the known scenes
+    ;;
+missing_file)
+    run render --scene "$work/nothing.gltf" --out "$work/a.png"
+    expect 1 "cannot load scene '$work/nothing.gltf': no such file"
+    ;;
+unwritable_output)
+    run render --scene book-triangle --size 32x32 --out "$work/no/such/folder/a.png"
+    skip_without_gl
+    expect 1 "cannot write '$work/no/such/folder/a.png'"
+    [[ -z "$(ls -A "$work" | grep -v -e stdout -e stderr -e code)" ]] || fail "left files behind"
+    ;;
+malformed_size)
+    run render --scene book-triangle --size 12by12 --out "$work/a.png"
+    expect 2 "--size: expected WIDTHxHEIGHT"
+    run render --scene book-triangle --size 0x12 --out "$work/a.png"
+    expect 2 "outside 1x1..16384x16384"
+    ;;
+bad_enum)
+    run render --scene book-triangle --filter blurry --out "$work/a.png"
+    expect 2 "--filter: expected one of none, hw2x2, pcf, got 'blurry'"
+    ;;
+bad_light)
+    run render --scene book-triangle --light-only 3 --out "$work/a.png"
+    expect 2 "has 1 light(s)"
+    ;;
+help)
+    run render --help
+    expect 0 "--shadows"
+    for flag in --size --time --light-only --shadow-maps --outside --map-size --bias-constant \
+                --bias-slope --normal-offset --cull --filter --pcf-size --shadowed; do
+        grep -qF -- "$flag" "$work/stdout" || fail "help lacks $flag"
+    done
+    grep -qF -- "default" "$work/stdout" || fail "help shows no defaults"
+    ;;
+scenes)
+    run scenes
+    expect 0 "course-two-lights"
+    [[ $("$gnomon" scenes --names | wc -l) -ge 6 ]] || fail "fewer than 6 built-in scenes"
+    ;;
+render_and_maps)
+    run --verbose render --scene course-two-lights --size 64x64 --out "$work/a.png" --shadow-maps "$work/maps"
+    skip_without_gl
+    expect 0 "OpenGL"
+    [[ -s "$work/a.png" ]] || fail "no image"
+    [[ -s "$work/maps/light-0.png" && -s "$work/maps/light-1.png" ]] || fail "maps missing"
+    # 16-bit greyscale: IHDR bit depth byte (offset 24) is 16, colour type (25) is 0.
+    [[ $(od -An -tu1 -j24 -N2 "$work/maps/light-0.png" | tr -s ' ') == " 16 0" ]] || fail "map is not 16-bit grey"
+    ls -A "$work" | grep -q '^\.' && fail "temporary files left behind"
+    ;;
+*) fail "unknown case" ;;
+esac
+echo "ok ($case)"

@@ -1,0 +1,103 @@
+// The depth pass stores what the light camera's projection says: for a floor at a known
+// distance under an orthographic light (linear depth) and a perspective light (S12's
+// closed form), and for a caster above the floor.
+#include <gtest/gtest.h>
+
+#include "GlTest.h"
+#include "scene/MeshBuilder.h"
+
+namespace gnomon::test {
+namespace {
+
+Scene floorUnderLight(Projection projection, bool withBox) {
+    Scene s;
+    s.name = "depth probe";
+    s.materials.push_back(Material{});
+    s.meshes.push_back(mesh::quad("floor", {-10, 0, -10}, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}));
+    s.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, true, true});
+    if (withBox) {
+        s.meshes.push_back(mesh::box("box", {0.0f, 1.0f, 0.0f}, {2.0f, 2.0f, 2.0f}));
+        s.objects.push_back({"box", 1, 0, glm::mat4(1.0f), {}, true, true});
+    }
+    Light l;
+    l.type = LightType::Point;
+    l.position = {0.0f, 10.0f, 0.0f};
+    l.shadowMapSize = 256;
+    l.shadowCamera.policy = ShadowCameraPolicy::Manual;
+    l.shadowCamera.projection = projection;
+    l.shadowCamera.target = {0.0f, 0.0f, 0.0f};
+    l.shadowCamera.up = {0.0f, 0.0f, -1.0f};
+    l.shadowCamera.left = l.shadowCamera.bottom = -5.0f;
+    l.shadowCamera.right = l.shadowCamera.top = 5.0f;
+    l.shadowCamera.fovyDegrees = 60.0f;
+    l.shadowCamera.near = 1.0f;
+    l.shadowCamera.far = projection == Projection::Orthographic ? 21.0f : 100.0f;
+    s.lights.push_back(l);
+    s.camera.eye = {0.0f, 20.0f, 0.1f};
+    return s;
+}
+
+double storedAt(const Image16& map, double u, double v) {
+    const int x = int(u * map.width), y = int((1.0 - v) * map.height);
+    return map.pixels[size_t(y) * map.width + x] / 65535.0;
+}
+
+RenderOptions exactDepth() {
+    RenderOptions o;
+    o.width = o.height = 64;
+    o.shadow.biasSlope = 0.0f;  // polygon offset would move the stored depth
+    o.shadow.biasUnits = 0.0f;
+    return o;
+}
+
+constexpr double kTol = 2.0 / 65535.0;  // the 16-bit read-back's rounding, twice
+
+TEST(DepthPass, OrthographicFloorDepthIsLinear) {
+    sharedRenderer().render(floorUnderLight(Projection::Orthographic, false), exactDepth());
+    const Image16 map = sharedRenderer().shadowMaps().at(0).depth;
+    ASSERT_EQ(map.width, 256);
+    // Floor 10 units below the light, near 1, far 21: (10 - 1) / 20.
+    for (double u : {0.1, 0.5, 0.9})
+        EXPECT_NEAR(storedAt(map, u, 0.5), 0.45, kTol) << u;
+}
+
+TEST(DepthPass, OrthographicCasterIsNearer) {
+    sharedRenderer().render(floorUnderLight(Projection::Orthographic, true), exactDepth());
+    const Image16 map = sharedRenderer().shadowMaps().at(0).depth;
+    EXPECT_NEAR(storedAt(map, 0.5, 0.5), (10.0 - 2.0 - 1.0) / 20.0, kTol);  // box top, y = 2
+    EXPECT_NEAR(storedAt(map, 0.05, 0.05), 0.45, kTol);                     // floor beside it
+}
+
+TEST(DepthPass, PerspectiveDepthFollowsClosedForm) {
+    sharedRenderer().render(floorUnderLight(Projection::Perspective, false), exactDepth());
+    const Image16 map = sharedRenderer().shadowMaps().at(0).depth;
+    const double n = 1.0, f = 100.0, d = 10.0;
+    const double ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * d);
+    // The floor is perpendicular to the light axis: the same view depth everywhere.
+    for (double u : {0.25, 0.5, 0.75})
+        EXPECT_NEAR(storedAt(map, u, 0.5), ndc * 0.5 + 0.5, kTol);
+}
+
+TEST(DepthPass, StaticMapsAreNotRenderedAgain) {
+    const Scene s = floorUnderLight(Projection::Perspective, true);
+    sharedRenderer().render(s, exactDepth());
+    sharedRenderer().render(s, exactDepth());
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 0);
+    RenderOptions moved = exactDepth();
+    moved.shadow.biasSlope = 1.0f;  // depth-pass state changed: the map must be redone
+    sharedRenderer().render(s, moved);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 1);
+}
+
+TEST(DepthPass, AnimationRerendersTheMap) {
+    const Scene s = builtinScene("book-triangle");
+    RenderOptions o = s.options;
+    o.width = o.height = 64;
+    sharedRenderer().render(s, o);
+    o.time = 0.5;
+    sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 1);
+}
+
+}  // namespace
+}  // namespace gnomon::test

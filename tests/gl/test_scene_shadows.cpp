@@ -1,0 +1,183 @@
+// Shadows where the geometry says, and nowhere else: for each built-in scene, pixels that the
+// scene's own triangles put in shadow (tests/support/GeometryShadows, CPU ray casting) must
+// be darker than in the shadows-off render, and pixels in no shadow must be unchanged.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "GeometryShadows.h"
+#include "GlTest.h"
+#include "scene/MeshBuilder.h"
+
+namespace gnomon::test {
+namespace {
+
+struct Case {
+    std::string name;
+    Scene scene;
+    RenderOptions options;
+};
+
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.name;
+}
+
+// Checks one scene and options; returns a description of the first failures.
+// On failure: the render, the shadows-off render and the oracle's classes (red shadowed,
+// green lit, grey unknown, black background) go to the output folder.
+void writeDiagnostics(const std::string& name, const Image& on, const Image& off,
+                      const GeometryShadows& truth) {
+    Image classes(truth.width, truth.height, 3);
+    for (size_t i = 0; i < truth.classes.size(); ++i) {
+        static const std::uint8_t kColours[4][3] = {
+            {90, 90, 90}, {255, 0, 0}, {0, 200, 0}, {0, 0, 0}};
+        const auto* c = kColours[int(truth.classes[i])];
+        std::copy(c, c + 3, &classes.pixels[i * 3]);
+    }
+    const std::string base = outputDir() + "/" + name;
+    writePng(base + ".on.png", on);
+    writePng(base + ".off.png", off);
+    writePng(base + ".classes.png", classes);
+}
+
+void expectShadowsMatchGeometry(const Scene& scene, RenderOptions options) {
+    options.width = options.height = 256;
+    RenderOptions off = options;
+    off.shadow.enabled = false;
+    const Image on = sharedRenderer().render(scene, options);
+    const Image plain = sharedRenderer().render(scene, off);
+    const GeometryShadows truth = classifyPixels(scene, options, 2);
+
+    int shadowed = 0, darker = 0, lit = 0, unchanged = 0;
+    std::string failures;
+    for (int y = 0; y < truth.height; ++y) {
+        for (int x = 0; x < truth.width; ++x) {
+            const PixelClass c = truth.classes[size_t(y) * truth.width + x];
+            const int a = luminance(on.at(x, y)), b = luminance(plain.at(x, y));
+            if (c == PixelClass::Shadowed) {
+                ++shadowed;
+                // Shadowed: darker by 3% of the sum of RGB, and by 6 levels at least (one of
+                // 16 lights is a small share of a pixel's light).
+                if (a <= b - std::max(6, b / 32)) {
+                    ++darker;
+                } else if (failures.size() < 400) {
+                    failures += " shadow expected at (" + std::to_string(x) + "," +
+                                std::to_string(y) + ") on=" + std::to_string(a) +
+                                " off=" + std::to_string(b) + ";";
+                }
+            } else if (c == PixelClass::Lit) {
+                ++lit;
+                bool same = true;
+                for (int k = 0; k < 3; ++k)
+                    same &= std::abs(on.at(x, y)[k] - plain.at(x, y)[k]) <= 2;
+                if (same) {
+                    ++unchanged;
+                } else if (failures.size() < 400) {
+                    failures += " lit pixel changed at (" + std::to_string(x) + "," +
+                                std::to_string(y) + ") on=" + std::to_string(a) +
+                                " off=" + std::to_string(b) + ";";
+                }
+            }
+        }
+    }
+    // Enough decided pixels that the test means something.
+    EXPECT_GE(shadowed, 40) << "too few robustly shadowed pixels to judge";
+    EXPECT_GE(lit, 400) << "too few robustly lit pixels to judge";
+    EXPECT_EQ(darker, shadowed) << failures;
+    EXPECT_EQ(unchanged, lit) << failures;
+    if (shadowed < 40 || lit < 400 || darker != shadowed || unchanged != lit) {
+        std::string name = scene.name + "-" + toString(options.shadow.filter);
+        writeDiagnostics(name, on, plain, truth);
+        ADD_FAILURE() << "diagnostic images: " << outputDir() << "/" << name << ".*.png";
+    }
+}
+
+class BuiltinShadows : public testing::TestWithParam<Case> {};
+
+TEST_P(BuiltinShadows, DarkerWhereGeometryShadowsUnchangedElsewhere) {
+    expectShadowsMatchGeometry(GetParam().scene, GetParam().options);
+}
+
+Case builtin(const std::string& name, double time = 0.0) {
+    Case c{
+        name + (time != 0.0 ? "_t" + std::to_string(int(time * 10)) : ""), builtinScene(name), {}};
+    c.options = c.scene.options;
+    c.options.time = time;
+    for (char& ch : c.name)
+        ch = ch == '-' ? '_' : ch;
+    return c;
+}
+
+std::vector<Case> builtinCases() {
+    std::vector<Case> cases;
+    for (const SceneInfo& info : builtinScenes())
+        cases.push_back(builtin(info.name));
+    cases.push_back(builtin("book-triangle", 1.5));  // rotated 60 degrees (S27)
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BuiltinShadows, testing::ValuesIn(builtinCases()),
+                         [](const auto& info) { return info.param.name; });
+
+// Every filter and the course light cameras switched to perspective keep the property.
+TEST(Shadows, EachFilterKeepsShadowsWhereGeometrySays) {
+    for (ShadowFilter f : {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf}) {
+        Scene scene = builtinScene("tutorial-room");
+        RenderOptions o = scene.options;
+        o.shadow.filter = f;
+        SCOPED_TRACE(toString(f));
+        expectShadowsMatchGeometry(scene, o);
+    }
+}
+
+TEST(Shadows, PerspectiveCourseCameras) {
+    Scene scene = builtinScene("course-cubes");
+    for (Light& l : scene.lights)
+        l.shadowCamera.projection = Projection::Perspective;
+    expectShadowsMatchGeometry(scene, scene.options);
+}
+
+// SPEC S3: at least 16 shadowed lights in one main pass, each with its own map.
+TEST(Shadows, SixteenSpotLightsEachCastTheirShadow) {
+    Scene scene;
+    scene.name = "sixteen spots";
+    Material grey;
+    grey.baseColour = glm::vec3(0.8f);
+    scene.materials.push_back(grey);
+    Mesh floor;
+    floor.positions = {{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}};
+    floor.normals.assign(4, glm::vec3(0, 1, 0));
+    floor.indices = {0, 1, 2, 0, 2, 3};
+    scene.meshes.push_back(floor);
+    scene.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, true, true});
+    // A pillar in the middle: 16 shadows fanning out.
+    scene.meshes.push_back(mesh::box("pillar", {0.0f, 1.25f, 0.0f}, {0.8f, 2.5f, 0.8f}));
+    scene.objects.push_back({"pillar", 1, 0, glm::mat4(1.0f), {}, true, true});
+    for (int i = 0; i < 16; ++i) {
+        Light l;
+        l.name = "spot " + std::to_string(i);
+        l.type = LightType::Spot;
+        const float a = glm::radians(22.5f * float(i));
+        l.position = {2.5f * std::cos(a), 6.0f, 2.5f * std::sin(a)};
+        l.direction = glm::normalize(glm::vec3(0.0f) - l.position);
+        l.intensity = 0.06f;  // 16 x 0.06: the picture does not saturate
+        l.innerConeDegrees = 60.0f;
+        l.outerConeDegrees = 70.0f;
+        // Fine enough that PCF's penumbra (a few texels) stays inside the oracle's margin.
+        l.shadowMapSize = 1024;
+        scene.lights.push_back(l);
+    }
+    scene.camera.eye = {0.0f, 11.0f, 5.0f};
+    scene.camera.centre = {0.0f, 0.0f, 0.0f};
+    scene.camera.near = 1.0f;
+    scene.camera.far = 40.0f;
+    scene.ambient = glm::vec3(0.1f);
+    RenderOptions o;
+    sharedRenderer().render(scene, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 16);
+    EXPECT_EQ(sharedRenderer().shadowMaps().size(), 16u);
+    expectShadowsMatchGeometry(scene, o);
+}
+
+}  // namespace
+}  // namespace gnomon::test

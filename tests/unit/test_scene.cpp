@@ -1,0 +1,319 @@
+// The scene model (include/gnomon/Scene.h): the built-in scenes carry SPEC section 8's exact
+// numbers (lights, cameras, spin, attenuation, ambient), each validates cleanly,
+// Scene::validate catches each kind of inconsistency, and unknown names/paths throw
+// gnomon::Error with a message that helps (known names, the path).
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "UnitTestUtil.h"
+#include "gnomon/Error.h"
+#include "gnomon/Scene.h"
+
+namespace gnomon {
+namespace {
+
+void expectVec(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+const char* const kBuiltinNames[] = {"book-triangle", "book-triangle-far", "course-two-lights",
+                                     "course-cubes",  "tutorial-room",     "tutorial-room-thin"};
+
+TEST(Scene, BuiltinListIsStableAndDescribed) {
+    const std::vector<SceneInfo> list = builtinScenes();
+    ASSERT_EQ(list.size(), std::size(kBuiltinNames));
+    for (size_t i = 0; i < list.size(); ++i) {
+        EXPECT_EQ(list[i].name, kBuiltinNames[i]);
+        EXPECT_FALSE(list[i].description.empty()) << list[i].name;
+    }
+}
+
+TEST(Scene, EveryBuiltinValidatesAndCarriesItsName) {
+    for (const SceneInfo& info : builtinScenes()) {
+        SCOPED_TRACE(info.name);
+        const Scene s = builtinScene(info.name);
+        EXPECT_EQ(s.name, info.name);
+        EXPECT_EQ(s.description, info.description);
+        EXPECT_TRUE(s.validate().empty()) << s.validate().front();
+        EXPECT_TRUE(s.options.validate().empty());
+        EXPECT_FALSE(s.objects.empty());
+        EXPECT_FALSE(s.lights.empty());
+    }
+}
+
+TEST(Scene, UnknownNameThrowsListingKnownNames) {
+    try {
+        builtinScene("no-such-scene");
+        FAIL() << "builtinScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::InvalidInput);
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("no-such-scene"), std::string::npos) << msg;
+        for (const char* name : kBuiltinNames)
+            EXPECT_NE(msg.find(name), std::string::npos) << name << " missing from: " << msg;
+    }
+}
+
+// book-triangle: light (0, 7, 2), perspective 70 deg, aspect 1, near 1, far 100, looking at
+// the origin with up +y; view eye (0, 7, 9) at the origin, 45 deg, near 1, far 100; 400x400;
+// shadowed colour x 0.7.
+TEST(Scene, BookTriangleNumbers) {
+    const Scene s = builtinScene("book-triangle");
+    ASSERT_EQ(s.lights.size(), 1u);
+    const Light& l = s.lights[0];
+    expectVec(l.position, {0.0f, 7.0f, 2.0f}, 0.0f);
+    EXPECT_EQ(l.shadowCamera.policy, ShadowCameraPolicy::Manual);
+    EXPECT_EQ(l.shadowCamera.projection, Projection::Perspective);
+    expectVec(l.shadowCamera.target, glm::vec3(0.0f), 0.0f);
+    expectVec(l.shadowCamera.up, {0.0f, 1.0f, 0.0f}, 0.0f);
+    EXPECT_FLOAT_EQ(l.shadowCamera.fovyDegrees, 70.0f);
+    EXPECT_FLOAT_EQ(l.shadowCamera.aspect, 1.0f);
+    EXPECT_FLOAT_EQ(l.shadowCamera.near, 1.0f);
+    EXPECT_FLOAT_EQ(l.shadowCamera.far, 100.0f);
+    EXPECT_EQ(l.shadowMapSize, 2048);  // the shipped code's size
+
+    expectVec(s.camera.eye, {0.0f, 7.0f, 9.0f}, 0.0f);
+    expectVec(s.camera.centre, glm::vec3(0.0f), 0.0f);
+    expectVec(s.camera.up, {0.0f, 1.0f, 0.0f}, 0.0f);
+    EXPECT_FLOAT_EQ(s.camera.fovyDegrees, 45.0f);
+    EXPECT_FLOAT_EQ(s.camera.near, 1.0f);
+    EXPECT_FLOAT_EQ(s.camera.far, 100.0f);
+    EXPECT_EQ(s.options.width, 400);
+    EXPECT_EQ(s.options.height, 400);
+    EXPECT_EQ(s.options.shading.shadowedRule, ShadowedRule::Factor);
+    EXPECT_FLOAT_EQ(s.options.shading.shadowFactor, 0.7f);
+}
+
+TEST(Scene, BookTriangleFarMovesTheLightAndItsFarPlane) {
+    const Scene s = builtinScene("book-triangle-far");
+    ASSERT_EQ(s.lights.size(), 1u);
+    expectVec(s.lights[0].position, {0.0f, 40.0f, 2.0f}, 0.0f);
+    EXPECT_FLOAT_EQ(s.lights[0].shadowCamera.far, 200.0f);
+    EXPECT_FLOAT_EQ(s.lights[0].shadowCamera.near, 1.0f);
+    expectVec(s.camera.eye, {0.0f, 7.0f, 9.0f}, 0.0f);
+}
+
+const Object& objectNamed(const Scene& s, const std::string& name) {
+    for (const Object& o : s.objects)
+        if (o.name == name) return o;
+    throw std::runtime_error("no object " + name);
+}
+
+// SPEC S27: the triangle spins 40 deg/s about y through the origin. At 9 s it has turned
+// 360 deg (back where it started); at 2.25 s 90 deg, and +90 deg about y maps (x, y, z) to
+// (z, y, -x): (0.8, 3.5, 0) -> (0, 3.5, -0.8), (0, 3.5, 1.8) -> (1.8, 3.5, 0).
+TEST(Scene, BookTriangleSpinsFortyDegreesPerSecond) {
+    const Scene s = builtinScene("book-triangle");
+    const Object& tri = objectNamed(s, "triangle");
+    EXPECT_FLOAT_EQ(tri.spin.degreesPerSecond, 40.0f);
+    const Mesh& mesh = s.meshes.at(tri.mesh);
+    ASSERT_EQ(mesh.positions.size(), 3u);
+    expectVec(mesh.positions[1], {0.8f, 3.5f, 0.0f}, 0.0f);
+    expectVec(mesh.positions[2], {0.0f, 3.5f, 1.8f}, 0.0f);
+
+    auto at = [&](double t, const glm::vec3& p) {
+        return glm::vec3(tri.worldFromModelAt(t) * glm::vec4(p, 1.0f));
+    };
+    for (const glm::vec3& p : mesh.positions)
+        expectVec(at(9.0, p), p, 1e-5f);
+    expectVec(at(2.25, mesh.positions[1]), {0.0f, 3.5f, -0.8f}, 1e-5f);
+    expectVec(at(2.25, mesh.positions[2]), {1.8f, 3.5f, 0.0f}, 1e-5f);
+    // The plane does not spin.
+    const Object& plane = objectNamed(s, "plane");
+    EXPECT_PRED_FORMAT3(test::matNear, plane.worldFromModelAt(2.25), plane.worldFromModel, 0.0f);
+}
+
+// The plane is rotated -45 deg about (0, 1, 1)/sqrt(2). Rodrigues for v = (1, 0, 0):
+// k.v = 0, k x v = (0, 1, -1)/sqrt(2), so v' = v cos + (k x v) sin
+// = (0.7071068, 0, 0) + (0, 0.7071068, -0.7071068)(-0.7071068) = (0.7071068, -0.5, 0.5).
+TEST(Scene, BookPlaneIsTiltedAboutTheDiagonalAxis) {
+    const Scene s = builtinScene("book-triangle");
+    const glm::mat4 m = objectNamed(s, "plane").worldFromModel;
+    expectVec(glm::vec3(m * glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)), {0.7071068f, -0.5f, 0.5f});
+    expectVec(glm::vec3(m * glm::vec4(0.0f, 1.0f, 1.0f, 0.0f)), {0.0f, 1.0f, 1.0f});  // axis
+}
+
+// Course text: lights at (3, 0, 5) and (-3, 0, 5) looking at the view centre, orthographic
+// +-2, near 1, far 20, map 512, attenuation 1/(1 + 0.1 d), ambient 0.3; view eye (0, 0, 5).
+TEST(Scene, CourseNumbers) {
+    for (const char* name : {"course-two-lights", "course-cubes"}) {
+        SCOPED_TRACE(name);
+        const Scene s = builtinScene(name);
+        ASSERT_EQ(s.lights.size(), 2u);
+        expectVec(s.lights[0].position, {3.0f, 0.0f, 5.0f}, 0.0f);
+        expectVec(s.lights[1].position, {-3.0f, 0.0f, 5.0f}, 0.0f);
+        for (const Light& l : s.lights) {
+            EXPECT_TRUE(l.enabled);
+            const ShadowCamera& c = l.shadowCamera;
+            EXPECT_EQ(c.policy, ShadowCameraPolicy::Course);
+            EXPECT_EQ(c.projection, Projection::Orthographic);
+            EXPECT_FLOAT_EQ(c.left, -2.0f);
+            EXPECT_FLOAT_EQ(c.right, 2.0f);
+            EXPECT_FLOAT_EQ(c.bottom, -2.0f);
+            EXPECT_FLOAT_EQ(c.top, 2.0f);
+            EXPECT_FLOAT_EQ(c.near, 1.0f);
+            EXPECT_FLOAT_EQ(c.far, 20.0f);
+            EXPECT_FLOAT_EQ(c.fovyDegrees, 45.0f);
+            EXPECT_EQ(l.shadowMapSize, 512);
+            EXPECT_FLOAT_EQ(l.attenuation.constant, 1.0f);
+            EXPECT_FLOAT_EQ(l.attenuation.linear, 0.1f);
+            EXPECT_FLOAT_EQ(l.attenuation.quadratic, 0.0f);
+        }
+        expectVec(s.ambient, glm::vec3(0.3f), 0.0f);
+        expectVec(s.camera.eye, {0.0f, 0.0f, 5.0f}, 0.0f);
+        expectVec(s.camera.centre, glm::vec3(0.0f), 0.0f);
+        EXPECT_FLOAT_EQ(s.camera.fovyDegrees, 45.0f);
+        EXPECT_FLOAT_EQ(s.camera.far, 20.0f);
+        EXPECT_EQ(s.options.shading.shadowedRule, ShadowedRule::AmbientOnly);
+        for (const Material& m : s.materials)
+            EXPECT_FLOAT_EQ(m.shininess, 30.0f) << m.name;
+        // The model twice: the second copy moved by (-4, 0, -4).
+        const size_t half = s.objects.size() / 2;
+        ASSERT_EQ(s.objects.size(), 2 * half);
+        for (size_t i = 0; i < half; ++i) {
+            const glm::mat4 delta =
+                s.objects[half + i].worldFromModel * glm::inverse(s.objects[i].worldFromModel);
+            expectVec(glm::vec3(delta[3]), {-4.0f, 0.0f, -4.0f});
+        }
+    }
+}
+
+TEST(Scene, TutorialSunNumbers) {
+    for (const char* name : {"tutorial-room", "tutorial-room-thin"}) {
+        SCOPED_TRACE(name);
+        const Scene s = builtinScene(name);
+        ASSERT_EQ(s.lights.size(), 1u);
+        const Light& sun = s.lights[0];
+        EXPECT_EQ(sun.type, LightType::Directional);
+        // (0.267, -0.802, 0.535) has length 1.000359: normalised (0.2669042, -0.8017122,
+        // 0.5348080).
+        expectVec(sun.direction, {0.2669042f, -0.8017122f, 0.5348080f}, 1e-6f);
+        EXPECT_FLOAT_EQ(sun.intensity, 0.75f);
+        EXPECT_EQ(sun.shadowCamera.policy, ShadowCameraPolicy::Fit);
+        expectVec(s.ambient, glm::vec3(0.1f), 0.0f);
+    }
+    // The thin variant's floor is one double-sided quad; the thick one a closed box.
+    const Scene thick = builtinScene("tutorial-room"), thin = builtinScene("tutorial-room-thin");
+    EXPECT_EQ(thin.meshes.at(objectNamed(thin, "floor").mesh).positions.size(), 4u);
+    EXPECT_EQ(thick.meshes.at(objectNamed(thick, "floor").mesh).positions.size(), 24u);
+    EXPECT_TRUE(thin.materials.at(objectNamed(thin, "floor").material).doubleSided);
+    EXPECT_FALSE(thick.materials.at(objectNamed(thick, "floor").material).doubleSided);
+}
+
+// Scene::validate: each spoiled scene yields exactly one problem mentioning what is wrong.
+void expectOneProblem(const Scene& s, const std::string& mention) {
+    const std::vector<std::string> problems = s.validate();
+    ASSERT_EQ(problems.size(), 1u) << (problems.empty() ? "no problem" : problems[0]);
+    EXPECT_NE(problems[0].find(mention), std::string::npos) << problems[0];
+    EXPECT_NE(problems[0].find("scene '" + s.name + "'"), std::string::npos) << problems[0];
+}
+
+TEST(Scene, ValidateCatchesIndexOutOfRange) {
+    Scene s = builtinScene("book-triangle");
+    s.meshes[0].indices[1] = 3;  // the triangle has 3 vertices
+    expectOneProblem(s, "index 1 = 3 is out of range");
+}
+
+TEST(Scene, ValidateCatchesNonFinitePosition) {
+    Scene s = builtinScene("course-cubes");
+    s.meshes[0].positions[5].y = std::numeric_limits<float>::quiet_NaN();
+    expectOneProblem(s, "position 5 is not finite");
+}
+
+TEST(Scene, ValidateCatchesNormalCountMismatch) {
+    Scene s = builtinScene("tutorial-room");
+    s.meshes[1].normals.pop_back();
+    expectOneProblem(s, "normals for");
+}
+
+TEST(Scene, ValidateCatchesMissingMaterialAndMesh) {
+    Scene s = builtinScene("course-two-lights");
+    s.objects[2].material = std::uint32_t(s.materials.size());
+    expectOneProblem(s, "missing material");
+    s = builtinScene("course-two-lights");
+    s.objects[0].mesh = 99;
+    expectOneProblem(s, "missing mesh");
+}
+
+TEST(Scene, ValidateCatchesLightAndCameraProblems) {
+    Scene s = builtinScene("tutorial-room");
+    s.lights[0].direction = glm::vec3(0.0f);
+    expectOneProblem(s, "zero direction");
+    s = builtinScene("book-triangle");
+    s.lights[0].shadowMapSize = 8;
+    expectOneProblem(s, "shadow map size 8");
+    s = builtinScene("book-triangle");
+    s.lights[0].shadowCamera.near = 0.0f;
+    expectOneProblem(s, "near < far");
+    s = builtinScene("book-triangle");
+    s.camera.centre = s.camera.eye;
+    expectOneProblem(s, "eye equals its centre");
+}
+
+// Scenes that pass validate() must render: each of these turns a matrix into NaN (a light
+// camera looking at its own eye, a spin about a zero axis), so validate() should flag them.
+TEST(Scene, ValidateCatchesDegenerateLightCamerasAndSpins) {
+    std::string unflagged;
+    Scene s = builtinScene("book-triangle");
+    s.lights[0].shadowCamera.target = s.lights[0].position;  // Manual: eye == target
+    if (s.validate().empty()) unflagged += " [Manual light at its own target]";
+    s = builtinScene("course-two-lights");
+    s.camera.centre = s.lights[0].position;  // Course: light camera looks at the view centre
+    if (s.validate().empty()) unflagged += " [Course light at the view camera's centre]";
+    s = builtinScene("book-triangle");
+    s.objects[0].spin.axis = glm::vec3(0.0f);  // spinning at 40 deg/s about nothing
+    if (s.validate().empty()) unflagged += " [spin with a zero axis]";
+    EXPECT_TRUE(unflagged.empty()) << "validate() accepted:" << unflagged;
+}
+
+TEST(Scene, LoadSceneByNameGivesTheBuiltin) {
+    const Scene s = loadScene("course-cubes");
+    EXPECT_EQ(s.name, "course-cubes");
+    EXPECT_EQ(s.objects.size(), builtinScene("course-cubes").objects.size());
+}
+
+TEST(Scene, LoadSceneMissingFileThrowsIo) {
+    try {
+        loadScene("no/such/file.gltf");
+        FAIL() << "loadScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::Io);
+        EXPECT_NE(std::string(e.what()).find("no/such/file.gltf"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Scene, LoadSceneUnknownNameThrowsInvalidInput) {
+    try {
+        loadScene("nosuchscene");
+        FAIL() << "loadScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::InvalidInput);
+        EXPECT_NE(std::string(e.what()).find("book-triangle"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Scene, LoadSceneExistingModelFileSaysUnsupported) {
+    const test::ScopedTempDir dir;
+    const std::string path = (dir.path() / "model.gltf").string();
+    std::ofstream(path) << "{}";
+    try {
+        loadScene(path);
+        FAIL() << "loadScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::InvalidInput);
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("not supported"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace gnomon
