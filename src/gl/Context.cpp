@@ -55,9 +55,12 @@ bool hasExtension(const char* list, const char* name) {
     return false;
 }
 
-// eglInitialize/eglTerminate are per display, shared by every context on it: count users.
+// The display is initialised once and never terminated: it is shared by every context in
+// the process, and eglTerminate would unload the driver (making a second Renderer pay the
+// start-up again, and leaving leak checkers unable to name the driver's own allocations).
 std::mutex gDisplayMutex;
-int gDisplayUsers = 0;
+EGLDisplay gDisplay = EGL_NO_DISPLAY;
+std::string gPlatform;
 
 EGLDisplay openDisplay(std::string& platform) {
     // epoxy aborts the process when libEGL is missing; check first to say so in words.
@@ -107,14 +110,11 @@ EGLDisplay openDisplay(std::string& platform) {
 
 HeadlessContext::HeadlessContext(bool debug, bool verbose) {
     std::lock_guard lock(gDisplayMutex);
-    EGLDisplay display = openDisplay(mPlatform);
-    ++gDisplayUsers;
+    if (gDisplay == EGL_NO_DISPLAY) gDisplay = openDisplay(gPlatform);
+    EGLDisplay display = gDisplay;
+    mPlatform = gPlatform;
     mDisplay = display;
-    auto cleanup = [&] {
-        if (--gDisplayUsers == 0) eglTerminate(display);
-    };
     if (!eglBindAPI(EGL_OPENGL_API)) {
-        cleanup();
         fail("no usable OpenGL: this EGL cannot bind the desktop OpenGL API (" +
              eglErrorName(eglGetError()) + ")");
     }
@@ -123,7 +123,6 @@ HeadlessContext::HeadlessContext(bool debug, bool verbose) {
         const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
         EGLint n = 0;
         if (!eglChooseConfig(display, attribs, &config, 1, &n) || n < 1) {
-            cleanup();
             fail("no usable OpenGL: EGL has no config for desktop OpenGL");
         }
     }
@@ -139,24 +138,28 @@ HeadlessContext::HeadlessContext(bool debug, bool verbose) {
     mContext = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs);
     if (mContext == EGL_NO_CONTEXT) {
         const EGLint e = eglGetError();
-        cleanup();
         fail("no usable OpenGL: the driver cannot create an OpenGL 4.5 core context (" +
              eglErrorName(e) + "; gnomon needs OpenGL 4.5, Mesa's llvmpipe provides it)");
     }
-    makeCurrent();
-    if (verbose) {
-        std::fprintf(stderr, "gnomon: OpenGL %s via %s\n", currentGlInfo().c_str(),
-                     mPlatform.c_str());
+    try {
+        makeCurrent();
+        if (verbose) {
+            std::fprintf(stderr, "gnomon: OpenGL %s via %s\n", currentGlInfo().c_str(),
+                         mPlatform.c_str());
+        }
+        requireGl45();
+        if (debug) installDebugOutput();
+    } catch (...) {
+        eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(display, mContext);
+        throw;
     }
-    requireGl45();
-    if (debug) installDebugOutput();
 }
 
 HeadlessContext::~HeadlessContext() {
     std::lock_guard lock(gDisplayMutex);
     eglMakeCurrent(mDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(mDisplay, mContext);
-    if (--gDisplayUsers == 0) eglTerminate(mDisplay);
 }
 
 void HeadlessContext::makeCurrent() {
