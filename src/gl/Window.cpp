@@ -32,9 +32,15 @@ Window::Window(const std::string& title, int width, int height, bool debug, bool
         throw Error(ErrorKind::Gl, "cannot open an OpenGL 4.5 core window: " + reason);
     }
     glfwMakeContextCurrent(mWindow);
-    glfwSwapInterval(0);
-    requireGl45();
-    if (debug) installDebugOutput();
+    try {
+        glfwSwapInterval(0);
+        requireGl45();
+        if (debug) installDebugOutput();
+    } catch (...) {
+        glfwDestroyWindow(mWindow);
+        glfwTerminate();
+        throw;
+    }
 }
 
 Window::~Window() {

@@ -62,13 +62,15 @@ exe=$build/gnomon_consumer
 [[ -x "$exe" ]] || exe=$build/$config/gnomon_consumer
 [[ -x "$exe" ]] || fail "the consumer build produced no gnomon_consumer in $build"
 
-# 3. Run it and the installed CLI with the installed library (install strips the build RPATH).
+# 3. The installed CLI finds its library through its RPATH alone.
+cli_version=$(env -u LD_LIBRARY_PATH "$prefix/bin/gnomon" --version) ||
+    fail "the installed gnomon CLI does not run (RPATH to $libdir?)"
+# The consumer has no RPATH to the prefix: give it the installed library.
 export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 if command -v ldd >/dev/null; then
     loaded=$(ldd "$exe" | sed -n 's/^[[:space:]]*libgnomon\.so[^ ]* => \([^ ]*\).*/\1/p')
     [[ "$loaded" == "$prefix"/* ]] || fail "the consumer loads libgnomon from '$loaded', not $prefix"
 fi
-cli_version=$("$prefix/bin/gnomon" --version) || fail "the installed gnomon CLI does not run"
 
 status=0
 "$exe" "$work/book-triangle.png" || status=$?
