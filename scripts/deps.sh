@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
     build-essential cmake pkg-config clang-format
-    libepoxy-dev libegl-dev libegl1 libgl1 libopengl0 libgl1-mesa-dri
+    libepoxy-dev libegl-dev libegl1 libegl-mesa0 libgl1 libopengl0 libgl1-mesa-dri
     libglfw3-dev libimgui-dev libglm-dev libpng-dev libstb-dev libcli11-dev
     libtinygltf-dev nlohmann-json3-dev libembree-dev libassimp-dev
     libgtest-dev libgmock-dev libbenchmark-dev

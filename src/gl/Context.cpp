@@ -96,11 +96,16 @@ EGLDisplay openDisplay(std::string& platform) {
         }
         tried += " device: " + eglErrorName(eglGetError()) + ";";
     }
+    if (!clientExts || !*clientExts) {
+        fail(
+            "no usable OpenGL: libEGL found no EGL driver (install Mesa's libegl-mesa0 and "
+            "libgl1-mesa-dri, or your GPU vendor's EGL)");
+    }
     if (tried.empty()) {
         fail(
             "no usable OpenGL: EGL offers neither the surfaceless nor the device platform "
             "(client extensions: " +
-            std::string(clientExts ? clientExts : "none") + ")");
+            std::string(clientExts) + ")");
     }
     fail("no usable OpenGL: EGL could not be initialised (" + tried.substr(1) +
          " is Mesa's driver package libgl1-mesa-dri installed?)");

@@ -69,6 +69,12 @@ render_and_maps)
     [[ $(od -An -tu1 -j24 -N2 "$work/maps/light-0.png" | tr -s ' ') == " 16 0" ]] || fail "map is not 16-bit grey"
     ls -A "$work" | grep -q '^\.' && fail "temporary files left behind"
     ;;
+no_gl)
+    # glvnd with no vendor library: the machine has libEGL but no driver behind it.
+    __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json run render --scene book-triangle --out "$work/a.png"
+    expect 1 "no usable OpenGL: libEGL found no EGL driver"
+    [[ $(wc -l <"$work/stderr") -eq 1 ]] || fail "expected one sentence, got: $(cat "$work/stderr")"
+    ;;
 *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
