@@ -40,7 +40,7 @@ Program buildProgram(const std::string& label, const std::vector<Stage>& stages,
         if (ok != GL_TRUE) {
             throw Error(ErrorKind::Gl, "shader " + stage.file + " (program '" + label +
                                            "') failed to compile:\n" +
-                                           annotateInfoLog(shaderLog(shader.id()), source.files));
+                                           annotateInfoLog(shaderLog(shader.id()), source));
         }
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));

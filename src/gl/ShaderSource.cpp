@@ -28,6 +28,12 @@ std::string_view embeddedShader(const std::string& name) {
 
 namespace {
 
+void addLine(AssembledSource& out, const std::string& text, int file, int line) {
+    out.text += text;
+    out.text += '\n';
+    out.lines.push_back({file, line});
+}
+
 void expand(const std::string& file, AssembledSource& out, std::vector<std::string>& stack,
             bool isRoot, const std::vector<std::string>& defines) {
     for (const auto& open : stack) {
@@ -43,20 +49,17 @@ void expand(const std::string& file, AssembledSource& out, std::vector<std::stri
     std::string line;
     int lineNo = 0;
     static const std::regex kInclude(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
-    if (!isRoot) out.text += "#line 1 " + std::to_string(index) + "\n";
     while (std::getline(in, line)) {
         ++lineNo;
         std::smatch m;
         if (std::regex_match(line, m, kInclude)) {
             expand(m[1].str(), out, stack, false, defines);
-            out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(index) + "\n";
         } else if (isRoot && lineNo == 1 && line.rfind("#version", 0) == 0) {
-            out.text += line + "\n";
+            addLine(out, line, index, lineNo);
             for (const auto& d : defines)
-                out.text += "#define " + d + "\n";
-            out.text += "#line 2 0\n";
+                addLine(out, "#define " + d, index, 0);
         } else {
-            out.text += line + "\n";
+            addLine(out, line, index, lineNo);
         }
     }
     stack.pop_back();
@@ -71,7 +74,7 @@ AssembledSource assembleShader(const std::string& file, const std::vector<std::s
     return out;
 }
 
-std::string annotateInfoLog(const std::string& log, const std::vector<std::string>& files) {
+std::string annotateInfoLog(const std::string& log, const AssembledSource& source) {
     // Mesa: "0:12(3): error: ...", NVIDIA: "0(12) : error ...".
     static const std::regex kRef(R"((^|\n)(\d+)(:(\d+)\((\d+)\)|\((\d+)\)))");
     std::string out;
@@ -79,11 +82,15 @@ std::string annotateInfoLog(const std::string& log, const std::vector<std::strin
     std::smatch m;
     while (std::regex_search(begin, log.cend(), m, kRef)) {
         out.append(begin, m[0].first);
-        const std::size_t index = std::stoul(m[2].str());
-        const std::string name = index < files.size() ? files[index] : m[2].str();
-        const std::string line = m[4].matched ? m[4].str() : m[6].str();
-        out += m[1].str() + name + ":" + line;
-        if (m[5].matched) out += ":" + m[5].str();
+        const std::size_t assembled = std::stoul(m[4].matched ? m[4].str() : m[6].str());
+        if (assembled >= 1 && assembled <= source.lines.size()) {
+            const SourceLine& at = source.lines[assembled - 1];
+            out += m[1].str() + source.files[std::size_t(at.file)] + ":" +
+                   (at.line > 0 ? std::to_string(at.line) : std::string("(injected #define)"));
+            if (m[5].matched) out += ":" + m[5].str();
+        } else {
+            out += m[0].str();  // not a line we know: leave the driver's text
+        }
         begin = m[0].second;
     }
     out.append(begin, log.cend());

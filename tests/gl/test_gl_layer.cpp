@@ -2,6 +2,8 @@
 // .glsl file and line, move-only ownership that deletes exactly once.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "GlTest.h"
 #include "gl/Objects.h"
 #include "gl/Program.h"
@@ -47,17 +49,58 @@ TEST(GlLayer, CompileErrorNamesIncludedFileAndLine) {
 }
 
 TEST(GlLayer, InfoLogReferencesAreRewritten) {
-    const std::vector<std::string> files = {"main.frag.glsl", "lights.glsl"};
-    EXPECT_EQ(gl::annotateInfoLog("0:12(5): error: x\n1:3(1): error: y", files),
-              "main.frag.glsl:12:5: error: x\nlights.glsl:3:1: error: y");
-    EXPECT_EQ(gl::annotateInfoLog("1(7) : error C0000", files), "lights.glsl:7 : error C0000");
+    gl::AssembledSource src;
+    src.files = {"main.frag.glsl", "lights.glsl"};
+    src.lines = {{0, 1}, {0, 0}, {1, 1}, {1, 2}, {1, 3}, {0, 3}};
+    EXPECT_EQ(gl::annotateInfoLog("0:6(5): error: x\n0:4(1): error: y", src),
+              "main.frag.glsl:3:5: error: x\nlights.glsl:2:1: error: y");
+    EXPECT_EQ(gl::annotateInfoLog("0(5) : error C0000", src), "lights.glsl:3 : error C0000");
+    EXPECT_EQ(gl::annotateInfoLog("0:2(1): error: z", src),
+              "main.frag.glsl:(injected #define):1: error: z");
+    EXPECT_EQ(gl::annotateInfoLog("0:99(1): error: w", src), "0:99(1): error: w");
 }
 
-TEST(GlLayer, AssembledSourceKeepsLineNumbers) {
+TEST(GlLayer, AssembledSourceMapsEveryLine) {
     const gl::AssembledSource s = gl::assembleShader("main.frag.glsl", {"A 1", "B"});
     EXPECT_EQ(s.files.at(0), "main.frag.glsl");
-    EXPECT_EQ(s.text.rfind("#version 450 core\n#define A 1\n#define B\n#line 2 0\n", 0), 0u);
-    EXPECT_NE(s.text.find("#line 1 1"), std::string::npos);
+    EXPECT_EQ(s.text.rfind("#version 450 core\n#define A 1\n#define B\n", 0), 0u);
+    EXPECT_EQ(std::count(s.text.begin(), s.text.end(), '\n'), std::ptrdiff_t(s.lines.size()));
+    EXPECT_EQ(s.text.find("#line"), std::string::npos);
+    // Line 2 of the assembled text is the first injected define; the original line 2 follows.
+    EXPECT_EQ(s.lines.at(1).line, 0);
+    EXPECT_EQ(s.lines.at(3).file, 0);
+    EXPECT_EQ(s.lines.at(3).line, 2);
+    // The first included file's lines are numbered from 1 again.
+    const auto first = std::find_if(s.lines.begin(), s.lines.end(),
+                                    [](const gl::SourceLine& l) { return l.file == 1; });
+    ASSERT_NE(first, s.lines.end());
+    EXPECT_EQ(first->line, 1);
+}
+
+// A real driver error inside an included file names that file and the exact line.
+TEST(GlLayer, DriverErrorInIncludedFileNamesItsLine) {
+    sharedRenderer().glInfo();
+    try {
+        gl::buildProgram("broken", {{GL_FRAGMENT_SHADER, "main.frag.glsl"}},
+                         {"FILTER_PCF", "PCF_SIZE 3", "kFilterReach )"});
+        FAIL() << "the program must not compile";
+    } catch (const Error& e) {
+        // kFilterReach is first declared in shadow_lookup.glsl, inside #if FILTER_PCF.
+        const std::string source(gl::embeddedShader("shadow_lookup.glsl"));
+        int line = 0, wanted = 0;
+        for (size_t pos = 0, next; pos < source.size(); pos = next + 1) {
+            next = source.find('\n', pos);
+            if (next == std::string::npos) next = source.size();
+            ++line;
+            if (wanted == 0 && source.compare(pos, 24, "const float kFilterReach") == 0) {
+                wanted = line;
+            }
+        }
+        ASSERT_GT(wanted, 0);
+        const std::string what = e.what();
+        EXPECT_NE(what.find("shadow_lookup.glsl:" + std::to_string(wanted)), std::string::npos)
+            << what;
+    }
 }
 
 TEST(GlLayer, MovedObjectsAreDeletedOnce) {
