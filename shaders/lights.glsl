@@ -1,5 +1,8 @@
-// Lights as the main pass sees them: one std430 record per light (any number; SPEC S3),
-// positions and directions already in view space, plus the light's shadow transform.
+// Lights as the main pass sees them: one record per light (SPEC S3; up to MAX_LIGHTS, set
+// from GL_MAX_UNIFORM_BLOCK_SIZE), positions and directions already in view space, plus the
+// light's shadow transform. A uniform block, not a storage buffer: indexed by the loop
+// counter (dynamically uniform) its reads are scalar, where llvmpipe gathers storage-buffer
+// reads per fragment.
 const int kDirectional = 0;
 const int kSpot = 1;
 const int kPoint = 2;
@@ -14,6 +17,7 @@ struct LightData {
     vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv
 };
 
-layout(std430, binding = 1) readonly buffer Lights {
-    LightData lights[];
+layout(std140, binding = 1) uniform Lights {
+    LightData lights[MAX_LIGHTS];
 };
+layout(location = 6) uniform int uLightCount;

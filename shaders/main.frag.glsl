@@ -4,7 +4,6 @@
 // A shadowed fragment keeps ambient only (SHADOWED_FACTOR undefined) or has its colour
 // multiplied by uShadowFactor per shadowing light (SHADOWED_FACTOR, the WebGL book's 0.7).
 // SHADOWS_OFF skips every lookup and leaves lighting unchanged.
-#include "scene_data.glsl"
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 
@@ -14,6 +13,8 @@ in VertexOut {
     vec3 vsPosition;
     vec3 vsNormal;
     vec3 colour;
+    flat vec4 material;
+    flat float receives;
 } vIn;
 
 layout(location = 3) uniform vec3 uAmbient;
@@ -23,12 +24,11 @@ layout(location = 5) uniform mat4 uWorldFromView;
 layout(location = 0) out vec4 fragColour;
 
 void main() {
-    ObjectData o = objects[uObject];
-    bool unlit = o.material.z > 0.5;
-    bool receives = o.flags.x > 0.5;
+    bool unlit = vIn.material.z > 0.5;
+    bool receives = vIn.receives > 0.5;
     vec3 vsN = normalize(vIn.vsNormal);
     vec3 wsN = normalize(vIn.wsNormal);
-    if (o.material.w > 0.5 && !gl_FrontFacing) {  // double-sided: light the side we see
+    if (vIn.material.w > 0.5 && !gl_FrontFacing) {  // double-sided: light the side we see
         vsN = -vsN;
         wsN = -wsN;
     }
@@ -37,7 +37,7 @@ void main() {
 
     vec3 lit = unlit ? base : uAmbient * base;
     float factor = 1.0;
-    for (int i = 0; i < lights.length(); ++i) {
+    for (int i = 0; i < uLightCount; ++i) {
         LightData light = lights[i];
         if (light.vsDirection.w < 0.5) continue;
         int type = int(light.vsPosition.w);
@@ -69,7 +69,7 @@ void main() {
         }
         float nDotL = max(dot(vsN, vsToLight), 0.0);
         vec3 h = normalize(vsToLight + vsToEye);
-        float spec = nDotL > 0.0 ? o.material.x * pow(max(dot(vsN, h), 0.0), o.material.y) : 0.0;
+        float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(vsN, h), 0.0), vIn.material.y) : 0.0;
         vec3 contribution = light.colour.rgb * falloff * (nDotL * base + spec);
 #ifdef SHADOWED_FACTOR
         lit += contribution;

@@ -16,6 +16,8 @@ out VertexOut {
     vec3 vsPosition;
     vec3 vsNormal;
     vec3 colour;
+    flat vec4 material;  // specular, shininess, unlit, double-sided (ObjectData.material)
+    flat float receives;
 } vOut;
 
 void main() {
@@ -28,5 +30,8 @@ void main() {
     vOut.vsPosition = vsPosition.xyz;
     vOut.vsNormal = mat3(uViewFromWorld) * wsNormal;
     vOut.colour = vertexColour * o.baseColour.rgb;
+    // Per-object values travel as flat varyings: cheaper than a storage read per fragment.
+    vOut.material = o.material;
+    vOut.receives = o.flags.x;
     gl_Position = uClipFromView * vsPosition;
 }

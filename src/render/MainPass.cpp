@@ -1,13 +1,24 @@
 #include "render/MainPass.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "gl/Program.h"
 
 namespace gnomon::render {
 
+static_assert(sizeof(GpuLight) == 160, "GpuLight must match LightData in lights.glsl");
+
+MainPass::MainPass() {
+    GLint blockBytes = 0;
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &blockBytes);
+    mMaxLights = std::min(256, int(blockBytes / GLint(sizeof(GpuLight))));
+    mLights = gl::Buffer("lights", std::size_t(mMaxLights) * sizeof(GpuLight), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+}
+
 const gl::Program& MainPass::program(const RenderOptions& options) {
-    std::vector<std::string> defines;
+    std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
     const ShadowOptions& s = options.shadow;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
     if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
@@ -43,20 +54,11 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     const std::vector<GpuLight>& lights = *in.lights;
     const size_t bytes = lights.size() * sizeof(GpuLight);
     if (lights.size() != mUploaded.size() ||
-        (bytes > 0 && std::memcmp(lights.data(), mUploaded.data(), bytes) != 0) || !mLights) {
-        if (!mLights || mLights.size() < bytes) {
-            mLights = gl::Buffer("lights", bytes, lights.data(), GL_DYNAMIC_STORAGE_BIT);
-        } else {
-            mLights.update(0, bytes, lights.data());
-        }
+        (bytes > 0 && std::memcmp(lights.data(), mUploaded.data(), bytes) != 0)) {
+        mLights.update(0, bytes, lights.data());
         mUploaded = lights;
     }
-    // An empty buffer range would be unbindable; a zero-length array is what the shader needs.
-    if (bytes > 0) {
-        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, mLights.id(), 0, GLsizeiptr(bytes));
-    } else {
-        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, mLights.id(), 0, 1);
-    }
+    glBindBufferBase(GL_UNIFORM_BUFFER, 1, mLights.id());
 
     // Hardware comparison with NEAREST is one texel; LINEAR gives the 2x2 bilinear PCF.
     if (!mSampler || mSamplerFilter != options.shadow.filter) {
@@ -83,6 +85,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     glUniform3fv(3, 1, &in.ambient[0]);
     glUniform1f(4, options.shading.shadowFactor);
     glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
+    glUniform1i(6, GLint(lights.size()));
 
     scene.bind();
     glEnable(GL_DEPTH_TEST);

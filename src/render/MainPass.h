@@ -15,7 +15,7 @@
 
 namespace gnomon::render {
 
-// The std430 light record of shaders/lights.glsl.
+// The std140 light record of shaders/lights.glsl (every member 16-byte aligned).
 struct GpuLight {
     glm::mat4 textureFromWorld{1.0f};
     glm::vec4 vsPosition{0.0f};
@@ -36,13 +36,17 @@ struct MainPassInputs {
 
 class MainPass {
 public:
+    MainPass();
     void render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options);
+    // Lights one frame can hold: the uniform block size limit / the record size, at most 256.
+    int maxLights() const { return mMaxLights; }
 
 private:
     const gl::Program& program(const RenderOptions& options);
 
     std::map<std::string, gl::Program> mPrograms;
-    gl::Buffer mLights;
+    int mMaxLights = 0;
+    gl::Buffer mLights;  // sized for mMaxLights once; the used part is updated on change
     std::vector<GpuLight> mUploaded;
     gl::Sampler mSampler;
     ShadowFilter mSamplerFilter = ShadowFilter::Pcf;

@@ -104,6 +104,12 @@ struct Renderer::Impl {
     Image render(const Scene& s, const RenderOptions& options) {
         if (auto problems = options.validate(); !problems.empty()) invalid(problems);
         if (auto problems = s.validate(); !problems.empty()) invalid(problems);
+        if (s.lights.size() > std::size_t(mainPass.maxLights())) {
+            throw Error(ErrorKind::InvalidInput,
+                        "scene '" + s.name + "' has " + std::to_string(s.lights.size()) +
+                            " lights; this OpenGL driver allows at most " +
+                            std::to_string(mainPass.maxLights()) + " per frame");
+        }
         if (options.lightOnly >= int(s.lights.size())) {
             throw Error(ErrorKind::InvalidInput, "light-only " + std::to_string(options.lightOnly) +
                                                      ": scene '" + s.name + "' has " +
