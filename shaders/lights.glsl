@@ -6,6 +6,12 @@
 const int kDirectional = 0;
 const int kSpot = 1;
 const int kPoint = 2;
+const int kArea = 3;
+
+// LightData.shadow.z: how the light's map was made.
+const float kFramePerspective = 0.0;
+const float kFrameOrthographic = 1.0;
+const float kFrameCube = 2.0;
 
 struct LightData {
     mat4 textureFromWorld;  // world -> light clip -> [0,1] map coordinates and depth
@@ -13,8 +19,10 @@ struct LightData {
     vec4 vsDirection;       // xyz towards where the light goes, w = on (0/1)
     vec4 colour;            // rgb = colour x intensity, w = shadow layer (-1: no shadow)
     vec4 attenuation;       // c0, c1, c2, cos(outer cone)
-    vec4 shadow;            // x cos(inner cone), y texel world size, z orthographic, w uv scale
-    vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv
+    vec4 shadow;            // x cos(inner cone), y texel world size, z frame kind, w uv scale
+    vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv,
+                            // w cube far plane
+    vec4 wsPosition;        // xyz world position (cube lookups), w cube near plane
 };
 
 layout(std140, binding = 1) uniform Lights {

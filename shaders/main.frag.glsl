@@ -1,6 +1,7 @@
 #version 450 core
 // Main pass shading (SPEC S4): ambient + Blinn-Phong diffuse and specular per light in view
-// space, attenuation 1/(c0 + c1 d + c2 d^2), spot cones, and per-light shadow visibility.
+// space, attenuation 1/(c0 + c1 d + c2 d^2) (area lights: d from the light's plane), spot
+// cones, and per-light shadow visibility.
 // A shadowed fragment keeps ambient only (SHADOWED_FACTOR undefined) or has its colour
 // multiplied by uShadowFactor per shadowing light (SHADOWED_FACTOR, the WebGL book's 0.7).
 // SHADOWS_OFF skips every lookup and leaves lighting unchanged.
@@ -45,6 +46,14 @@ void main() {
         float falloff = 1.0;
         if (type == kDirectional) {
             vsToLight = -normalize(light.vsDirection.xyz);
+        } else if (type == kArea) {
+            // Parallel rays; falloff with the distance from the light's plane (Hessian
+            // normal form: n.p + d, with d = -n.p0 for the plane through the light).
+            vec3 n = normalize(light.vsDirection.xyz);
+            vsToLight = -n;
+            float dist = abs(dot(n, vIn.vsPosition - light.vsPosition.xyz));
+            vec3 c = light.attenuation.xyz;
+            falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
         } else {
             vec3 d = light.vsPosition.xyz - vIn.vsPosition;
             float dist = length(d);

@@ -1,10 +1,12 @@
 // Shadow map lookup (SPEC S2, S9, S13, S17): world point -> light texture space, divide by
-// w, compare with the stored depth plus tolerance. Depth maps of all lights live in one
-// texture array (one layer per light, a light's map in the layer's lower-left corner).
+// w, compare with the stored depth plus tolerance. Single-frustum maps of all lights live in
+// one texture array (one layer per light, a light's map in the layer's lower-left corner);
+// point lights' cube maps in one cube-map array.
 //
 // Variants (injected #defines): FILTER_NONE | FILTER_HW2X2 | FILTER_PCF with PCF_SIZE,
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
 layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
+layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
 // Texels a lookup reaches from its centre, plus the bilinear footprint's one.
 #if defined(FILTER_PCF)
@@ -15,21 +17,61 @@ const float kFilterReach = 1.0;
 const float kFilterReach = 0.5;
 #endif
 
+// Normal offset: move the lookup point off the surface along its normal. A planar receiver
+// tilted by theta to the light changes stored depth by tan(theta) per texel of world size w;
+// a filter reaching k texels (plus one for bilinear) needs the point (k + 1) w sin(theta) off
+// the surface to stay lit everywhere it should.
+vec3 normalOffset(LightData light, vec3 wsNormal, vec3 wsToLight, float texelWorld) {
+    float nDotL = clamp(dot(wsNormal, wsToLight), 0.0, 1.0);
+    float sinTheta = sqrt(1.0 - nDotL * nDotL);
+    return wsNormal * (light.shadowBias.y * kFilterReach * texelWorld * sinTheta);
+}
+
+// Point lights (SPEC S21): the cube face of the direction light -> point holds the depth
+// along that face's axis; compare against the same depth of this point. PCF taps lie in the
+// face's plane (a 2-D kernel on the face, not the tutorial's 3-D grid of directions: the
+// same footprint for k^2 instead of k^3 lookups).
+float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
+    vec3 toPoint = wsPosition - light.wsPosition.xyz;
+    float near = light.wsPosition.w, far = light.shadowBias.w;
+    vec3 a = abs(toPoint);
+    float major = max(a.x, max(a.y, a.z));
+    vec3 offset = normalOffset(light, wsNormal, wsToLight, light.shadow.y * major);
+    toPoint += offset;
+    a = abs(toPoint);
+    major = max(a.x, max(a.y, a.z));
+    float ndc = (far + near) / (far - near) - 2.0 * far * near / ((far - near) * major);
+    float reference = 0.5 * ndc + 0.5 - light.shadowBias.x;
+    float layer = light.colour.w;
+#if defined(FILTER_PCF)
+    // Two axes spanning the face of the major axis; one texel is 2 / size at unit distance.
+    vec3 u = a.x >= a.y && a.x >= a.z ? vec3(0, 1, 0) : vec3(1, 0, 0);
+    vec3 v = a.z >= a.x && a.z >= a.y ? vec3(0, 1, 0) : vec3(0, 0, 1);
+    float step = light.shadowBias.z * 2.0 * major;
+    float sum = 0.0;
+    const int r = PCF_SIZE / 2;
+    for (int y = -r; y <= r; ++y) {
+        for (int x = -r; x <= r; ++x) {
+            vec3 tap = toPoint + (float(x) * u + float(y) * v) * step;
+            sum += texture(uShadowCubes, vec4(tap, layer), reference);
+        }
+    }
+    return sum / float(PCF_SIZE * PCF_SIZE);
+#else
+    return texture(uShadowCubes, vec4(toPoint, layer), reference);
+#endif
+}
+
 // Visibility of a world point for one light, 0 (shadowed) .. 1 (lit).
 float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
+    if (light.shadow.z == kFrameCube) return cubeVisibility(light, wsPosition, wsNormal, wsToLight);
     float layer = light.colour.w;
     float uvScale = light.shadow.w;
     float texelUv = light.shadowBias.z;
 
-    // Normal offset: move the lookup point off the surface along its normal. A planar
-    // receiver tilted by theta to the light changes stored depth by tan(theta) per texel of
-    // world size w; a filter reaching k texels (plus one for bilinear) needs the point
-    // (k + 1) w sin(theta) off the surface to stay lit everywhere it should.
     vec4 clip = light.textureFromWorld * vec4(wsPosition, 1.0);
-    float texelWorld = light.shadow.y * (light.shadow.z > 0.5 ? 1.0 : clip.w);
-    float nDotL = clamp(dot(wsNormal, wsToLight), 0.0, 1.0);
-    float sinTheta = sqrt(1.0 - nDotL * nDotL);
-    vec3 offset = wsNormal * (light.shadowBias.y * kFilterReach * texelWorld * sinTheta);
+    float texelWorld = light.shadow.y * (light.shadow.z == kFrameOrthographic ? 1.0 : clip.w);
+    vec3 offset = normalOffset(light, wsNormal, wsToLight, texelWorld);
     vec4 shadowCoord = light.textureFromWorld * vec4(wsPosition + offset, 1.0);
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
 

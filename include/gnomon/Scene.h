@@ -67,11 +67,15 @@ enum class LightType {
     Directional,  // parallel rays along `direction`, no falloff (SPEC S18)
     Spot,         // from `position` along `direction` inside a cone, falls off (SPEC S19)
     Point,        // from `position` in all directions, falls off (SPEC S21)
+    Area,         // the tutorial's simplified area light: parallel rays along `direction`
+                  // from the plane through `position`, falling off with the distance from
+                  // that plane (SPEC S20)
 };
 
 // How a light's shadow camera is placed (SPEC S6-S8).
 enum class ShadowCameraPolicy {
-    Fit,     // fitted to the scene's bounds: tightest volume, tight near/far
+    Fit,     // fitted to the scene's bounds, tight near/far: orthographic for directional and
+             // area lights, the cone for spots, all six cube faces for point lights
     Manual,  // look at `target` with `up`, the projection numbers as given
     Course,  // the course text: look at the view camera's centre with the view camera's up
 };

@@ -59,11 +59,14 @@ public:
     // 2D texture array with `layers` layers of width x height, one mip level.
     static Texture array2D(const std::string& label, GLenum internalFormat, int width, int height,
                            int layers);
+    // Cube-map array of `cubes` cubes (6 layers each) of size x size, one mip level.
+    static Texture cubeArray(const std::string& label, GLenum internalFormat, int size,
+                             int cubes);
     // 2D texture, one mip level.
     static Texture plain2D(const std::string& label, GLenum internalFormat, int width, int height);
     int width() const { return mWidth; }
     int height() const { return mHeight; }
-    int layers() const { return mLayers; }
+    int layers() const { return mLayers; }  // array layers; cube arrays: 6 per cube
     GLenum format() const { return mFormat; }
 
 private:

@@ -122,11 +122,12 @@ void GpuScene::bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mObjects.id());
 }
 
-void GpuScene::draw(const DrawItem& item) const {
+void GpuScene::draw(const DrawItem& item, GLsizei instances) const {
     if (item.indexCount == 0) return;
     glUniform1ui(0, item.object);
-    glDrawElementsBaseVertex(GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT,
-                             reinterpret_cast<const void*>(item.firstIndexByte), item.baseVertex);
+    glDrawElementsInstancedBaseVertex(GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT,
+                                      reinterpret_cast<const void*>(item.firstIndexByte),
+                                      instances, item.baseVertex);
 }
 
 }  // namespace gnomon::render

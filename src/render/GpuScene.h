@@ -35,8 +35,8 @@ public:
     bool sync(const Scene& scene, double seconds);
     // Binds the vertex array and the object buffer (binding 0).
     void bind() const;
-    // Issues one draw; uniform location 0 receives the object index.
-    void draw(const DrawItem& item) const;
+    // Issues one draw (`instances` copies); uniform location 0 receives the object index.
+    void draw(const DrawItem& item, GLsizei instances = 1) const;
     const std::vector<DrawItem>& items() const { return mItems; }
     // World bounds of all objects (or casters only) at the synced time.
     const Aabb& bounds() const { return mBounds; }

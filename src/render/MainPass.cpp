@@ -7,7 +7,7 @@
 
 namespace gnomon::render {
 
-static_assert(sizeof(GpuLight) == 160, "GpuLight must match LightData in lights.glsl");
+static_assert(sizeof(GpuLight) == 176, "GpuLight must match LightData in lights.glsl");
 
 MainPass::MainPass() {
     GLint blockBytes = 0;
@@ -75,8 +75,13 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     if (!in.shadowMaps && !mDummyMaps) {
         mDummyMaps = gl::Texture::array2D("no shadow maps", GL_DEPTH_COMPONENT32F, 1, 1, 1);
     }
+    if (!in.shadowCubes && !mDummyCubes) {
+        mDummyCubes = gl::Texture::cubeArray("no shadow cubes", GL_DEPTH_COMPONENT32F, 1, 1);
+    }
     glBindTextureUnit(0, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
+    glBindTextureUnit(1, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
     glBindSampler(0, mSampler.id());
+    glBindSampler(1, mSampler.id());
 
     glUseProgram(prog.id());
     const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
@@ -103,6 +108,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     }
     glDisable(GL_CULL_FACE);
     glBindSampler(0, 0);
+    glBindSampler(1, 0);
 }
 
 }  // namespace gnomon::render

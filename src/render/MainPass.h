@@ -24,6 +24,7 @@ struct GpuLight {
     glm::vec4 attenuation{0.0f};
     glm::vec4 shadow{0.0f};
     glm::vec4 shadowBias{0.0f};
+    glm::vec4 wsPosition{0.0f};
 };
 
 struct MainPassInputs {
@@ -31,7 +32,8 @@ struct MainPassInputs {
     glm::mat4 clipFromView{1.0f};
     glm::vec3 ambient{0.0f};
     const std::vector<GpuLight>* lights = nullptr;
-    const gl::Texture* shadowMaps = nullptr;  // null when no light has a map
+    const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
+    const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
 };
 
 class MainPass {
@@ -50,7 +52,7 @@ private:
     std::vector<GpuLight> mUploaded;
     gl::Sampler mSampler;
     ShadowFilter mSamplerFilter = ShadowFilter::Pcf;
-    gl::Texture mDummyMaps;  // bound when there is no shadow map, keeps the sampler valid
+    gl::Texture mDummyMaps, mDummyCubes;  // bound when a kind of map is absent
 };
 
 }  // namespace gnomon::render

@@ -20,6 +20,17 @@ constexpr bool kDebugBuild = false;
 constexpr bool kDebugBuild = true;
 #endif
 
+// LightData.vsPosition.w in shaders/lights.glsl.
+int lightTypeCode(LightType type) {
+    switch (type) {
+        case LightType::Directional: return 0;
+        case LightType::Spot: return 1;
+        case LightType::Point: return 2;
+        case LightType::Area: return 3;
+    }
+    return 0;
+}
+
 [[noreturn]] void invalid(const std::vector<std::string>& problems) {
     std::string message;
     for (const auto& p : problems)
@@ -39,7 +50,9 @@ struct Renderer::Impl {
     std::vector<render::GpuLight> lights;
     FrameStats stats;
 
-    explicit Impl(const ContextOptions& o) : context(o.debug || kDebugBuild, o.verbose) {}
+    explicit Impl(const ContextOptions& o) : context(o.debug || kDebugBuild, o.verbose) {
+        glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF taps may cross cube faces
+    }
 
     void ensureTarget(int width, int height) {
         if (target && colour.width() == width && colour.height() == height) return;
@@ -51,21 +64,19 @@ struct Renderer::Impl {
         target.checkComplete();
     }
 
+    // Every light's record for the main pass, and the light cameras of those that cast
+    // shadows this frame (map layers are assigned by the shadow pass, see finishLights).
     void planLights(const Scene& s, const RenderOptions& options, const glm::mat4& viewFromWorld) {
         shadowed.clear();
         lights.clear();
-        const glm::mat4 textureFromClip = shadow::textureFromClip();
         for (size_t i = 0; i < s.lights.size(); ++i) {
             const Light& light = s.lights[i];
             render::GpuLight g;
-            const int type = light.type == LightType::Directional ? 0
-                             : light.type == LightType::Spot      ? 1
-                                                                  : 2;
             const glm::vec3 direction = glm::length(light.direction) > 0.0f
                                             ? glm::normalize(light.direction)
                                             : glm::vec3(0, -1, 0);
-            g.vsPosition =
-                glm::vec4(glm::vec3(viewFromWorld * glm::vec4(light.position, 1.0f)), float(type));
+            g.vsPosition = glm::vec4(glm::vec3(viewFromWorld * glm::vec4(light.position, 1.0f)),
+                                     float(lightTypeCode(light.type)));
             g.vsDirection = glm::vec4(glm::mat3(viewFromWorld) * direction,
                                       lightIsOn(s, options, i) ? 1.0f : 0.0f);
             g.colour = glm::vec4(light.colour * light.intensity, -1.0f);
@@ -79,25 +90,35 @@ struct Renderer::Impl {
                 const shadow::LightCameraFrame frame =
                     shadow::lightCameraFrame(light, s.camera, scene.bounds(), mapSize);
                 if (frame.valid) {
-                    g.colour.w = float(shadowed.size());
-                    g.textureFromWorld = textureFromClip * frame.clipFromWorld();
                     g.shadow.y = frame.texelWorldSize;
-                    g.shadow.z = frame.orthographic ? 1.0f : 0.0f;
+                    g.shadow.z = float(int(frame.kind == shadow::FrameKind::Cube           ? 2
+                                           : frame.kind == shadow::FrameKind::Orthographic ? 1
+                                                                                           : 0));
+                    if (frame.kind == shadow::FrameKind::Cube) {
+                        g.wsPosition = glm::vec4(light.position, frame.near);
+                        g.shadowBias.w = frame.far;
+                    } else {
+                        g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
+                    }
+                    g.shadowBias.x = options.shadow.biasConstant;
+                    g.shadowBias.y = options.shadow.normalOffset;
                     shadowed.push_back({int(i), mapSize, frame,
-                                        light.shadowCamera.policy == ShadowCameraPolicy::Fit});
+                                        light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0});
                 }
             }
             lights.push_back(g);
         }
-        // uv scale and texel size depend on the array size, the largest map.
-        int arraySize = 0;
-        for (const auto& sl : shadowed)
-            arraySize = std::max(arraySize, sl.mapSize);
-        for (const auto& sl : shadowed) {
+    }
+
+    // After the shadow pass placed each map: layer, and the map's share of its array.
+    void finishLights() {
+        for (const render::ShadowedLight& sl : shadowed) {
             render::GpuLight& g = lights[size_t(sl.light)];
+            const bool cube = sl.frame.kind == shadow::FrameKind::Cube;
+            const int arraySize = cube ? shadowPass.cubes().width() : shadowPass.mapArraySize();
+            g.colour.w = float(sl.layer);
             g.shadow.w = float(sl.mapSize) / float(arraySize);
-            g.shadowBias = {options.shadow.biasConstant, options.shadow.normalOffset,
-                            1.0f / float(arraySize), 0.0f};
+            g.shadowBias.z = 1.0f / float(arraySize);
         }
     }
 
@@ -125,6 +146,7 @@ struct Renderer::Impl {
         stats = {};
         stats.shadowPasses = shadowPass.render(scene, shadowed, options.shadow);
         stats.shadowMapBytes = shadowed.empty() ? 0 : shadowPass.bytes();
+        finishLights();
 
         ensureTarget(options.width, options.height);
         glBindFramebuffer(GL_FRAMEBUFFER, target.id());
@@ -138,7 +160,8 @@ struct Renderer::Impl {
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
         in.ambient = s.ambient;
         in.lights = &lights;
-        in.shadowMaps = shadowed.empty() ? nullptr : &shadowPass.maps();
+        in.shadowMaps = shadowPass.maps() ? &shadowPass.maps() : nullptr;
+        in.shadowCubes = shadowPass.cubes() ? &shadowPass.cubes() : nullptr;
         mainPass.render(scene, in, options);
 
         Image image(options.width, options.height, 4);
@@ -169,9 +192,8 @@ Image Renderer::render(const Scene& scene, const RenderOptions& options) {
 std::vector<ShadowMapImage> Renderer::shadowMaps() {
     mImpl->context.makeCurrent();
     std::vector<ShadowMapImage> out;
-    for (size_t layer = 0; layer < mImpl->shadowed.size(); ++layer) {
-        const auto& sl = mImpl->shadowed[layer];
-        out.push_back({sl.light, mImpl->shadowPass.readBack(int(layer), sl.mapSize)});
+    for (const render::ShadowedLight& sl : mImpl->shadowed) {
+        out.push_back({sl.light, mImpl->shadowPass.readBack(sl)});
     }
     return out;
 }

@@ -1,95 +1,178 @@
 #include "render/ShadowPass.h"
 
 #include <algorithm>
-#include <cstring>
 
 #include "gl/Program.h"
 
 namespace gnomon::render {
 
-ShadowPass::ShadowPass()
-    : mProgram(gl::buildProgram("shadow depth", {{GL_VERTEX_SHADER, "depth.vert.glsl"},
-                                                 {GL_FRAGMENT_SHADER, "depth.frag.glsl"}})) {}
+ShadowPass::ShadowPass(bool layeredCubes)
+    : mLayered(layeredCubes && epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array")),
+      mProgram(gl::buildProgram("shadow depth", {{GL_VERTEX_SHADER, "depth.vert.glsl"},
+                                                 {GL_FRAGMENT_SHADER, "depth.frag.glsl"}})) {
+    if (mLayered) {
+        mCubeProgram = gl::buildProgram("shadow depth cube",
+                                        {{GL_VERTEX_SHADER, "depth_cube.vert.glsl"},
+                                         {GL_FRAGMENT_SHADER, "depth.frag.glsl"}});
+    }
+}
 
-void ShadowPass::allocate(int size, int layers) {
+namespace {
+void setCompare(GLuint texture) {
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+gl::Framebuffer depthOnlyFramebuffer(const std::string& label) {
+    gl::Framebuffer fb(label);
+    glNamedFramebufferDrawBuffer(fb.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(fb.id(), GL_NONE);
+    return fb;
+}
+}  // namespace
+
+void ShadowPass::allocate2D(int size, int layers) {
     mMaps = gl::Texture::array2D("shadow maps", GL_DEPTH_COMPONENT32F, size, size, layers);
-    glTextureParameteri(mMaps.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(mMaps.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glTextureParameteri(mMaps.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(mMaps.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    setCompare(mMaps.id());
     mFramebuffers.clear();
     for (int layer = 0; layer < layers; ++layer) {
-        gl::Framebuffer fb("shadow map layer " + std::to_string(layer));
+        gl::Framebuffer fb = depthOnlyFramebuffer("shadow map layer " + std::to_string(layer));
         glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mMaps.id(), 0, layer);
-        glNamedFramebufferDrawBuffer(fb.id(), GL_NONE);
-        glNamedFramebufferReadBuffer(fb.id(), GL_NONE);
         fb.checkComplete();
         mFramebuffers.push_back(std::move(fb));
     }
     mLayers.assign(size_t(layers), LayerState{});
 }
 
-std::size_t ShadowPass::bytes() const {
-    return mMaps ? std::size_t(mMaps.width()) * mMaps.height() * mMaps.layers() * 4 : 0;
+void ShadowPass::allocateCubes(int size, int cubes) {
+    mCubes = gl::Texture::cubeArray("point shadow cubes", GL_DEPTH_COMPONENT32F, size, cubes);
+    setCompare(mCubes.id());
+    mCubeFaceFramebuffers.clear();
+    if (mLayered) {
+        mCubeFramebuffer = depthOnlyFramebuffer("point shadow cubes (layered)");
+        glNamedFramebufferTexture(mCubeFramebuffer.id(), GL_DEPTH_ATTACHMENT, mCubes.id(), 0);
+        mCubeFramebuffer.checkComplete();
+    } else {
+        for (int face = 0; face < 6 * cubes; ++face) {
+            gl::Framebuffer fb = depthOnlyFramebuffer("point shadow face " + std::to_string(face));
+            glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mCubes.id(), 0, face);
+            fb.checkComplete();
+            mCubeFaceFramebuffers.push_back(std::move(fb));
+        }
+    }
+    mCubeLayers.assign(size_t(cubes), LayerState{});
 }
 
-int ShadowPass::render(const GpuScene& scene, const std::vector<ShadowedLight>& lights,
+std::size_t ShadowPass::bytes() const {
+    std::size_t total = 0;
+    if (mMaps) total += std::size_t(mMaps.width()) * mMaps.height() * mMaps.layers() * 4;
+    if (mCubes) total += std::size_t(mCubes.width()) * mCubes.height() * mCubes.layers() * 4;
+    return total;
+}
+
+void ShadowPass::setDepthState(const ShadowOptions& options, bool depthClamp) const {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(options.biasSlope, options.biasUnits);
+    if (options.cull != CullMode::None) {
+        glCullFace(options.cull == CullMode::Front ? GL_FRONT : GL_BACK);
+    }
+    depthClamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
+}
+
+void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options,
+                             GLsizei instances) const {
+    bool culling = false;
+    glDisable(GL_CULL_FACE);
+    for (const DrawItem& item : scene.items()) {
+        if (!item.casts) continue;
+        const bool wantCull = options.cull != CullMode::None && !item.doubleSided;
+        if (wantCull != culling) {
+            wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+            culling = wantCull;
+        }
+        scene.draw(item, instances);
+    }
+}
+
+int ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
                        const ShadowOptions& options) {
-    if (lights.empty()) return 0;
-    int size = 0;
-    for (const ShadowedLight& l : lights)
-        size = std::max(size, l.mapSize);
-    const int layers = int(lights.size());
-    if (!mMaps || mMaps.width() != size || mMaps.layers() != layers) allocate(size, layers);
+    int size2D = 0, sizeCube = 0, count2D = 0, countCube = 0;
+    for (ShadowedLight& l : lights) {
+        if (l.frame.kind == shadow::FrameKind::Cube) {
+            sizeCube = std::max(sizeCube, l.mapSize);
+            l.layer = countCube++;
+        } else {
+            size2D = std::max(size2D, l.mapSize);
+            l.layer = count2D++;
+        }
+    }
+    if (count2D > 0 && (!mMaps || mMaps.width() != size2D || mMaps.layers() != count2D)) {
+        allocate2D(size2D, count2D);
+    }
+    if (countCube > 0 && (!mCubes || mCubes.width() != sizeCube ||
+                          mCubes.layers() != 6 * countCube)) {
+        allocateCubes(sizeCube, countCube);
+    }
 
     int rendered = 0;
-    bool stateSet = false;
-    for (int layer = 0; layer < layers; ++layer) {
-        const ShadowedLight& light = lights[size_t(layer)];
-        LayerState want{
-            light.frame.clipFromWorld(), light.mapSize,     scene.revision(), options.cull,
-            options.biasSlope,           options.biasUnits, light.depthClamp};
-        if (mLayers[size_t(layer)] == want) continue;  // nothing changed: keep the map
-        mLayers[size_t(layer)] = want;
-        if (!stateSet) {
-            glUseProgram(mProgram.id());
-            scene.bind();
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-            glDepthMask(GL_TRUE);
-            glEnable(GL_POLYGON_OFFSET_FILL);
-            glPolygonOffset(options.biasSlope, options.biasUnits);
-            if (options.cull != CullMode::None) {
-                glCullFace(options.cull == CullMode::Front ? GL_FRONT : GL_BACK);
+    bool any = false;
+    const float one = 1.0f;
+    for (const ShadowedLight& light : lights) {
+        const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+        LayerState want{{}, light.mapSize, scene.revision(), options.cull,
+                        options.biasSlope, options.biasUnits, light.depthClamp};
+        if (cube) {
+            for (int face = 0; face < 6; ++face) {
+                want.clipFromWorld.push_back(light.frame.faceClipFromWorld(face));
             }
-            stateSet = true;
-        }
-        if (light.depthClamp) {
-            glEnable(GL_DEPTH_CLAMP);
         } else {
-            glDisable(GL_DEPTH_CLAMP);
+            want.clipFromWorld.push_back(light.frame.clipFromWorld());
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffers[size_t(layer)].id());
-        // Clear the whole layer (clears ignore the viewport) so no stale depth is ever read.
-        const float one = 1.0f;
-        glClearNamedFramebufferfv(mFramebuffers[size_t(layer)].id(), GL_DEPTH, 0, &one);
+        LayerState& have = (cube ? mCubeLayers : mLayers)[size_t(light.layer)];
+        if (have == want) continue;  // nothing changed: keep the map
+        have = std::move(want);
+        if (!any) {
+            scene.bind();
+            any = true;
+        }
+        setDepthState(options, light.depthClamp);
         glViewport(0, 0, light.mapSize, light.mapSize);
-        const glm::mat4 clipFromWorld = light.frame.clipFromWorld();
-        glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
-        bool culling = false;
-        glDisable(GL_CULL_FACE);
-        for (const DrawItem& item : scene.items()) {
-            if (!item.casts) continue;
-            const bool wantCull = options.cull != CullMode::None && !item.doubleSided;
-            if (wantCull != culling) {
-                wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-                culling = wantCull;
+        const std::vector<glm::mat4>& m = have.clipFromWorld;
+        if (!cube) {
+            glUseProgram(mProgram.id());
+            glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffers[size_t(light.layer)].id());
+            // Clear the whole layer (clears ignore the viewport): no stale depth is ever read.
+            glClearNamedFramebufferfv(mFramebuffers[size_t(light.layer)].id(), GL_DEPTH, 0, &one);
+            glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]);
+            drawCasters(scene, options, 1);
+        } else {
+            // Only this light's six faces are cleared; other cubes keep their maps.
+            glClearTexSubImage(mCubes.id(), 0, 0, 0, 6 * light.layer, mCubes.width(),
+                               mCubes.height(), 6, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+            if (mLayered) {
+                glUseProgram(mCubeProgram.id());
+                glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());
+                glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
+                glUniform1i(7, 6 * light.layer);
+                drawCasters(scene, options, 6);
+            } else {
+                glUseProgram(mProgram.id());
+                for (int face = 0; face < 6; ++face) {
+                    glBindFramebuffer(GL_FRAMEBUFFER,
+                                      mCubeFaceFramebuffers[size_t(6 * light.layer + face)].id());
+                    glUniformMatrix4fv(1, 1, GL_FALSE, &m[size_t(face)][0][0]);
+                    drawCasters(scene, options, 1);
+                }
             }
-            scene.draw(item);
         }
         ++rendered;
     }
-    if (stateSet) {
+    if (any) {
         glDisable(GL_POLYGON_OFFSET_FILL);
         glDisable(GL_DEPTH_CLAMP);
         glDisable(GL_CULL_FACE);
@@ -97,19 +180,33 @@ int ShadowPass::render(const GpuScene& scene, const std::vector<ShadowedLight>& 
     return rendered;
 }
 
-Image16 ShadowPass::readBack(int layer, int mapSize) const {
-    std::vector<float> depth(size_t(mapSize) * mapSize);
-    glGetTextureSubImage(mMaps.id(), 0, 0, 0, layer, mapSize, mapSize, 1, GL_DEPTH_COMPONENT,
-                         GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
-    Image16 out;
-    out.width = out.height = mapSize;
-    out.pixels.resize(depth.size());
-    for (int y = 0; y < mapSize; ++y) {
-        const float* row = &depth[size_t(mapSize - 1 - y) * mapSize];  // GL rows are bottom-up
-        for (int x = 0; x < mapSize; ++x) {
+namespace {
+void toGrey(const std::vector<float>& depth, int size, Image16& out, int xOffset) {
+    for (int y = 0; y < size; ++y) {
+        const float* row = &depth[size_t(size - 1 - y) * size];  // GL rows are bottom-up
+        for (int x = 0; x < size; ++x) {
             const float d = std::clamp(row[x], 0.0f, 1.0f);
-            out.pixels[size_t(y) * mapSize + x] = std::uint16_t(d * 65535.0f + 0.5f);
+            out.pixels[size_t(y) * out.width + xOffset + x] = std::uint16_t(d * 65535.0f + 0.5f);
         }
+    }
+}
+}  // namespace
+
+Image16 ShadowPass::readBack(const ShadowedLight& light) const {
+    const int size = light.mapSize;
+    const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+    const int faces = cube ? 6 : 1;
+    Image16 out;
+    out.width = size * faces;
+    out.height = size;
+    out.pixels.resize(size_t(out.width) * out.height);
+    std::vector<float> depth(size_t(size) * size);
+    for (int face = 0; face < faces; ++face) {
+        const GLuint texture = cube ? mCubes.id() : mMaps.id();
+        const int layer = cube ? 6 * light.layer + face : light.layer;
+        glGetTextureSubImage(texture, 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                             GLsizei(depth.size() * sizeof(float)), depth.data());
+        toGrey(depth, size, out, face * size);
     }
     return out;
 }

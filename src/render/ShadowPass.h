@@ -1,7 +1,9 @@
-// The shadow pass (SPEC S1, S3, S14): one depth-only rendering per shadowed light into a
-// layer of a DEPTH_COMPONENT32F texture array (one layer per light; a light's map occupies
-// the layer's lower-left mapSize x mapSize texels). A layer is re-rendered only when its
-// light camera, the casters or the depth-pass state changed (static maps are kept).
+// The shadow pass (SPEC S1, S3, S14, S21): one depth-only rendering per shadowed light.
+// Single-frustum lights (directional, spot, area, textbook point cameras) each own a layer of
+// a DEPTH_COMPONENT32F 2D array (a light's map in the layer's lower-left mapSize^2 texels);
+// omnidirectional point lights own six layers of a cube-map array, drawn in one instanced
+// pass with gl_Layer from the vertex shader, or six passes where the driver cannot.
+// A light's map is re-rendered only when its camera, the scene or the depth state changed.
 #pragma once
 
 #include <vector>
@@ -19,23 +21,28 @@ struct ShadowedLight {
     int mapSize = 1024;
     shadow::LightCameraFrame frame;
     bool depthClamp = false;  // fitted cameras: casters in front of near still cast
+    int layer = 0;            // 2D array layer, or cube index in the cube-map array
 };
 
 class ShadowPass {
 public:
-    ShadowPass();
-    // Renders (or keeps) the map of every light in `lights`; layer i belongs to lights[i].
-    // Returns the number of maps actually rendered.
-    int render(const GpuScene& scene, const std::vector<ShadowedLight>& lights,
+    // `layeredCubes` false forces six passes per cube (to test the fallback path).
+    explicit ShadowPass(bool layeredCubes = true);
+    // Renders (or keeps) every light's map. Lights with frame.kind == Cube go to the cube
+    // array (layer = cube index), others to the 2D array. Returns the maps rendered.
+    int render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
                const ShadowOptions& options);
     const gl::Texture& maps() const { return mMaps; }
+    const gl::Texture& cubes() const { return mCubes; }
+    int mapArraySize() const { return mMaps ? mMaps.width() : 0; }
     std::size_t bytes() const;
-    // Layer i's map as 16-bit grey, top row first (darker = nearer).
-    Image16 readBack(int layer, int mapSize) const;
+    // A light's map as 16-bit grey, top row first (darker = nearer); cubes unfold as a
+    // horizontal strip of the six faces +X, -X, +Y, -Y, +Z, -Z.
+    Image16 readBack(const ShadowedLight& light) const;
 
 private:
     struct LayerState {
-        glm::mat4 clipFromWorld{0.0f};
+        std::vector<glm::mat4> clipFromWorld;
         int mapSize = 0;
         std::uint64_t sceneRevision = ~0ull;
         CullMode cull = CullMode::Back;
@@ -43,12 +50,18 @@ private:
         bool depthClamp = false;
         bool operator==(const LayerState&) const = default;
     };
-    void allocate(int size, int layers);
+    void allocate2D(int size, int layers);
+    void allocateCubes(int size, int cubes);
+    void setDepthState(const ShadowOptions& options, bool depthClamp) const;
+    void drawCasters(const GpuScene& scene, const ShadowOptions& options, GLsizei instances) const;
 
-    gl::Program mProgram;
-    gl::Texture mMaps;
-    std::vector<gl::Framebuffer> mFramebuffers;
-    std::vector<LayerState> mLayers;
+    bool mLayered;
+    gl::Program mProgram, mCubeProgram;
+    gl::Texture mMaps, mCubes;
+    std::vector<gl::Framebuffer> mFramebuffers;      // one per 2D layer
+    gl::Framebuffer mCubeFramebuffer;                // layered: the whole cube array
+    std::vector<gl::Framebuffer> mCubeFaceFramebuffers;  // fallback: one per cube face
+    std::vector<LayerState> mLayers, mCubeLayers;
 };
 
 }  // namespace gnomon::render

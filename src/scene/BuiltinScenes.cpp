@@ -2,6 +2,7 @@
 // book-*: the WebGL book's Shadow / Shadow_highp samples; course-*: the course text's
 // two-light experiment (models of seeds/models rebuilt from their numbers); tutorial-room*:
 // the tutorial's sun over a room, with thick (boxes) or thin (single quads) walls (SPEC S15).
+#include <cmath>
 #include <functional>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -168,6 +169,41 @@ void addCubes(Scene& s, const glm::mat4& at) {
     }
 }
 
+// The tutorial's lights (SPEC S18-S21, its numbers). Its sun direction; the sun's camera eye
+// (-9, 27, -18) lies 33.7 units back along it, which is why the tutorial's near 25 / far 40
+// enclose the scene; the area light's plane passes through the same point.
+const glm::vec3 kSunDirection = glm::normalize(glm::vec3(0.267f, -0.802f, 0.535f));
+const glm::vec3 kSunEye{-9.0f, 27.0f, -18.0f};
+
+Light tutorialSun() {
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.direction = kSunDirection;
+    sun.intensity = 0.75f;
+    sun.shadowMapSize = 2048;
+    sun.shadowCamera.policy = ShadowCameraPolicy::Fit;
+    return sun;
+}
+
+// Inverse-square falloff with an intensity, as the tutorial lights its spot, area and point.
+Light inverseSquare(const std::string& name, LightType type, const glm::vec3& position,
+                    float colour, float intensity) {
+    Light l;
+    l.name = name;
+    l.type = type;
+    l.position = position;
+    l.colour = glm::vec3(colour);
+    l.intensity = intensity;
+    l.attenuation = {0.0f, 0.0f, 1.0f};
+    l.shadowMapSize = 2048;
+    l.shadowCamera.policy = ShadowCameraPolicy::Fit;
+    return l;
+}
+
+// The room lit by one of the tutorial's light types instead of the fitted sun.
+Scene tutorialLight(LightType type, const std::string& name, const std::string& description);
+
 // The tutorial's sun over a room: floor, two walls, boxes (one against a wall).
 Scene tutorialRoom(bool thin, const std::string& name, const std::string& description) {
     Scene s;
@@ -215,14 +251,7 @@ Scene tutorialRoom(bool thin, const std::string& name, const std::string& descri
     addObject(s, "low box",
               addMesh(s, mesh::box("low box", {0.5f, 0.25f, 3.0f}, {3.0f, 0.5f, 1.5f})), mBox);
 
-    Light sun;
-    sun.name = "sun";
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.267f, -0.802f, 0.535f));
-    sun.intensity = 0.75f;
-    sun.shadowMapSize = 2048;
-    sun.shadowCamera.policy = ShadowCameraPolicy::Fit;
-    s.lights.push_back(sun);
+    s.lights.push_back(tutorialSun());
 
     // From the side, so the shadows (cast towards +z) lie across the view, not behind boxes.
     s.camera.eye = {-14.0f, 9.0f, -3.0f};
@@ -231,6 +260,84 @@ Scene tutorialRoom(bool thin, const std::string& name, const std::string& descri
     s.camera.near = 0.5f;
     s.camera.far = 80.0f;
     s.ambient = glm::vec3(0.1f);
+    return s;
+}
+
+Scene tutorialLight(LightType type, const std::string& name, const std::string& description) {
+    Scene s = tutorialRoom(false, name, description);
+    s.lights.clear();
+    switch (type) {
+        case LightType::Directional: {
+            // The tutorial's own light camera: orthographic from (-9, 27, -18), near 25, far 40.
+            Light sun = tutorialSun();
+            sun.position = kSunEye;
+            sun.shadowCamera.policy = ShadowCameraPolicy::Manual;
+            sun.shadowCamera.projection = Projection::Orthographic;
+            sun.shadowCamera.target = glm::vec3(0.0f);
+            sun.shadowCamera.left = sun.shadowCamera.bottom = -15.0f;
+            sun.shadowCamera.right = sun.shadowCamera.top = 15.0f;
+            sun.shadowCamera.near = 25.0f;
+            sun.shadowCamera.far = 40.0f;
+            s.lights.push_back(sun);
+            break;
+        }
+        case LightType::Spot: {
+            Light spot =
+                inverseSquare("spot", LightType::Spot, {-3.0f, 10.0f, -6.0f}, 0.3f, 300.0f);
+            spot.direction = glm::normalize(glm::vec3(0.0f) - spot.position);
+            spot.innerConeDegrees = 35.0f;  // the tutorial gives no cone: one that fills the room
+            spot.outerConeDegrees = 45.0f;
+            s.lights.push_back(spot);
+            break;
+        }
+        case LightType::Area: {
+            Light area = inverseSquare("area", LightType::Area, kSunEye, 0.5f, 1000.0f);
+            area.direction = kSunDirection;
+            s.lights.push_back(area);
+            break;
+        }
+        case LightType::Point: {
+            Light point =
+                inverseSquare("point", LightType::Point, {0.0f, 3.0f, -1.5f}, 0.3f, 20.0f);
+            point.shadowMapSize = 1024;  // per face: six of them
+            s.lights.push_back(point);
+            break;
+        }
+    }
+    return s;
+}
+
+// Every light type at once, 16 of them casting shadows into one main pass (SPEC S3).
+Scene mixedLights(const std::string& name, const std::string& description) {
+    Scene s = tutorialRoom(false, name, description);
+    s.lights.clear();
+    Light sun = tutorialSun();
+    sun.intensity = 0.25f;
+    sun.colour = {1.0f, 0.95f, 0.8f};
+    s.lights.push_back(sun);
+    Light area = inverseSquare("area", LightType::Area, kSunEye, 0.2f, 1000.0f);
+    area.direction = glm::normalize(glm::vec3(-0.4f, -0.8f, 0.45f));
+    s.lights.push_back(area);
+    s.lights.push_back(
+        inverseSquare("point a", LightType::Point, {0.0f, 3.0f, -1.5f}, 0.25f, 12.0f));
+    Light pointB = inverseSquare("point b", LightType::Point, {6.0f, 4.0f, 6.0f}, 0.25f, 12.0f);
+    pointB.colour = {0.35f, 0.25f, 0.15f};
+    s.lights.push_back(pointB);
+    for (int i = 0; i < 12; ++i) {
+        const float a = glm::radians(30.0f * float(i));
+        const glm::vec3 at{7.0f * std::cos(a), 7.0f, 7.0f * std::sin(a)};
+        Light spot = inverseSquare("spot " + std::to_string(i), LightType::Spot, at, 0.2f, 40.0f);
+        spot.colour = {0.5f + 0.5f * std::cos(a), 0.5f + 0.5f * std::cos(a + 2.1f),
+                       0.5f + 0.5f * std::cos(a + 4.2f)};
+        spot.colour *= 0.2f;
+        spot.direction = glm::normalize(glm::vec3(0.0f, 0.0f, 0.0f) - at);
+        spot.innerConeDegrees = 30.0f;
+        spot.outerConeDegrees = 40.0f;
+        s.lights.push_back(spot);
+    }
+    // One size for the 2D maps (they share an array sized to the largest); cubes smaller.
+    for (Light& l : s.lights)
+        l.shadowMapSize = l.type == LightType::Point ? 512 : 1024;
     return s;
 }
 
@@ -265,6 +372,29 @@ const std::vector<Builtin>& builtins() {
         {"tutorial-room-thin",
          "the same room with zero-thickness walls and floor (peter-panning, SPEC S15)",
          [](const std::string& n, const std::string& d) { return tutorialRoom(true, n, d); }},
+        {"tutorial-directional",
+         "tutorial's sun with its own light camera: orthographic, eye (-9, 27, -18), near 25, far "
+         "40",
+         [](const std::string& n, const std::string& d) {
+             return tutorialLight(LightType::Directional, n, d);
+         }},
+        {"tutorial-spot", "tutorial's spot light at (-3, 10, -6), colour 0.3, intensity 300",
+         [](const std::string& n, const std::string& d) {
+             return tutorialLight(LightType::Spot, n, d);
+         }},
+        {"tutorial-area",
+         "tutorial's area light: parallel rays, inverse-square from its plane, intensity 1000",
+         [](const std::string& n, const std::string& d) {
+             return tutorialLight(LightType::Area, n, d);
+         }},
+        {"tutorial-point",
+         "tutorial's point light at (0, 3, -1.5): six-face cube shadow, intensity 20",
+         [](const std::string& n, const std::string& d) {
+             return tutorialLight(LightType::Point, n, d);
+         }},
+        {"mixed-lights",
+         "every light type at once: sun, area, 2 point and 12 spot lights, all shadowed",
+         [](const std::string& n, const std::string& d) { return mixedLights(n, d); }},
     };
     return kScenes;
 }

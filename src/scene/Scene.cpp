@@ -73,6 +73,16 @@ std::vector<std::string> Scene::validate() const {
         if (light.type != LightType::Point && glm::length(light.direction) < 1e-6f) {
             add(where + " has a zero direction");
         }
+        const Attenuation& a = light.attenuation;
+        if (!(a.constant >= 0.0f && a.linear >= 0.0f && a.quadratic >= 0.0f &&
+              a.constant + a.linear + a.quadratic > 0.0f)) {
+            add(where + " attenuation needs c0, c1, c2 >= 0 and not all zero");
+        }
+        if (light.type == LightType::Spot &&
+            !(light.innerConeDegrees >= 0.0f && light.innerConeDegrees <= light.outerConeDegrees &&
+              light.outerConeDegrees > 0.0f && light.outerConeDegrees < 90.0f)) {
+            add(where + " spot cone needs 0 <= inner <= outer < 90 degrees");
+        }
         if (light.shadowMapSize < 16 || light.shadowMapSize > 16384) {
             add(where + " shadow map size " + std::to_string(light.shadowMapSize) +
                 " is outside 16..16384");

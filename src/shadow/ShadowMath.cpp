@@ -61,6 +61,7 @@ LightCameraFrame fromNumbers(const ShadowCamera& c, const glm::mat4& lightFromWo
     f.near = c.near;
     f.far = c.far;
     f.orthographic = c.projection == Projection::Orthographic;
+    f.kind = f.orthographic ? FrameKind::Orthographic : FrameKind::Perspective;
     if (f.orthographic) {
         f.clipFromLight = glm::ortho(c.left, c.right, c.bottom, c.top, c.near, c.far);
         f.texelWorldSize = std::max(c.right - c.left, c.top - c.bottom) / float(mapSize);
@@ -76,6 +77,7 @@ LightCameraFrame fromNumbers(const ShadowCamera& c, const glm::mat4& lightFromWo
 LightCameraFrame fitOrthographic(const glm::vec3& direction, const Aabb& bounds, int mapSize) {
     LightCameraFrame f;
     f.orthographic = true;
+    f.kind = FrameKind::Orthographic;
     const glm::vec3 centre = bounds.centre();
     const float radius = std::max(bounds.radius(), 1e-4f);
     const glm::vec3 eye = centre - glm::normalize(direction) * (2.0f * radius);
@@ -111,7 +113,44 @@ LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, flo
     return f;
 }
 
+// Six faces around the light reaching the farthest corner; near as close as depth precision
+// allows (geometry nearer than near still casts: the pass clamps depth for fitted lights).
+LightCameraFrame fitCube(const glm::vec3& position, const Aabb& bounds, int mapSize) {
+    LightCameraFrame f;
+    f.kind = FrameKind::Cube;
+    f.lightFromWorld = glm::translate(glm::mat4(1.0f), -position);
+    float farthest = 0.0f;
+    for (const glm::vec3& c : bounds.corners()) {
+        farthest = std::max(farthest, glm::length(c - position));
+    }
+    const glm::vec3 nearestPoint = glm::clamp(position, bounds.min, bounds.max);
+    const float nearest = glm::length(nearestPoint - position);
+    f.far = std::max(farthest * 1.01f, 1e-3f);
+    f.near = std::clamp(nearest * 0.99f, f.far * 1e-3f, f.far * 0.5f);
+    f.clipFromLight = glm::perspective(glm::radians(90.0f), 1.0f, f.near, f.far);
+    f.texelWorldSize = 2.0f / float(mapSize);  // tan(45 deg) = 1: two units per face at d = 1
+    return f;
+}
+
 }  // namespace
+
+glm::mat4 cubeFaceRotation(int face) {
+    static const glm::vec3 kForward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                          {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+    static const glm::vec3 kUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
+                                     {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    return glm::lookAt(glm::vec3(0.0f), kForward[face], kUp[face]);
+}
+
+glm::mat4 LightCameraFrame::faceClipFromWorld(int face) const {
+    return clipFromLight * cubeFaceRotation(face) * lightFromWorld;
+}
+
+float cubeStoredDepth(const glm::vec3& d, float near, float far) {
+    const float z = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    const float ndc = (far + near) / (far - near) - 2.0f * far * near / ((far - near) * z);
+    return 0.5f * ndc + 0.5f;
+}
 
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const Aabb& bounds,
                                   int mapSize) {
@@ -137,20 +176,12 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
                 light.position, glm::normalize(light.direction),
                 glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), bounds,
                 mapSize);
-        case LightType::Point: {
-            // One frustum aimed at the bounds, wide enough for their bounding sphere.
-            const glm::vec3 toCentre = bounds.centre() - light.position;
-            const float distance = glm::length(toCentre);
-            const float radius = bounds.radius();
-            if (distance <= radius * 1.05f) {
-                // Inside the bounds a single frustum cannot see everything; use 120 degrees
-                // towards the centre (omnidirectional cube maps lift this limit).
-                const glm::vec3 axis = distance > 1e-6f ? toCentre / distance : glm::vec3(0, -1, 0);
-                return fitPerspective(light.position, axis, glm::radians(120.0f), bounds, mapSize);
-            }
-            const float fovy = 2.0f * std::asin(std::min(radius / distance, 0.999f));
-            return fitPerspective(light.position, toCentre / distance, fovy, bounds, mapSize);
-        }
+        case LightType::Area:
+            // Parallel rays like the sun: the same orthographic fit (the plane only sets
+            // the falloff).
+            return fitOrthographic(light.direction, bounds, mapSize);
+        case LightType::Point:
+            return fitCube(light.position, bounds, mapSize);
     }
     return {};
 }

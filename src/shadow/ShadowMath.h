@@ -10,10 +10,17 @@
 
 namespace gnomon::shadow {
 
+enum class FrameKind {
+    Perspective,   // one frustum (spot lights; point lights with a manual/course camera)
+    Orthographic,  // one box (directional and area lights; textbook cameras)
+    Cube,          // six 90-degree frusta around a point light (SPEC S21)
+};
+
 struct LightCameraFrame {
-    glm::mat4 lightFromWorld{1.0f};  // view matrix of the light camera
-    glm::mat4 clipFromLight{1.0f};   // its projection
-    bool orthographic = false;
+    glm::mat4 lightFromWorld{1.0f};  // view matrix (Cube: a translation to the light)
+    glm::mat4 clipFromLight{1.0f};   // its projection (Cube: 90 degrees, aspect 1)
+    FrameKind kind = FrameKind::Perspective;
+    bool orthographic = false;       // kind == Orthographic
     float near = 1.0f;
     float far = 100.0f;
     // World-space size of one map texel: orthographic: constant; perspective: at distance 1
@@ -22,7 +29,17 @@ struct LightCameraFrame {
     bool valid = true;  // false: nothing to shadow (empty scene bounds)
 
     glm::mat4 clipFromWorld() const { return clipFromLight * lightFromWorld; }
+    // Cube frames: face 0..5 = +X, -X, +Y, -Y, +Z, -Z, oriented as OpenGL samples cube maps.
+    glm::mat4 faceClipFromWorld(int face) const;
 };
+
+// The view rotation of cube face 0..5 (+X, -X, +Y, -Y, +Z, -Z) such that rendering a face
+// with it and sampling the cube map with a direction agree (OpenGL 4.5 spec, table 8.19:
+// e.g. +X: the image's right is -Z and its up is -Y).
+glm::mat4 cubeFaceRotation(int face);
+// Stored depth [0, 1] of a cube map for a world-space offset from the light: the perspective
+// depth along the offset's major axis, what the face's depth pass wrote.
+float cubeStoredDepth(const glm::vec3& lightToPoint, float near, float far);
 
 // Maps clip-space x, y, z in [-1, 1] (after the divide) to [0, 1] texture coordinates and
 // stored depth (SPEC S2): textureFromClip * (x, y, z, 1) = (x/2 + 1/2, ...).
@@ -34,7 +51,8 @@ glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::v
 
 // The light camera of `light` for a frame: Manual and Course use the light's numbers;
 // Fit encloses `casterAndReceiverBounds` as tightly as an axis-aligned fit in light space
-// allows, with near/far at the bounds. `mapSize` sets texelWorldSize.
+// allows, with near/far at the bounds (point lights: a cube reaching the farthest corner).
+// `mapSize` sets texelWorldSize.
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
                                   const Aabb& casterAndReceiverBounds, int mapSize);
 

@@ -10,6 +10,9 @@
 namespace gnomon::test {
 namespace {
 
+// A shadow that takes 0.02 of full scale per channel (15 levels of R+G+B) is visible.
+constexpr float kVisible = 0.02f;
+
 struct Triangle {
     glm::vec3 a, b, c;
     int object;
@@ -72,6 +75,11 @@ float lightStrength(const Light& l, const glm::vec3& p, const glm::vec3& n) {
     float falloff = 1.0f;
     if (l.type == LightType::Directional) {
         toLight = -glm::normalize(l.direction);
+    } else if (l.type == LightType::Area) {
+        toLight = -glm::normalize(l.direction);
+        const float dist = std::abs(glm::dot(-toLight, p - l.position));
+        falloff = 1.0f / (l.attenuation.constant + l.attenuation.linear * dist +
+                          l.attenuation.quadratic * dist * dist);
     } else {
         const glm::vec3 d = l.position - p;
         const float dist = glm::length(d);
@@ -152,17 +160,35 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
         // the light is strong, 2 = undecidable (weakly lit and occluded, or at the map border).
         for (size_t i = 0; i < lights.size(); ++i) {
             const LightModel& lm = lights[i];
-            const float strength = lm.on ? lightStrength(scene.lights[i], p, n) : 0.0f;
+            // What the light adds to this pixel (0..1 per channel, averaged): the most a shadow
+            // can take away. Unlit materials lose a fixed factor wherever a shadow falls.
+            const Material& mat = scene.materials[scene.objects[size_t(tri.object)].material];
+            const glm::vec3& lc = scene.lights[i].colour;
+            const float strength =
+                !lm.on      ? 0.0f
+                : mat.unlit ? 1.0f
+                            : lightStrength(scene.lights[i], p, n) * (lc.r + lc.g + lc.b) / 3.0f *
+                                  (mat.baseColour.r + mat.baseColour.g + mat.baseColour.b) / 3.0f;
             if (!lm.shadowed || strength <= 0.0f ||
                 !scene.objects[size_t(tri.object)].receivesShadows) {
                 s.state.push_back(0);
                 continue;
             }
+            if (lm.frame.kind == shadow::FrameKind::Cube) {
+                // All directions are in the map; depth clamp keeps even the nearest casters.
+                const glm::vec3 toLight = lm.eye - p;
+                const float dist = glm::length(toLight);
+                const bool occluded =
+                    world.occluded(p, toLight / dist, 1e-4f, dist - 1e-4f, hit->triangle);
+                s.state.push_back(!occluded ? 0 : strength >= kVisible ? 1 : 2);
+                continue;
+            }
             // Inside the light camera's volume? Outside, the map says nothing (lit).
             const glm::vec4 clip = lm.frame.clipFromWorld() * glm::vec4(p, 1.0f);
             const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-            const float edge = std::max({std::abs(ndc.x), std::abs(ndc.y), std::abs(ndc.z)});
-            if (clip.w <= 0.0f || edge > 1.02f) {
+            // Texel borders are in x and y; depth beyond far is simply outside (lit).
+            const float edge = std::max(std::abs(ndc.x), std::abs(ndc.y));
+            if (clip.w <= 0.0f || edge > 1.02f || std::abs(ndc.z) > 1.0f) {
                 s.state.push_back(0);
                 continue;
             }
@@ -183,8 +209,7 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
                 tMax = (depth - lm.frame.near) / cosine;
             }
             const bool occluded = world.occluded(p, dir, 1e-4f, tMax, hit->triangle);
-            // 0.035 of light on a light-grey surface is ~20 levels of R+G+B: a visible shadow.
-            s.state.push_back(!occluded ? 0 : strength >= 0.035f ? 1 : 2);
+            s.state.push_back(!occluded ? 0 : strength >= kVisible ? 1 : 2);
         }
         return s;
     };

@@ -319,31 +319,74 @@ TEST(LightCamera, SpotFitAlongASlantedAxis) {
     EXPECT_NEAR(glm::dot(forward, glm::normalize(spot.direction)), 1.0f, 1e-5f);
 }
 
-TEST(LightCamera, PointFitFromOutsideHoldsEveryCorner) {
+// A fitted point light is omnidirectional: a cube whose far plane reaches every corner,
+// with each corner inside the frustum of the face its direction selects.
+void expectCubeHolds(const Light& point, const Aabb& bounds) {
+    const auto f = shadow::lightCameraFrame(point, Camera{}, bounds, 1024);
+    ASSERT_TRUE(f.valid);
+    ASSERT_EQ(f.kind, shadow::FrameKind::Cube);
+    EXPECT_GT(f.near, 0.0f);
+    EXPECT_LT(f.near, f.far);
+    EXPECT_NEAR(f.texelWorldSize, 2.0f / 1024.0f, 1e-9f);
+    for (const glm::vec3& c : bounds.corners()) {
+        const glm::vec3 d = c - point.position;
+        EXPECT_LE(glm::length(d), f.far) << "corner beyond the far plane";
+        const glm::vec3 a = glm::abs(d);
+        const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+        const int face = 2 * axis + (d[axis] < 0.0f ? 1 : 0);
+        const glm::vec4 clip = f.faceClipFromWorld(face) * glm::vec4(c, 1.0f);
+        ASSERT_GT(clip.w, 0.0f);
+        for (int k = 0; k < 2; ++k) EXPECT_LE(std::fabs(clip[k] / clip.w), 1.0f + 1e-5f);
+        EXPECT_NEAR(0.5f * clip.z / clip.w + 0.5f,
+                    shadow::cubeStoredDepth(d, f.near, f.far), 1e-5f);
+    }
+}
+
+TEST(LightCamera, PointFitFromOutsideIsACubeHoldingEveryCorner) {
     Light point;
     point.type = LightType::Point;
     point.position = {0.0f, 7.0f, 2.0f};
     Aabb bounds;
     bounds.extend(glm::vec3(-3.0f, -2.0f, -3.0f));
     bounds.extend(glm::vec3(3.0f, 0.0f, 3.0f));
-    expectPerspectiveHolds(shadow::lightCameraFrame(point, Camera{}, bounds, 1024), bounds);
+    expectCubeHolds(point, bounds);
 }
 
-TEST(LightCamera, PointFitFromInsideKeepsNearPositive) {
+TEST(LightCamera, PointFitFromInsideIsACubeHoldingEveryCorner) {
     Light point;
     point.type = LightType::Point;
     point.position = {0.5f, 0.5f, 0.5f};
     Aabb bounds;
     bounds.extend(glm::vec3(-2.0f));
     bounds.extend(glm::vec3(2.0f));
-    const auto f = shadow::lightCameraFrame(point, Camera{}, bounds, 1024);
-    ASSERT_TRUE(f.valid);
-    ASSERT_TRUE(test::allFinite(f.clipFromWorld()));
-    EXPECT_GT(f.near, 0.0f);
-    EXPECT_LT(f.near, f.far);
-    float nearest = 0.0f, farthest = 0.0f;
-    depthRange(f, bounds, nearest, farthest);
-    EXPECT_GE(f.far, farthest);
+    expectCubeHolds(point, bounds);
+}
+
+// OpenGL 4.5 spec, table 8.19: for a direction r, the face of the major axis ma and
+// s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2 with, per face, (sc, tc) =
+// +X: (-rz, -ry)  -X: (+rz, -ry)  +Y: (+rx, +rz)  -Y: (+rx, -rz)  +Z: (+rx, -ry)  -Z: (-rx, -ry).
+// Rendering face f through cubeFaceRotation(f) must put direction r at window (s, t).
+TEST(CubeFaces, RenderedFacesMatchTheSamplingConvention) {
+    const glm::mat4 clipFromLight = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
+    const glm::vec3 dirs[6] = {{1.0f, 0.3f, -0.6f}, {-1.0f, 0.3f, -0.6f}, {0.3f, 1.0f, -0.6f},
+                               {0.3f, -1.0f, -0.6f}, {0.3f, -0.6f, 1.0f}, {0.3f, -0.6f, -1.0f}};
+    for (int face = 0; face < 6; ++face) {
+        const glm::vec3 r = dirs[face];
+        float sc = 0, tc = 0, ma = 0;
+        switch (face) {
+            case 0: sc = -r.z; tc = -r.y; ma = r.x; break;
+            case 1: sc = r.z; tc = -r.y; ma = r.x; break;
+            case 2: sc = r.x; tc = r.z; ma = r.y; break;
+            case 3: sc = r.x; tc = -r.z; ma = r.y; break;
+            case 4: sc = r.x; tc = -r.y; ma = r.z; break;
+            case 5: sc = -r.x; tc = -r.y; ma = r.z; break;
+        }
+        const float s = 0.5f * (sc / std::fabs(ma) + 1.0f), t = 0.5f * (tc / std::fabs(ma) + 1.0f);
+        const glm::vec4 clip = clipFromLight * shadow::cubeFaceRotation(face) * glm::vec4(r, 1.0f);
+        EXPECT_NEAR(0.5f * clip.x / clip.w + 0.5f, s, 1e-5f) << "face " << face;
+        EXPECT_NEAR(0.5f * clip.y / clip.w + 0.5f, t, 1e-5f) << "face " << face;
+        EXPECT_GT(clip.w, 0.0f) << "face " << face << " looks away from its axis";
+    }
 }
 
 // (f) Nothing to shadow: Fit with empty bounds gives an invalid frame, for every light type.

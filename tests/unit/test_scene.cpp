@@ -25,8 +25,10 @@ void expectVec(const glm::vec3& actual, const glm::vec3& expected, float toleran
     EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
-const char* const kBuiltinNames[] = {"book-triangle", "book-triangle-far", "course-two-lights",
-                                     "course-cubes",  "tutorial-room",     "tutorial-room-thin"};
+const char* const kBuiltinNames[] = {
+    "book-triangle", "book-triangle-far",  "course-two-lights",    "course-cubes",
+    "tutorial-room", "tutorial-room-thin", "tutorial-directional", "tutorial-spot",
+    "tutorial-area", "tutorial-point",     "mixed-lights"};
 
 TEST(Scene, BuiltinListIsStableAndDescribed) {
     const std::vector<SceneInfo> list = builtinScenes();
@@ -315,5 +317,45 @@ TEST(Scene, LoadSceneExistingModelFileSaysUnsupported) {
     }
 }
 
+}  // namespace
+}  // namespace gnomon
+
+namespace gnomon {
+namespace {
+// The tutorial's numbers (SPEC S18-S21).
+TEST(Scene, TutorialLightsCarryTheTutorialsNumbers) {
+    const Light spot = builtinScene("tutorial-spot").lights.at(0);
+    EXPECT_EQ(spot.type, LightType::Spot);
+    EXPECT_EQ(spot.position, glm::vec3(-3.0f, 10.0f, -6.0f));
+    EXPECT_EQ(spot.colour, glm::vec3(0.3f));
+    EXPECT_EQ(spot.intensity, 300.0f);
+    EXPECT_EQ(spot.attenuation.quadratic, 1.0f);
+    const Light area = builtinScene("tutorial-area").lights.at(0);
+    EXPECT_EQ(area.type, LightType::Area);
+    EXPECT_EQ(area.colour, glm::vec3(0.5f));
+    EXPECT_EQ(area.intensity, 1000.0f);
+    const Light point = builtinScene("tutorial-point").lights.at(0);
+    EXPECT_EQ(point.type, LightType::Point);
+    EXPECT_EQ(point.position, glm::vec3(0.0f, 3.0f, -1.5f));
+    EXPECT_EQ(point.colour, glm::vec3(0.3f));
+    EXPECT_EQ(point.intensity, 20.0f);
+    const Light sun = builtinScene("tutorial-directional").lights.at(0);
+    EXPECT_EQ(sun.shadowCamera.policy, ShadowCameraPolicy::Manual);
+    EXPECT_EQ(sun.shadowCamera.near, 25.0f);
+    EXPECT_EQ(sun.shadowCamera.far, 40.0f);
+    EXPECT_NEAR(glm::length(sun.position), 33.67f, 0.01f);
+}
+
+TEST(Scene, MixedLightsHasEveryTypeAndSixteenShadowedLights) {
+    const Scene s = builtinScene("mixed-lights");
+    int shadowed = 0, types[4] = {};
+    for (const Light& l : s.lights) {
+        shadowed += l.castsShadows;
+        ++types[int(l.type)];
+    }
+    EXPECT_GE(shadowed, 16);
+    for (int t = 0; t < 4; ++t)
+        EXPECT_GT(types[t], 0) << "light type " << t;
+}
 }  // namespace
 }  // namespace gnomon
