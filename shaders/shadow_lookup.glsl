@@ -5,8 +5,24 @@
 //
 // Variants (injected #defines): FILTER_NONE | FILTER_HW2X2 | FILTER_PCF with PCF_SIZE,
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
-layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
+
+#if defined(DEPTH_COLOUR)
+// Colour formats (DEPTH_COLOUR with PACK_*): fetch, decode, compare by hand. The sampler's
+// filter (--map-filter) interpolates the *encoded* values: fine for r8, wrong for packed
+// channels (which is why the book's Shadow_highp uses nearest lookups).
+#include "depth_packing.glsl"
+layout(binding = 0) uniform sampler2DArray uShadowMaps;
+float compareDepth(vec2 uv, float layer, float reference) {
+    return reference > unpackDepth(texture(uShadowMaps, vec3(uv, layer))) ? 0.0 : 1.0;
+}
+#else
+// Native depth formats: the sampler compares (LEQUAL), LINEAR gives 2x2 bilinear PCF.
+layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
+float compareDepth(vec2 uv, float layer, float reference) {
+    return texture(uShadowMaps, vec4(uv, layer, reference));
+}
+#endif
 
 // Texels a lookup reaches from its centre, plus the bilinear footprint's one.
 #if defined(FILTER_PCF)
@@ -93,11 +109,11 @@ float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsT
     for (int y = -r; y <= r; ++y) {
         for (int x = -r; x <= r; ++x) {
             vec2 tap = clamp(uv + vec2(x, y) * texelUv, lo, hi);
-            sum += texture(uShadowMaps, vec4(tap, layer, reference));
+            sum += compareDepth(tap, layer, reference);
         }
     }
     return sum / float(PCF_SIZE * PCF_SIZE);
 #else
-    return texture(uShadowMaps, vec4(clamp(uv, lo, hi), layer, reference));
+    return compareDepth(clamp(uv, lo, hi), layer, reference);
 #endif
 }

@@ -62,6 +62,12 @@ void RenderFlags::add(CLI::App& a) {
     a.add_option("--filter", filter, "none|hw2x2|pcf: shadow map lookup filter (default pcf)");
     a.add_option("--pcf-size", pcfSize,
                  "PCF kernel width, odd 1..9 (default " + str(s.pcfSize) + ")");
+    a.add_option("--depth-format", depthFormat,
+                 "r8|rgba8-packed-256|rgba8-packed-255|depth16|depth24|depth32f: shadow map "
+                 "storage (default depth32f; point-light cubes use depth32f for colour formats)");
+    a.add_option("--map-filter", mapFilter,
+                 "nearest|linear: filtering of colour-format maps before the comparison "
+                 "(default nearest)");
     a.add_option("--shadowed", shadowed,
                  "ambient|factor: a shadowed fragment keeps ambient only, or is multiplied by "
                  "--shadow-factor (default: scene's; ambient)");
@@ -99,6 +105,15 @@ void RenderFlags::apply(RenderOptions& o) const {
     if (given("--filter"))
         o.shadow.filter = parseEnum("--filter", filter, parseShadowFilter, "none, hw2x2, pcf");
     if (given("--pcf-size")) o.shadow.pcfSize = pcfSize;
+    if (given("--depth-format")) {
+        o.shadow.depthFormat =
+            parseEnum("--depth-format", depthFormat, parseDepthFormat,
+                      "r8, rgba8-packed-256, rgba8-packed-255, depth16, depth24, depth32f");
+    }
+    if (given("--map-filter")) {
+        o.shadow.mapFilter =
+            parseEnum("--map-filter", mapFilter, parseMapFilter, "nearest, linear");
+    }
     if (given("--shadowed"))
         o.shading.shadowedRule =
             parseEnum("--shadowed", shadowed, parseShadowedRule, "ambient, factor");

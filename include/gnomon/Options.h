@@ -31,17 +31,35 @@ enum class ShadowFilter {
     Pcf,    // pcfSize x pcfSize box of hardware 2x2 comparisons
 };
 
+// How a shadow map stores depth (SPEC S10). Colour formats write gl_FragCoord.z from the
+// fragment shader into an 8-bit RGBA target and compare by hand in the main pass; native
+// formats are depth attachments compared by the sampler. Point-light cubes always use a
+// native format (depth32f when a colour format is chosen).
+enum class DepthFormat {
+    R8,              // red channel of RGBA8: 1/256 steps (the WebGL book's first sample)
+    Rgba8Packed256,  // four 8-bit channels, base 256 (the WebGL book's Shadow_highp)
+    Rgba8Packed255,  // four 8-bit channels, base 255 (the tutorial)
+    Depth16,
+    Depth24,
+    Depth32F,
+};
+
+// Texture filtering of colour-format maps before the comparison (SPEC S13).
+enum class MapFilter { Nearest, Linear };
+
 struct ShadowOptions {
     bool enabled = true;                         // false: every shadow test off, lighting unchanged
     OutsidePolicy outside = OutsidePolicy::Lit;  // lookups outside a light's map
     float biasConstant = 0.0002f;                // stored-depth units [0,1] added to the map depth
     float biasSlope = 1.5f;                      // glPolygonOffset factor in the depth pass, >= 0
     float biasUnits = 2.0f;                      // glPolygonOffset units in the depth pass, >= 0
-    float normalOffset = 1.0f;                // shift along the normal, in map texels x (1 - N.L)
+    float normalOffset = 1.0f;  // lookup shift along the normal: texels x filter reach x sin(angle)
     CullMode cull = CullMode::Back;           // faces culled in the depth pass
     ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
     int pcfSize = 3;                          // kernel width for Pcf, odd, 1..9
     int mapSize = 0;  // texels per side for every light, 0 = each light's own
+    DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
+    MapFilter mapFilter = MapFilter::Nearest;  // colour formats: filtering of stored depth
 };
 
 struct ShadingOptions {
@@ -66,9 +84,15 @@ const char* toString(ShadowedRule v);
 const char* toString(OutsidePolicy v);
 const char* toString(CullMode v);
 const char* toString(ShadowFilter v);
+const char* toString(DepthFormat v);
+const char* toString(MapFilter v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
 std::optional<CullMode> parseCullMode(const std::string& s);
 std::optional<ShadowFilter> parseShadowFilter(const std::string& s);
+std::optional<DepthFormat> parseDepthFormat(const std::string& s);
+std::optional<MapFilter> parseMapFilter(const std::string& s);
+// True for the formats stored in colour channels (r8 and the RGBA8 packings).
+bool isColourFormat(DepthFormat v);
 
 }  // namespace gnomon

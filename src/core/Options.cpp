@@ -32,6 +32,16 @@ const std::pair<const char*, CullMode> kCull[] = {
 const std::pair<const char*, ShadowFilter> kFilters[] = {
     {"none", ShadowFilter::None}, {"hw2x2", ShadowFilter::Hw2x2}, {"pcf", ShadowFilter::Pcf}};
 
+const std::pair<const char*, DepthFormat> kFormats[] = {
+    {"r8", DepthFormat::R8},
+    {"rgba8-packed-256", DepthFormat::Rgba8Packed256},
+    {"rgba8-packed-255", DepthFormat::Rgba8Packed255},
+    {"depth16", DepthFormat::Depth16},
+    {"depth24", DepthFormat::Depth24},
+    {"depth32f", DepthFormat::Depth32F}};
+const std::pair<const char*, MapFilter> kMapFilters[] = {{"nearest", MapFilter::Nearest},
+                                                         {"linear", MapFilter::Linear}};
+
 bool finite(float v) {
     return std::isfinite(v);
 }
@@ -61,6 +71,22 @@ std::optional<CullMode> parseCullMode(const std::string& s) {
 }
 std::optional<ShadowFilter> parseShadowFilter(const std::string& s) {
     return lookup(s, kFilters);
+}
+const char* toString(DepthFormat v) {
+    return nameOf(v, kFormats);
+}
+const char* toString(MapFilter v) {
+    return nameOf(v, kMapFilters);
+}
+std::optional<DepthFormat> parseDepthFormat(const std::string& s) {
+    return lookup(s, kFormats);
+}
+std::optional<MapFilter> parseMapFilter(const std::string& s) {
+    return lookup(s, kMapFilters);
+}
+bool isColourFormat(DepthFormat v) {
+    return v == DepthFormat::R8 || v == DepthFormat::Rgba8Packed256 ||
+           v == DepthFormat::Rgba8Packed255;
 }
 
 std::vector<std::string> RenderOptions::validate() const {

@@ -126,8 +126,8 @@ void GpuScene::draw(const DrawItem& item, GLsizei instances) const {
     if (item.indexCount == 0) return;
     glUniform1ui(0, item.object);
     glDrawElementsInstancedBaseVertex(GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT,
-                                      reinterpret_cast<const void*>(item.firstIndexByte),
-                                      instances, item.baseVertex);
+                                      reinterpret_cast<const void*>(item.firstIndexByte), instances,
+                                      item.baseVertex);
 }
 
 }  // namespace gnomon::render

@@ -28,6 +28,19 @@ const gl::Program& MainPass::program(const RenderOptions& options) {
     } else {
         defines.push_back(s.filter == ShadowFilter::None ? "FILTER_NONE" : "FILTER_HW2X2");
     }
+    switch (s.depthFormat) {
+        case DepthFormat::R8:
+            defines.insert(defines.end(), {"DEPTH_COLOUR", "PACK_R8"});
+            break;
+        case DepthFormat::Rgba8Packed256:
+            defines.insert(defines.end(), {"DEPTH_COLOUR", "PACK_256"});
+            break;
+        case DepthFormat::Rgba8Packed255:
+            defines.insert(defines.end(), {"DEPTH_COLOUR", "PACK_255"});
+            break;
+        default:
+            break;  // native: the sampler compares
+    }
     if (options.shading.shadowedRule == ShadowedRule::Factor) {
         defines.push_back("SHADOWED_FACTOR");
     }
@@ -61,17 +74,29 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     glBindBufferBase(GL_UNIFORM_BUFFER, 1, mLights.id());
 
     // Hardware comparison with NEAREST is one texel; LINEAR gives the 2x2 bilinear PCF.
-    if (!mSampler || mSamplerFilter != options.shadow.filter) {
-        const GLint filter = options.shadow.filter == ShadowFilter::None ? GL_NEAREST : GL_LINEAR;
-        mSampler = gl::Sampler("shadow map sampler");
-        mSampler.set(GL_TEXTURE_MIN_FILTER, filter)
+    const ShadowOptions& so = options.shadow;
+    const bool colour = isColourFormat(so.depthFormat);
+    const GLint compareFilter = so.filter == ShadowFilter::None ? GL_NEAREST : GL_LINEAR;
+    const GLint mapFilter = !colour                             ? compareFilter
+                            : so.mapFilter == MapFilter::Linear ? GL_LINEAR
+                                                                : GL_NEAREST;
+    auto makeSampler = [](gl::Sampler& sampler, std::string& key, const std::string& want,
+                          const char* label, GLint filter, bool compare) {
+        if (sampler && key == want) return;
+        sampler = gl::Sampler(label);
+        sampler.set(GL_TEXTURE_MIN_FILTER, filter)
             .set(GL_TEXTURE_MAG_FILTER, filter)
             .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
             .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE)
-            .set(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE)
+            .set(GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE)
             .set(GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        mSamplerFilter = options.shadow.filter;
-    }
+        key = want;
+    };
+    makeSampler(mMapSampler, mMapSamplerKey,
+                std::to_string(mapFilter) + (colour ? "colour" : "compare"), "shadow map sampler",
+                mapFilter, !colour);
+    makeSampler(mCubeSampler, mCubeSamplerKey, std::to_string(compareFilter), "shadow cube sampler",
+                compareFilter, true);
     if (!in.shadowMaps && !mDummyMaps) {
         mDummyMaps = gl::Texture::array2D("no shadow maps", GL_DEPTH_COMPONENT32F, 1, 1, 1);
     }
@@ -80,8 +105,8 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     }
     glBindTextureUnit(0, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
     glBindTextureUnit(1, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
-    glBindSampler(0, mSampler.id());
-    glBindSampler(1, mSampler.id());
+    glBindSampler(0, mMapSampler.id());
+    glBindSampler(1, mCubeSampler.id());
 
     glUseProgram(prog.id());
     const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);

@@ -50,8 +50,10 @@ private:
     int mMaxLights = 0;
     gl::Buffer mLights;  // sized for mMaxLights once; the used part is updated on change
     std::vector<GpuLight> mUploaded;
-    gl::Sampler mSampler;
-    ShadowFilter mSamplerFilter = ShadowFilter::Pcf;
+    // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
+    // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
+    gl::Sampler mMapSampler, mCubeSampler;
+    std::string mMapSamplerKey, mCubeSamplerKey;
     gl::Texture mDummyMaps, mDummyCubes;  // bound when a kind of map is absent
 };
 

@@ -23,10 +23,14 @@ constexpr bool kDebugBuild = true;
 // LightData.vsPosition.w in shaders/lights.glsl.
 int lightTypeCode(LightType type) {
     switch (type) {
-        case LightType::Directional: return 0;
-        case LightType::Spot: return 1;
-        case LightType::Point: return 2;
-        case LightType::Area: return 3;
+        case LightType::Directional:
+            return 0;
+        case LightType::Spot:
+            return 1;
+        case LightType::Point:
+            return 2;
+        case LightType::Area:
+            return 3;
     }
     return 0;
 }
@@ -160,8 +164,13 @@ struct Renderer::Impl {
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
         in.ambient = s.ambient;
         in.lights = &lights;
-        in.shadowMaps = shadowPass.maps() ? &shadowPass.maps() : nullptr;
-        in.shadowCubes = shadowPass.cubes() ? &shadowPass.cubes() : nullptr;
+        // Only maps made this frame: an array left from another format must not be bound.
+        bool any2D = false, anyCube = false;
+        for (const render::ShadowedLight& sl : shadowed) {
+            (sl.frame.kind == shadow::FrameKind::Cube ? anyCube : any2D) = true;
+        }
+        in.shadowMaps = any2D ? &shadowPass.maps() : nullptr;
+        in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
         mainPass.render(scene, in, options);
 
         Image image(options.width, options.height, 4);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gl/Program.h"
+#include "shadow/DepthPacking.h"
 
 namespace gnomon::render {
 
@@ -11,9 +12,9 @@ ShadowPass::ShadowPass(bool layeredCubes)
       mProgram(gl::buildProgram("shadow depth", {{GL_VERTEX_SHADER, "depth.vert.glsl"},
                                                  {GL_FRAGMENT_SHADER, "depth.frag.glsl"}})) {
     if (mLayered) {
-        mCubeProgram = gl::buildProgram("shadow depth cube",
-                                        {{GL_VERTEX_SHADER, "depth_cube.vert.glsl"},
-                                         {GL_FRAGMENT_SHADER, "depth.frag.glsl"}});
+        mCubeProgram = gl::buildProgram(
+            "shadow depth cube",
+            {{GL_VERTEX_SHADER, "depth_cube.vert.glsl"}, {GL_FRAGMENT_SHADER, "depth.frag.glsl"}});
     }
 }
 
@@ -33,21 +34,49 @@ gl::Framebuffer depthOnlyFramebuffer(const std::string& label) {
 }
 }  // namespace
 
-void ShadowPass::allocate2D(int size, int layers) {
-    mMaps = gl::Texture::array2D("shadow maps", GL_DEPTH_COMPONENT32F, size, size, layers);
-    setCompare(mMaps.id());
+GLenum nativeFormat(DepthFormat format) {
+    switch (format) {
+        case DepthFormat::Depth16:
+            return GL_DEPTH_COMPONENT16;
+        case DepthFormat::Depth24:
+            return GL_DEPTH_COMPONENT24;
+        default:
+            return GL_DEPTH_COMPONENT32F;  // depth32f, and cubes of colour formats
+    }
+}
+
+void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
+    const bool colour = isColourFormat(format);
+    mMapFormat = format;
     mFramebuffers.clear();
+    mColourDepth = gl::Texture();
+    if (colour) {
+        mMaps = gl::Texture::array2D("shadow maps (encoded depth)", GL_RGBA8, size, size, layers);
+        mColourDepth = gl::Texture::array2D("shadow maps depth test", GL_DEPTH_COMPONENT24, size,
+                                            size, layers);
+    } else {
+        mMaps = gl::Texture::array2D("shadow maps", nativeFormat(format), size, size, layers);
+        setCompare(mMaps.id());
+    }
     for (int layer = 0; layer < layers; ++layer) {
-        gl::Framebuffer fb = depthOnlyFramebuffer("shadow map layer " + std::to_string(layer));
-        glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mMaps.id(), 0, layer);
+        const std::string label = "shadow map layer " + std::to_string(layer);
+        gl::Framebuffer fb = colour ? gl::Framebuffer(label) : depthOnlyFramebuffer(label);
+        if (colour) {
+            glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, mMaps.id(), 0, layer);
+            glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mColourDepth.id(), 0,
+                                           layer);
+            glNamedFramebufferDrawBuffer(fb.id(), GL_COLOR_ATTACHMENT0);
+        } else {
+            glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mMaps.id(), 0, layer);
+        }
         fb.checkComplete();
         mFramebuffers.push_back(std::move(fb));
     }
     mLayers.assign(size_t(layers), LayerState{});
 }
 
-void ShadowPass::allocateCubes(int size, int cubes) {
-    mCubes = gl::Texture::cubeArray("point shadow cubes", GL_DEPTH_COMPONENT32F, size, cubes);
+void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
+    mCubes = gl::Texture::cubeArray("point shadow cubes", nativeFormat(format), size, cubes);
     setCompare(mCubes.id());
     mCubeFaceFramebuffers.clear();
     if (mLayered) {
@@ -65,10 +94,30 @@ void ShadowPass::allocateCubes(int size, int cubes) {
     mCubeLayers.assign(size_t(cubes), LayerState{});
 }
 
+const gl::Program& ShadowPass::colourProgram(DepthFormat format) {
+    const int index = format == DepthFormat::R8 ? 0 : format == DepthFormat::Rgba8Packed256 ? 1 : 2;
+    static const char* const kDefines[3] = {"PACK_R8", "PACK_256", "PACK_255"};
+    if (!mColourPrograms[index]) {
+        mColourPrograms[index] = gl::buildProgram(
+            std::string("shadow depth ") + toString(format),
+            {{GL_VERTEX_SHADER, "depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "depth_colour.frag.glsl"}},
+            {kDefines[index]});
+    }
+    return mColourPrograms[index];
+}
+
+namespace {
+std::size_t texelBytes(GLenum format) {
+    return format == GL_DEPTH_COMPONENT16 ? 2 : 4;  // 24-bit depth is stored in 32 bits
+}
+}  // namespace
+
 std::size_t ShadowPass::bytes() const {
     std::size_t total = 0;
-    if (mMaps) total += std::size_t(mMaps.width()) * mMaps.height() * mMaps.layers() * 4;
-    if (mCubes) total += std::size_t(mCubes.width()) * mCubes.height() * mCubes.layers() * 4;
+    for (const gl::Texture* t : {&mMaps, &mColourDepth, &mCubes}) {
+        if (*t)
+            total += std::size_t(t->width()) * t->height() * t->layers() * texelBytes(t->format());
+    }
     return total;
 }
 
@@ -111,12 +160,15 @@ int ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights
             l.layer = count2D++;
         }
     }
-    if (count2D > 0 && (!mMaps || mMaps.width() != size2D || mMaps.layers() != count2D)) {
-        allocate2D(size2D, count2D);
+    const DepthFormat format = options.depthFormat;
+    const GLenum cubeFormat = nativeFormat(format);
+    if (count2D > 0 &&
+        (!mMaps || mMaps.width() != size2D || mMaps.layers() != count2D || mMapFormat != format)) {
+        allocate2D(size2D, count2D, format);
     }
     if (countCube > 0 && (!mCubes || mCubes.width() != sizeCube ||
-                          mCubes.layers() != 6 * countCube)) {
-        allocateCubes(sizeCube, countCube);
+                          mCubes.layers() != 6 * countCube || mCubes.format() != cubeFormat)) {
+        allocateCubes(sizeCube, countCube, format);
     }
 
     int rendered = 0;
@@ -124,8 +176,14 @@ int ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights
     const float one = 1.0f;
     for (const ShadowedLight& light : lights) {
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
-        LayerState want{{}, light.mapSize, scene.revision(), options.cull,
-                        options.biasSlope, options.biasUnits, light.depthClamp};
+        LayerState want{{},
+                        light.mapSize,
+                        scene.revision(),
+                        options.cull,
+                        options.biasSlope,
+                        options.biasUnits,
+                        light.depthClamp,
+                        format};
         if (cube) {
             for (int face = 0; face < 6; ++face) {
                 want.clipFromWorld.push_back(light.frame.faceClipFromWorld(face));
@@ -144,10 +202,17 @@ int ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights
         glViewport(0, 0, light.mapSize, light.mapSize);
         const std::vector<glm::mat4>& m = have.clipFromWorld;
         if (!cube) {
-            glUseProgram(mProgram.id());
-            glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffers[size_t(light.layer)].id());
+            const bool colour = isColourFormat(format);
+            glUseProgram(colour ? colourProgram(format).id() : mProgram.id());
+            const GLuint fb = mFramebuffers[size_t(light.layer)].id();
+            glBindFramebuffer(GL_FRAMEBUFFER, fb);
             // Clear the whole layer (clears ignore the viewport): no stale depth is ever read.
-            glClearNamedFramebufferfv(mFramebuffers[size_t(light.layer)].id(), GL_DEPTH, 0, &one);
+            // Encoded depth clears to all ones, which every packing decodes as >= 1 (far).
+            glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &one);
+            if (colour) {
+                const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+                glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
+            }
             glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]);
             drawCasters(scene, options, 1);
         } else {
@@ -195,17 +260,30 @@ void toGrey(const std::vector<float>& depth, int size, Image16& out, int xOffset
 Image16 ShadowPass::readBack(const ShadowedLight& light) const {
     const int size = light.mapSize;
     const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+    const bool colour = !cube && isColourFormat(mMapFormat);
     const int faces = cube ? 6 : 1;
     Image16 out;
     out.width = size * faces;
     out.height = size;
     out.pixels.resize(size_t(out.width) * out.height);
     std::vector<float> depth(size_t(size) * size);
+    std::vector<std::uint8_t> encoded(colour ? depth.size() * 4 : 0);
     for (int face = 0; face < faces; ++face) {
         const GLuint texture = cube ? mCubes.id() : mMaps.id();
         const int layer = cube ? 6 * light.layer + face : light.layer;
-        glGetTextureSubImage(texture, 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                             GLsizei(depth.size() * sizeof(float)), depth.data());
+        if (colour) {
+            // Decoded on the CPU by the same scheme the shaders use (shadow/DepthPacking).
+            glGetTextureSubImage(texture, 0, 0, 0, layer, size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                                 GLsizei(encoded.size()), encoded.data());
+            for (size_t i = 0; i < depth.size(); ++i) {
+                const glm::vec4 c(encoded[4 * i], encoded[4 * i + 1], encoded[4 * i + 2],
+                                  encoded[4 * i + 3]);
+                depth[i] = shadow::decodeDepth(mMapFormat, c / 255.0f);
+            }
+        } else {
+            glGetTextureSubImage(texture, 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT,
+                                 GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
+        }
         toGrey(depth, size, out, face * size);
     }
     return out;

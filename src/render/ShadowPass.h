@@ -32,7 +32,9 @@ public:
     // array (layer = cube index), others to the 2D array. Returns the maps rendered.
     int render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
                const ShadowOptions& options);
+    // The 2D maps: a depth texture, or for colour formats an RGBA8 texture of encoded depth.
     const gl::Texture& maps() const { return mMaps; }
+    DepthFormat mapFormat() const { return mMapFormat; }
     const gl::Texture& cubes() const { return mCubes; }
     int mapArraySize() const { return mMaps ? mMaps.width() : 0; }
     std::size_t bytes() const;
@@ -48,18 +50,23 @@ private:
         CullMode cull = CullMode::Back;
         float slope = -1.0f, units = -1.0f;
         bool depthClamp = false;
+        DepthFormat format = DepthFormat::Depth32F;
         bool operator==(const LayerState&) const = default;
     };
-    void allocate2D(int size, int layers);
-    void allocateCubes(int size, int cubes);
+    void allocate2D(int size, int layers, DepthFormat format);
+    void allocateCubes(int size, int cubes, DepthFormat format);
+    const gl::Program& colourProgram(DepthFormat format);
     void setDepthState(const ShadowOptions& options, bool depthClamp) const;
     void drawCasters(const GpuScene& scene, const ShadowOptions& options, GLsizei instances) const;
 
     bool mLayered;
     gl::Program mProgram, mCubeProgram;
+    gl::Program mColourPrograms[3];  // r8, packed-256, packed-255 encoders, built on first use
     gl::Texture mMaps, mCubes;
-    std::vector<gl::Framebuffer> mFramebuffers;      // one per 2D layer
-    gl::Framebuffer mCubeFramebuffer;                // layered: the whole cube array
+    gl::Texture mColourDepth;  // depth test for colour formats
+    DepthFormat mMapFormat = DepthFormat::Depth32F;
+    std::vector<gl::Framebuffer> mFramebuffers;          // one per 2D layer
+    gl::Framebuffer mCubeFramebuffer;                    // layered: the whole cube array
     std::vector<gl::Framebuffer> mCubeFaceFramebuffers;  // fallback: one per cube face
     std::vector<LayerState> mLayers, mCubeLayers;
 };

@@ -49,7 +49,8 @@ help)
     run render --help
     expect 0 "--shadows"
     for flag in --size --time --light-only --shadow-maps --outside --map-size --bias-constant \
-                --bias-slope --normal-offset --cull --filter --pcf-size --shadowed; do
+                --bias-slope --normal-offset --cull --filter --pcf-size --shadowed --depth-format \
+                --map-filter; do
         grep -qF -- "$flag" "$work/stdout" || fail "help lacks $flag"
     done
     grep -qF -- "default" "$work/stdout" || fail "help shows no defaults"
