@@ -7,6 +7,15 @@
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
+// Depth-aware tolerance (SPEC S12): x steps of the stored depth's spacing; y, z that spacing
+// for the 2D maps and the cubes (< 0: one float ulp of the stored depth, which grows with it).
+layout(location = 7) uniform vec3 uDepthAware;
+
+float depthTolerance(LightData light, float stored, float spacing) {
+    float step = spacing >= 0.0 ? spacing : exp2(floor(log2(max(stored, 1e-30))) - 23.0);
+    return light.shadowBias.x + uDepthAware.x * step;
+}
+
 #if defined(DEPTH_COLOUR)
 // Colour formats (DEPTH_COLOUR with PACK_*): fetch, decode, compare by hand. The sampler's
 // filter (--map-filter) interpolates the *encoded* values: fine for r8, wrong for packed
@@ -57,7 +66,8 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     a = abs(toPoint);
     major = max(a.x, max(a.y, a.z));
     float ndc = (far + near) / (far - near) - 2.0 * far * near / ((far - near) * major);
-    float reference = 0.5 * ndc + 0.5 - light.shadowBias.x;
+    float stored = 0.5 * ndc + 0.5;
+    float reference = stored - depthTolerance(light, stored, uDepthAware.z);
     float layer = light.colour.w;
 #if defined(FILTER_PCF)
     // Two axes spanning the face of the major axis; one texel is 2 / size at unit distance.
@@ -99,7 +109,7 @@ float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsT
         return 1.0;
     }
 #endif
-    float reference = coord.z - light.shadowBias.x;
+    float reference = coord.z - depthTolerance(light, coord.z, uDepthAware.y);
     // The light's map covers [0, uvScale] of the layer; keep every tap inside it.
     vec2 lo = vec2(0.5 * texelUv), hi = vec2(uvScale - 0.5 * texelUv);
     vec2 uv = coord.xy * uvScale;

@@ -48,6 +48,10 @@ void RenderFlags::add(CLI::App& a) {
     a.add_option(
         "--bias-constant", biasConstant,
         "tolerance added to the stored depth, [0,1) (default " + str(s.biasConstant) + ")");
+    a.add_option("--bias-depth-aware", biasDepthAware,
+                 "plus this many steps of the stored depth's spacing for the map's format, "
+                 "growing with depth for float storage (default " +
+                     str(s.biasDepthAware) + ")");
     a.add_option("--bias-slope", biasSlope,
                  "polygon-offset factor in the depth pass (default " + str(s.biasSlope) + ")");
     a.add_option("--bias-units", biasUnits,
@@ -97,6 +101,7 @@ void RenderFlags::apply(RenderOptions& o) const {
         o.shadow.outside = parseEnum("--outside", outside, parseOutsidePolicy, "lit, clamp");
     if (given("--map-size")) o.shadow.mapSize = mapSize;
     if (given("--bias-constant")) o.shadow.biasConstant = biasConstant;
+    if (given("--bias-depth-aware")) o.shadow.biasDepthAware = biasDepthAware;
     if (given("--bias-slope")) o.shadow.biasSlope = biasSlope;
     if (given("--bias-units")) o.shadow.biasUnits = biasUnits;
     if (given("--normal-offset")) o.shadow.normalOffset = normalOffset;

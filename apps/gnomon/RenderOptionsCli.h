@@ -13,7 +13,8 @@ struct RenderFlags {
     std::string size, shadows, outside, cull, filter, shadowed, depthFormat, mapFilter;
     int lightOnly = -1, mapSize = 0, pcfSize = 3;
     double time = 0.0;
-    float biasConstant = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0, shadowFactor = 0;
+    float biasConstant = 0, biasDepthAware = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0,
+          shadowFactor = 0;
     CLI::App* app = nullptr;
 
     // Declares the flags on `app`.

@@ -51,15 +51,16 @@ struct ShadowOptions {
     bool enabled = true;                         // false: every shadow test off, lighting unchanged
     OutsidePolicy outside = OutsidePolicy::Lit;  // lookups outside a light's map
     float biasConstant = 0.0002f;                // stored-depth units [0,1] added to the map depth
-    float biasSlope = 1.5f;                      // glPolygonOffset factor in the depth pass, >= 0
-    float biasUnits = 2.0f;                      // glPolygonOffset units in the depth pass, >= 0
+    float biasDepthAware = 1.0f;  // + this many steps of the stored depth's spacing (S12)
+    float biasSlope = 1.5f;       // glPolygonOffset factor in the depth pass, >= 0
+    float biasUnits = 2.0f;       // glPolygonOffset units in the depth pass, >= 0
     float normalOffset = 1.0f;  // lookup shift along the normal: texels x filter reach x sin(angle)
     CullMode cull = CullMode::Back;           // faces culled in the depth pass
     ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
     int pcfSize = 3;                          // kernel width for Pcf, odd, 1..9
     int mapSize = 0;  // texels per side for every light, 0 = each light's own
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
-    MapFilter mapFilter = MapFilter::Nearest;  // colour formats: filtering of stored depth
+    MapFilter mapFilter = MapFilter::Nearest;         // colour formats: filtering of stored depth
 };
 
 struct ShadingOptions {

@@ -103,6 +103,8 @@ std::vector<std::string> RenderOptions::validate() const {
     need(finite(s.biasConstant) && s.biasConstant >= 0.0f && s.biasConstant < 1.0f,
          "bias-constant must be in [0, 1) (stored-depth units), got " +
              std::to_string(s.biasConstant));
+    need(finite(s.biasDepthAware) && s.biasDepthAware >= 0.0f && s.biasDepthAware <= 1000.0f,
+         "bias-depth-aware must be in [0, 1000] steps, got " + std::to_string(s.biasDepthAware));
     need(finite(s.biasSlope) && s.biasSlope >= 0.0f && s.biasSlope <= 100.0f,
          "bias-slope must be in [0, 100], got " + std::to_string(s.biasSlope));
     need(finite(s.biasUnits) && s.biasUnits >= 0.0f && s.biasUnits <= 1.0e6f,

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gl/Program.h"
+#include "shadow/DepthPacking.h"
 
 namespace gnomon::render {
 
@@ -116,6 +117,15 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     glUniform1f(4, options.shading.shadowFactor);
     glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
     glUniform1i(6, GLint(lights.size()));
+    // Spacing of stored depths per kind of map; -1 asks the shader for a float ulp.
+    auto spacing = [](DepthFormat f) {
+        return f == DepthFormat::Depth32F ? -1.0f : shadow::storedDepthSpacing(f, 0.5f);
+    };
+    const DepthFormat cubeFormat = isColourFormat(options.shadow.depthFormat)
+                                       ? DepthFormat::Depth32F
+                                       : options.shadow.depthFormat;
+    glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
+                spacing(cubeFormat));
 
     scene.bind();
     glEnable(GL_DEPTH_TEST);

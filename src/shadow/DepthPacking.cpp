@@ -1,5 +1,6 @@
 #include "shadow/DepthPacking.h"
 
+#include <cfloat>
 #include <cmath>
 
 namespace gnomon::shadow {
@@ -65,6 +66,41 @@ float depthRoundTripBound(DepthFormat format) {
             return 6e-8f;
     }
     return 0.0f;
+}
+
+}  // namespace gnomon::shadow
+
+namespace gnomon::shadow {
+
+float storedDepthSpacing(DepthFormat format, float stored) {
+    switch (format) {
+        case DepthFormat::R8:
+        case DepthFormat::Rgba8Packed256:
+            return 1.0f / 255.0f;
+        case DepthFormat::Depth16:
+            return 1.0f / 65535.0f;
+        case DepthFormat::Depth24:
+            return 1.0f / 16777215.0f;
+        case DepthFormat::Rgba8Packed255:
+            // Exact in 8-bit channels; the decode's float sum (terms up to 1) limits it.
+            return 2.0f * FLT_EPSILON;
+        case DepthFormat::Depth32F: {
+            const float s = std::max(stored, 1e-30f);
+            return std::nextafter(s, 2.0f) - s;
+        }
+    }
+    return 0.0f;
+}
+
+float depthAwareTolerance(DepthFormat format, float stored, float constant, float depthAware) {
+    return constant + depthAware * storedDepthSpacing(format, stored);
+}
+
+float worldDepthResolution(float z, float near, float far, int bits) {
+    // stored(z) = ((f + n) / (f - n) - 2 f n / ((f - n) z)) / 2 + 1/2, so
+    // d stored / d z = f n / ((f - n) z^2); one step of 1 / (2^bits - 1) spans its inverse.
+    const double steps = std::ldexp(1.0, bits) - 1.0;
+    return float((double(far) - near) * double(z) * z / (double(far) * near * steps));
 }
 
 }  // namespace gnomon::shadow

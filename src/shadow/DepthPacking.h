@@ -25,3 +25,22 @@ float decodeDepth(DepthFormat format, const glm::vec4& channels);
 float depthRoundTripBound(DepthFormat format);
 
 }  // namespace gnomon::shadow
+
+namespace gnomon::shadow {
+
+// Spacing of representable stored depths around stored depth `stored` [0, 1] (SPEC S12):
+// 1 / (2^bits - 1) for fixed-point storage (r8, depth16, depth24; packed-256 is only as good
+// as its red channel's 255ths), one float ulp of the stored value for depth32f (growing with
+// the stored depth, which is where perspective depths crowd, near 1), and two float epsilons
+// for packed-255 (exact in 8-bit channels; the decode's float sum limits it).
+float storedDepthSpacing(DepthFormat format, float stored);
+
+// The tolerance of a lookup in stored-depth units: constant + depthAware x spacing.
+float depthAwareTolerance(DepthFormat format, float stored, float constant, float depthAware);
+
+// The course text's error graph: the view-space distance between adjacent stored depths at
+// view distance `z` for a perspective camera (near, far) storing `bits` bits, i.e. how far
+// apart two surfaces must be to be told apart. Grows with z^2.
+float worldDepthResolution(float z, float near, float far, int bits);
+
+}  // namespace gnomon::shadow

@@ -89,3 +89,57 @@ TEST(DepthPacking, NamesRoundTrip) {
 
 }  // namespace
 }  // namespace gnomon
+
+namespace gnomon {
+namespace {
+
+// SPEC S12, checked against a naive reference: step the stored depth through its
+// representable values and measure the gap directly.
+TEST(DepthAware, SpacingMatchesNaiveStepping) {
+    for (float s : {0.01f, 0.25f, 0.5f, 0.97f, 0.999f}) {
+        // depth32f: the next float.
+        float next = s;
+        for (double step = 1e-12; next == s; step *= 1.001)
+            next = float(double(s) + step);
+        EXPECT_NEAR(shadow::storedDepthSpacing(DepthFormat::Depth32F, s), next - s, 1e-12f);
+        // depth16: a 16-bit unorm step, the same everywhere.
+        EXPECT_FLOAT_EQ(shadow::storedDepthSpacing(DepthFormat::Depth16, s), 1.0f / 65535.0f);
+    }
+    // Float spacing grows with the stored depth: errors are larger near 1 (the course text).
+    EXPECT_GT(shadow::storedDepthSpacing(DepthFormat::Depth32F, 0.99f),
+              shadow::storedDepthSpacing(DepthFormat::Depth32F, 0.01f) * 10.0f);
+}
+
+TEST(DepthAware, ToleranceCoversEachFormatsRoundTrip) {
+    for (DepthFormat f : {DepthFormat::R8, DepthFormat::Rgba8Packed256, DepthFormat::Rgba8Packed255,
+                          DepthFormat::Depth16, DepthFormat::Depth24}) {
+        for (float s : {0.1f, 0.5f, 0.98f}) {
+            EXPECT_GE(shadow::depthAwareTolerance(f, s, 0.0f, 1.0f),
+                      shadow::depthRoundTripBound(f) * 0.999f)
+                << toString(f) << " at " << s;
+        }
+    }
+    EXPECT_FLOAT_EQ(shadow::depthAwareTolerance(DepthFormat::Depth16, 0.5f, 0.001f, 2.0f),
+                    0.001f + 2.0f / 65535.0f);
+}
+
+// The course text's graph (near 4, far 50): the distance one stored step spans grows with z^2.
+TEST(DepthAware, WorldResolutionGrowsWithTheSquareOfDistance) {
+    const float at10 = shadow::worldDepthResolution(10.0f, 4.0f, 50.0f, 16);
+    const float at40 = shadow::worldDepthResolution(40.0f, 4.0f, 50.0f, 16);
+    EXPECT_NEAR(at40 / at10, 16.0f, 1e-3f);
+    // Naive reference: invert the stored depth at z and one step further.
+    auto viewDepth = [](double stored, double n, double f) {
+        const double ndc = 2.0 * stored - 1.0;
+        return 2.0 * f * n / ((f + n) - ndc * (f - n));
+    };
+    auto stored = [](double z, double n, double f) {
+        return 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * z)) + 0.5;
+    };
+    const double step = 1.0 / 65535.0;
+    const double naive = viewDepth(stored(40.0, 4.0, 50.0) + step, 4.0, 50.0) - 40.0;
+    EXPECT_NEAR(at40, naive, naive * 0.01);
+}
+
+}  // namespace
+}  // namespace gnomon
