@@ -1,5 +1,6 @@
 // Depth in 8-bit colour channels (SPEC S10), the GPU side of src/shadow/DepthPacking.cpp:
-// PACK_R8 (red only), PACK_256 (the WebGL book's base), PACK_255 (the tutorial's base).
+// PACK_R8 (red only), PACK_256 (the WebGL book's base), PACK_255 (the tutorial's base);
+// none of them: a native depth texture, whose red channel is the depth.
 #if defined(PACK_256)
 const float kPackBase = 256.0;
 #else
@@ -19,7 +20,7 @@ vec4 packDepth(float depth) {
 }
 
 float unpackDepth(vec4 c) {
-#if defined(PACK_R8)
+#if defined(PACK_R8) || !(defined(PACK_256) || defined(PACK_255))
     return c.r;
 #else
     return dot(c, vec4(1.0, 1.0 / kPackBase, 1.0 / (kPackBase * kPackBase),

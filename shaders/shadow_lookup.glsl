@@ -16,17 +16,19 @@ float depthTolerance(LightData light, float stored, float spacing) {
     return light.shadowBias.x + uDepthAware.x * step;
 }
 
-#if defined(DEPTH_COLOUR)
-// Colour formats (DEPTH_COLOUR with PACK_*): fetch, decode, compare by hand. The sampler's
-// filter (--map-filter) interpolates the *encoded* values: fine for r8, wrong for packed
-// channels (which is why the book's Shadow_highp uses nearest lookups).
+#if defined(HAND_COMPARE)
+// Fetch the stored depth (filtered by the sampler: --map-filter) and compare by hand: every
+// lookup of colour formats (PACK_*: decode first), and --filter none on native depth (the
+// course text's LINEAR lookup of a depth texture). LINEAR interpolates stored depth: fine
+// for one channel, wrong for packed channels (why the book's Shadow_highp uses NEAREST).
 #include "depth_packing.glsl"
 layout(binding = 0) uniform sampler2DArray uShadowMaps;
 float compareDepth(vec2 uv, float layer, float reference) {
     return reference > unpackDepth(texture(uShadowMaps, vec3(uv, layer))) ? 0.0 : 1.0;
 }
 #else
-// Native depth formats: the sampler compares (LEQUAL), LINEAR gives 2x2 bilinear PCF.
+// The comparison sampler (LEQUAL): compares each texel, then filters the results; LINEAR
+// gives 2x2 bilinear PCF.
 layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
 float compareDepth(vec2 uv, float layer, float reference) {
     return texture(uShadowMaps, vec4(uv, layer, reference));

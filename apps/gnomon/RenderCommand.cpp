@@ -31,6 +31,10 @@ E parseEnum(const std::string& flag, const std::string& value,
 void RenderFlags::add(CLI::App& a) {
     app = &a;
     const ShadowOptions& s = kDefaults.shadow;
+    a.add_option("--preset", preset,
+                 "default|textbook: where options start; textbook = the textbook's own numbers "
+                 "for the scene (constant tolerance, its depth storage; acne included); flags "
+                 "given override it (default: default)");
     a.add_option("--size", size,
                  "output size WIDTHxHEIGHT (default: the scene's, usually 512x512)");
     a.add_option("--time", time,
@@ -77,6 +81,15 @@ void RenderFlags::add(CLI::App& a) {
                  "--shadow-factor (default: scene's; ambient)");
     a.add_option("--shadow-factor", shadowFactor,
                  "colour multiplier in shadow for --shadowed factor, 0..1 (default 0.7)");
+}
+
+RenderOptions RenderFlags::resolve(const Scene& scene) const {
+    Preset p = Preset::Default;
+    if (app->count("--preset") > 0)
+        p = parseEnum("--preset", preset, parsePreset, "default, textbook");
+    RenderOptions o = presetOptions(scene, p);
+    apply(o);
+    return o;
 }
 
 void RenderFlags::apply(RenderOptions& o) const {

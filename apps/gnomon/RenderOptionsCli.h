@@ -6,11 +6,12 @@
 #include <string>
 
 #include "gnomon/Options.h"
+#include "gnomon/Scene.h"
 
 namespace gnomon::cli {
 
 struct RenderFlags {
-    std::string size, shadows, outside, cull, filter, shadowed, depthFormat, mapFilter;
+    std::string preset, size, shadows, outside, cull, filter, shadowed, depthFormat, mapFilter;
     int lightOnly = -1, mapSize = 0, pcfSize = 3;
     double time = 0.0;
     float biasConstant = 0, biasDepthAware = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0,
@@ -19,6 +20,9 @@ struct RenderFlags {
 
     // Declares the flags on `app`.
     void add(CLI::App& app);
+    // The options for `scene`: the --preset's (default: the scene's own), then every flag
+    // given applied over them. Throws gnomon::Error for bad values.
+    RenderOptions resolve(const Scene& scene) const;
     // Applies the given flags over `options`; throws gnomon::Error for bad values.
     void apply(RenderOptions& options) const;
 };

@@ -28,8 +28,7 @@ struct RenderArgs {
 
 int runRender(const RenderArgs& args, bool verbose) {
     gnomon::Scene scene = gnomon::loadScene(args.scene);
-    gnomon::RenderOptions options = scene.options;
-    args.flags.apply(options);
+    const gnomon::RenderOptions options = args.flags.resolve(scene);
     if (options.lightOnly >= int(scene.lights.size())) {
         throw gnomon::Error(gnomon::ErrorKind::InvalidInput,
                             "--light-only " + std::to_string(options.lightOnly) + ": scene '" +

@@ -47,6 +47,13 @@ enum class DepthFormat {
 // Texture filtering of colour-format maps before the comparison (SPEC S13).
 enum class MapFilter { Nearest, Linear };
 
+// Where a render's options start (CLI --preset); flags given after it override.
+enum class Preset {
+    Default,   // gnomon's best: the scene's authored options with gnomon's bias defaults
+    Textbook,  // the textbook's own numbers for the scene: constant tolerance, its depth
+               // storage and lookups; acne and all (Scene::textbookOptions)
+};
+
 struct ShadowOptions {
     bool enabled = true;                         // false: every shadow test off, lighting unchanged
     OutsidePolicy outside = OutsidePolicy::Lit;  // lookups outside a light's map
@@ -87,12 +94,14 @@ const char* toString(CullMode v);
 const char* toString(ShadowFilter v);
 const char* toString(DepthFormat v);
 const char* toString(MapFilter v);
+const char* toString(Preset v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
 std::optional<CullMode> parseCullMode(const std::string& s);
 std::optional<ShadowFilter> parseShadowFilter(const std::string& s);
 std::optional<DepthFormat> parseDepthFormat(const std::string& s);
 std::optional<MapFilter> parseMapFilter(const std::string& s);
+std::optional<Preset> parsePreset(const std::string& s);
 // True for the formats stored in colour channels (r8 and the RGBA8 packings).
 bool isColourFormat(DepthFormat v);
 

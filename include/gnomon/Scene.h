@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -125,6 +126,8 @@ struct Scene {
     Camera camera;
     glm::vec3 ambient{0.1f};  // ambient light colour, times the material colour
     RenderOptions options;    // the options the scene was authored with; callers start here
+    // The textbook's own settings for this scene (SPEC section 8), if it comes from one.
+    std::optional<RenderOptions> textbookOptions;
 
     // Empty when consistent; otherwise one sentence per problem (index out of range, NaN...).
     std::vector<std::string> validate() const;
@@ -134,6 +137,12 @@ struct SceneInfo {
     std::string name;
     std::string description;
 };
+
+// The options a preset gives for `scene`: Default = scene.options; Textbook =
+// scene.textbookOptions, or for scenes without them a constant tolerance of 0.005 in stored
+// depth and nothing else (no slope, normal offset or depth-aware step, no culling, one
+// nearest lookup): the textbooks' method.
+RenderOptions presetOptions(const Scene& scene, Preset preset);
 
 // The scenes gnomon ships, in a stable order.
 std::vector<SceneInfo> builtinScenes();

@@ -42,6 +42,9 @@ const std::pair<const char*, DepthFormat> kFormats[] = {
 const std::pair<const char*, MapFilter> kMapFilters[] = {{"nearest", MapFilter::Nearest},
                                                          {"linear", MapFilter::Linear}};
 
+const std::pair<const char*, Preset> kPresets[] = {{"default", Preset::Default},
+                                                   {"textbook", Preset::Textbook}};
+
 bool finite(float v) {
     return std::isfinite(v);
 }
@@ -84,6 +87,8 @@ std::optional<DepthFormat> parseDepthFormat(const std::string& s) {
 std::optional<MapFilter> parseMapFilter(const std::string& s) {
     return lookup(s, kMapFilters);
 }
+const char* toString(Preset v) { return nameOf(v, kPresets); }
+std::optional<Preset> parsePreset(const std::string& s) { return lookup(s, kPresets); }
 bool isColourFormat(DepthFormat v) {
     return v == DepthFormat::R8 || v == DepthFormat::Rgba8Packed256 ||
            v == DepthFormat::Rgba8Packed255;

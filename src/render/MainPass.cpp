@@ -8,6 +8,14 @@
 
 namespace gnomon::render {
 
+namespace {
+// Stored depth fetched and compared in the shader: colour formats always, native depth for
+// --filter none (so --map-filter applies, as in the course text's LINEAR lookups).
+bool handCompare(const ShadowOptions& s) {
+    return isColourFormat(s.depthFormat) || s.filter == ShadowFilter::None;
+}
+}  // namespace
+
 static_assert(sizeof(GpuLight) == 176, "GpuLight must match LightData in lights.glsl");
 
 MainPass::MainPass() {
@@ -31,17 +39,18 @@ const gl::Program& MainPass::program(const RenderOptions& options) {
     }
     switch (s.depthFormat) {
         case DepthFormat::R8:
-            defines.insert(defines.end(), {"DEPTH_COLOUR", "PACK_R8"});
+            defines.push_back("PACK_R8");
             break;
         case DepthFormat::Rgba8Packed256:
-            defines.insert(defines.end(), {"DEPTH_COLOUR", "PACK_256"});
+            defines.push_back("PACK_256");
             break;
         case DepthFormat::Rgba8Packed255:
-            defines.insert(defines.end(), {"DEPTH_COLOUR", "PACK_255"});
+            defines.push_back("PACK_255");
             break;
         default:
-            break;  // native: the sampler compares
+            break;
     }
+    if (handCompare(s)) defines.push_back("HAND_COMPARE");
     if (options.shading.shadowedRule == ShadowedRule::Factor) {
         defines.push_back("SHADOWED_FACTOR");
     }
@@ -76,9 +85,9 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
 
     // Hardware comparison with NEAREST is one texel; LINEAR gives the 2x2 bilinear PCF.
     const ShadowOptions& so = options.shadow;
-    const bool colour = isColourFormat(so.depthFormat);
+    const bool hand = handCompare(so);
     const GLint compareFilter = so.filter == ShadowFilter::None ? GL_NEAREST : GL_LINEAR;
-    const GLint mapFilter = !colour                             ? compareFilter
+    const GLint mapFilter = !hand                               ? compareFilter
                             : so.mapFilter == MapFilter::Linear ? GL_LINEAR
                                                                 : GL_NEAREST;
     auto makeSampler = [](gl::Sampler& sampler, std::string& key, const std::string& want,
@@ -94,8 +103,8 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
         key = want;
     };
     makeSampler(mMapSampler, mMapSamplerKey,
-                std::to_string(mapFilter) + (colour ? "colour" : "compare"), "shadow map sampler",
-                mapFilter, !colour);
+                std::to_string(mapFilter) + (hand ? "hand" : "compare"), "shadow map sampler",
+                mapFilter, !hand);
     makeSampler(mCubeSampler, mCubeSamplerKey, std::to_string(compareFilter), "shadow cube sampler",
                 compareFilter, true);
     if (!in.shadowMaps && !mDummyMaps) {

@@ -35,8 +35,24 @@ Object& addObject(Scene& s, const std::string& name, std::uint32_t mesh, std::ui
 }
 
 // WebGL book, Shadow.js / Shadow_highp.js.
-Scene bookTriangle(const glm::vec3& lightPosition, float lightFar, const std::string& name,
-                   const std::string& description) {
+// A textbook's way: one constant tolerance and nothing else (SPEC S14's remedies off).
+RenderOptions textbookSettings(RenderOptions o, DepthFormat format, MapFilter lookup, int boxSize,
+                               float tolerance) {
+    o.shadow.depthFormat = format;
+    o.shadow.mapFilter = lookup;
+    o.shadow.filter = boxSize > 1 ? ShadowFilter::Pcf : ShadowFilter::None;
+    o.shadow.pcfSize = boxSize;
+    o.shadow.biasConstant = tolerance;
+    o.shadow.biasDepthAware = 0.0f;
+    o.shadow.biasSlope = 0.0f;
+    o.shadow.biasUnits = 0.0f;
+    o.shadow.normalOffset = 0.0f;
+    o.shadow.cull = CullMode::None;
+    return o;
+}
+
+Scene bookTriangle(bool highPrecision, const glm::vec3& lightPosition, float lightFar,
+                   const std::string& name, const std::string& description) {
     Scene s;
     s.name = name;
     s.description = description;
@@ -84,6 +100,12 @@ Scene bookTriangle(const glm::vec3& lightPosition, float lightFar, const std::st
     s.options.width = s.options.height = 400;
     s.options.shading.shadowedRule = ShadowedRule::Factor;
     s.options.shading.shadowFactor = 0.7f;
+    // Shadow.js: depth in the red channel, LINEAR lookups, 0.005; Shadow_highp.js: packed
+    // RGBA (base 256), NEAREST lookups, 0.0015.
+    s.textbookOptions =
+        highPrecision ? textbookSettings(s.options, DepthFormat::Rgba8Packed256, MapFilter::Nearest,
+                                         1, 0.0015f)
+                      : textbookSettings(s.options, DepthFormat::R8, MapFilter::Linear, 1, 0.005f);
     return s;
 }
 
@@ -121,6 +143,9 @@ Scene courseScene(const std::string& name, const std::string& description,
     s.camera.far = 20.0f;
     s.ambient = glm::vec3(0.3f);
     s.options.shading.shadowedRule = ShadowedRule::AmbientOnly;
+    // The course demo: a depth texture looked up with LINEAR filtering, tolerance 0.00001.
+    s.textbookOptions =
+        textbookSettings(s.options, DepthFormat::Depth24, MapFilter::Linear, 1, 0.00001f);
     return s;
 }
 
@@ -260,6 +285,9 @@ Scene tutorialRoom(bool thin, const std::string& name, const std::string& descri
     s.camera.near = 0.5f;
     s.camera.far = 80.0f;
     s.ambient = glm::vec3(0.1f);
+    // The tutorial: depth packed in base 255, one nearest lookup, 0.00575.
+    s.textbookOptions =
+        textbookSettings(s.options, DepthFormat::Rgba8Packed255, MapFilter::Nearest, 1, 0.00575f);
     return s;
 }
 
@@ -304,6 +332,15 @@ Scene tutorialLight(LightType type, const std::string& name, const std::string& 
             break;
         }
     }
+    // The tutorial's tolerances: spot 0.025, area 0.005, both with its 5x5 box of lookups;
+    // point 0.02 on distance/far, which our perspective cube depth has no single equivalent
+    // of: 0.0005 keeps its look at the room's distances.
+    const float tolerance = type == LightType::Spot    ? 0.025f
+                            : type == LightType::Area  ? 0.005f
+                            : type == LightType::Point ? 0.0005f
+                                                       : 0.00575f;
+    s.textbookOptions = textbookSettings(s.options, DepthFormat::Rgba8Packed255, MapFilter::Nearest,
+                                         type == LightType::Directional ? 1 : 5, tolerance);
     return s;
 }
 
@@ -352,12 +389,12 @@ const std::vector<Builtin>& builtins() {
         {"book-triangle",
          "WebGL book 'Shadow': spinning triangle over a tilted plane, light at (0, 7, 2)",
          [](const std::string& n, const std::string& d) {
-             return bookTriangle({0.0f, 7.0f, 2.0f}, 100.0f, n, d);
+             return bookTriangle(false, {0.0f, 7.0f, 2.0f}, 100.0f, n, d);
          }},
         {"book-triangle-far",
          "WebGL book 'Shadow_highp': the same with the light far away at (0, 40, 2)",
          [](const std::string& n, const std::string& d) {
-             return bookTriangle({0.0f, 40.0f, 2.0f}, 200.0f, n, d);
+             return bookTriangle(true, {0.0f, 40.0f, 2.0f}, 200.0f, n, d);
          }},
         {"course-two-lights",
          "course text's experiment: three planes, twice, under two orthographic-shadow lights",

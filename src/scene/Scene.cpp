@@ -124,6 +124,21 @@ Aabb worldBounds(const Scene& scene, const std::vector<Aabb>& meshBoxes, double 
     return box;
 }
 
+RenderOptions presetOptions(const Scene& scene, Preset preset) {
+    if (preset == Preset::Default) return scene.options;
+    if (scene.textbookOptions) return *scene.textbookOptions;
+    RenderOptions o = scene.options;
+    o.shadow.biasConstant = 0.005f;
+    o.shadow.biasDepthAware = 0.0f;
+    o.shadow.biasSlope = 0.0f;
+    o.shadow.biasUnits = 0.0f;
+    o.shadow.normalOffset = 0.0f;
+    o.shadow.cull = CullMode::None;
+    o.shadow.filter = ShadowFilter::None;
+    o.shadow.mapFilter = MapFilter::Nearest;
+    return o;
+}
+
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
     if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
     return scene.lights[index].enabled;

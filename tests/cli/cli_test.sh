@@ -49,7 +49,7 @@ help)
     run render --help
     expect 0 "--shadows"
     for flag in --size --time --light-only --shadow-maps --outside --map-size --bias-constant \
-                --bias-depth-aware \
+                --bias-depth-aware --preset \
                 --bias-slope --normal-offset --cull --filter --pcf-size --shadowed --depth-format \
                 --map-filter; do
         grep -qF -- "$flag" "$work/stdout" || fail "help lacks $flag"

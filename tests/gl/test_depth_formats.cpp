@@ -140,3 +140,43 @@ TEST(Formats, MapsAgreeWithinTheFormatsPrecision) {
 
 }  // namespace
 }  // namespace gnomon::test
+
+namespace gnomon::test {
+namespace {
+
+// Lit pixels (by the oracle) that a render darkens: acne.
+int acnePixels(const Scene& scene, const RenderOptions& o) {
+    RenderOptions off = o;
+    off.shadow.enabled = false;
+    const Image a = sharedRenderer().render(scene, o), c = sharedRenderer().render(scene, off);
+    const GeometryShadows truth = classifyPixels(scene, o, 2);
+    int acne = 0;
+    for (int y = 0; y < truth.height; ++y) {
+        for (int x = 0; x < truth.width; ++x) {
+            if (truth.classes[size_t(y) * truth.width + x] != PixelClass::Lit) continue;
+            acne += luminance(a.at(x, y)) + 6 < luminance(c.at(x, y));
+        }
+    }
+    return acne;
+}
+
+// SPEC S13: the course text's tolerance of 0.00001 holds with LINEAR lookups of its depth
+// texture (interpolating a plane's depth gives the plane's depth) and fails with NEAREST.
+TEST(Lookups, LinearDepthLookupsCureTheCourseTextsAcne) {
+    const Scene s = builtinScene("course-two-lights");
+    RenderOptions linear = presetOptions(s, Preset::Textbook);
+    linear.width = linear.height = 256;
+    RenderOptions nearest = linear;
+    nearest.shadow.mapFilter = MapFilter::Nearest;
+    EXPECT_EQ(acnePixels(s, linear), 0);
+    EXPECT_GT(acnePixels(s, nearest), 200);
+}
+
+// The textbook preset keeps the book's shadow where its geometry says.
+TEST(Presets, TextbookBookTriangleShadowsWhereGeometrySays) {
+    const Scene s = builtinScene("book-triangle");
+    expectShadowsMatchGeometry(s, presetOptions(s, Preset::Textbook));
+}
+
+}  // namespace
+}  // namespace gnomon::test

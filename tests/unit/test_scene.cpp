@@ -359,3 +359,54 @@ TEST(Scene, MixedLightsHasEveryTypeAndSixteenShadowedLights) {
 }
 }  // namespace
 }  // namespace gnomon
+
+namespace gnomon {
+namespace {
+TEST(Presets, DefaultIsTheScenesOwnOptions) {
+    const Scene s = builtinScene("tutorial-room");
+    const RenderOptions o = presetOptions(s, Preset::Default);
+    EXPECT_EQ(o.shadow.biasConstant, s.options.shadow.biasConstant);
+    EXPECT_EQ(o.shadow.depthFormat, DepthFormat::Depth32F);
+}
+
+TEST(Presets, TextbookCarriesEachTextbooksNumbers) {
+    const RenderOptions book = presetOptions(builtinScene("book-triangle"), Preset::Textbook);
+    EXPECT_EQ(book.shadow.depthFormat, DepthFormat::R8);
+    EXPECT_EQ(book.shadow.mapFilter, MapFilter::Linear);
+    EXPECT_EQ(book.shadow.biasConstant, 0.005f);
+    EXPECT_EQ(book.shading.shadowFactor, 0.7f);
+    const RenderOptions far = presetOptions(builtinScene("book-triangle-far"), Preset::Textbook);
+    EXPECT_EQ(far.shadow.depthFormat, DepthFormat::Rgba8Packed256);
+    EXPECT_EQ(far.shadow.mapFilter, MapFilter::Nearest);
+    EXPECT_EQ(far.shadow.biasConstant, 0.0015f);
+    const RenderOptions course = presetOptions(builtinScene("course-cubes"), Preset::Textbook);
+    EXPECT_EQ(course.shadow.biasConstant, 0.00001f);
+    EXPECT_EQ(course.shadow.mapFilter, MapFilter::Linear);
+    const RenderOptions spot = presetOptions(builtinScene("tutorial-spot"), Preset::Textbook);
+    EXPECT_EQ(spot.shadow.biasConstant, 0.025f);
+    EXPECT_EQ(spot.shadow.pcfSize, 5);
+    EXPECT_EQ(presetOptions(builtinScene("tutorial-room"), Preset::Textbook).shadow.biasConstant,
+              0.00575f);
+    for (const SceneInfo& info : builtinScenes()) {
+        const RenderOptions t = presetOptions(builtinScene(info.name), Preset::Textbook);
+        SCOPED_TRACE(info.name);
+        EXPECT_TRUE(t.validate().empty());
+        // Only the constant tolerance: every other remedy is off.
+        EXPECT_EQ(t.shadow.biasSlope, 0.0f);
+        EXPECT_EQ(t.shadow.normalOffset, 0.0f);
+        EXPECT_EQ(t.shadow.biasDepthAware, 0.0f);
+    }
+}
+
+TEST(Presets, SceneWithoutTextbookGetsTheConstantToleranceMethod) {
+    Scene s = builtinScene("tutorial-room");
+    s.textbookOptions.reset();
+    const RenderOptions t = presetOptions(s, Preset::Textbook);
+    EXPECT_EQ(t.shadow.biasConstant, 0.005f);
+    EXPECT_EQ(t.shadow.filter, ShadowFilter::None);
+    EXPECT_EQ(t.shadow.cull, CullMode::None);
+    EXPECT_EQ(parsePreset("textbook"), Preset::Textbook);
+    EXPECT_FALSE(parsePreset("fancy").has_value());
+}
+}  // namespace
+}  // namespace gnomon
