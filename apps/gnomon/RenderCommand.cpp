@@ -67,9 +67,11 @@ void RenderFlags::add(CLI::App& a) {
     a.add_option("--cull", cull,
                  "back|front|none: faces culled in the depth pass (default back; double-sided "
                  "materials never)");
-    a.add_option("--filter", filter, "none|hw2x2|pcf: shadow map lookup filter (default pcf)");
-    a.add_option("--pcf-size", pcfSize,
-                 "PCF kernel width, odd 1..9 (default " + str(s.pcfSize) + ")");
+    a.add_option("--filter", filter,
+                 "none|hw2x2|pcf|poisson: shadow map lookup filter (default pcf)");
+    a.add_option(
+        "--pcf-size", pcfSize,
+        "kernel width in texels for pcf and poisson, odd 1..9 (default " + str(s.pcfSize) + ")");
     a.add_option("--depth-format", depthFormat,
                  "r8|rgba8-packed-256|rgba8-packed-255|depth16|depth24|depth32f: shadow map "
                  "storage (default depth32f; point-light cubes use depth32f for colour formats)");
@@ -121,7 +123,8 @@ void RenderFlags::apply(RenderOptions& o) const {
     if (given("--cull"))
         o.shadow.cull = parseEnum("--cull", cull, parseCullMode, "back, front, none");
     if (given("--filter"))
-        o.shadow.filter = parseEnum("--filter", filter, parseShadowFilter, "none, hw2x2, pcf");
+        o.shadow.filter =
+            parseEnum("--filter", filter, parseShadowFilter, "none, hw2x2, pcf, poisson");
     if (given("--pcf-size")) o.shadow.pcfSize = pcfSize;
     if (given("--depth-format")) {
         o.shadow.depthFormat =

@@ -26,9 +26,10 @@ enum class CullMode { Back, Front, None };
 
 // How the shadow map is sampled (SPEC S13, S17).
 enum class ShadowFilter {
-    None,   // one nearest texel, one comparison: hard, aliased edges
-    Hw2x2,  // hardware comparison sampler with LINEAR: 2x2 bilinear PCF
-    Pcf,    // pcfSize x pcfSize box of hardware 2x2 comparisons
+    None,     // one nearest texel, one comparison: hard, aliased edges
+    Hw2x2,    // hardware comparison sampler with LINEAR: 2x2 bilinear PCF
+    Pcf,      // pcfSize x pcfSize box of hardware 2x2 comparisons
+    Poisson,  // 16 taps of a rotated Poisson disc, pcfSize texels wide
 };
 
 // How a shadow map stores depth (SPEC S10). Colour formats write gl_FragCoord.z from the

@@ -29,8 +29,10 @@ const std::pair<const char*, OutsidePolicy> kOutside[] = {{"lit", OutsidePolicy:
                                                           {"clamp", OutsidePolicy::Clamp}};
 const std::pair<const char*, CullMode> kCull[] = {
     {"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}};
-const std::pair<const char*, ShadowFilter> kFilters[] = {
-    {"none", ShadowFilter::None}, {"hw2x2", ShadowFilter::Hw2x2}, {"pcf", ShadowFilter::Pcf}};
+const std::pair<const char*, ShadowFilter> kFilters[] = {{"none", ShadowFilter::None},
+                                                         {"hw2x2", ShadowFilter::Hw2x2},
+                                                         {"pcf", ShadowFilter::Pcf},
+                                                         {"poisson", ShadowFilter::Poisson}};
 
 const std::pair<const char*, DepthFormat> kFormats[] = {
     {"r8", DepthFormat::R8},
@@ -87,8 +89,12 @@ std::optional<DepthFormat> parseDepthFormat(const std::string& s) {
 std::optional<MapFilter> parseMapFilter(const std::string& s) {
     return lookup(s, kMapFilters);
 }
-const char* toString(Preset v) { return nameOf(v, kPresets); }
-std::optional<Preset> parsePreset(const std::string& s) { return lookup(s, kPresets); }
+const char* toString(Preset v) {
+    return nameOf(v, kPresets);
+}
+std::optional<Preset> parsePreset(const std::string& s) {
+    return lookup(s, kPresets);
+}
 bool isColourFormat(DepthFormat v) {
     return v == DepthFormat::R8 || v == DepthFormat::Rgba8Packed256 ||
            v == DepthFormat::Rgba8Packed255;

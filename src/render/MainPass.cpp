@@ -31,11 +31,22 @@ const gl::Program& MainPass::program(const RenderOptions& options) {
     const ShadowOptions& s = options.shadow;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
     if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
-    if (s.filter == ShadowFilter::Pcf) {
-        defines.push_back("FILTER_PCF");
+    switch (s.filter) {
+        case ShadowFilter::Pcf:
+            defines.push_back("FILTER_PCF");
+            break;
+        case ShadowFilter::Poisson:
+            defines.push_back("FILTER_POISSON");
+            break;
+        case ShadowFilter::Hw2x2:
+            defines.push_back("FILTER_HW2X2");
+            break;
+        case ShadowFilter::None:
+            defines.push_back("FILTER_NONE");
+            break;
+    }
+    if (s.filter == ShadowFilter::Pcf || s.filter == ShadowFilter::Poisson) {
         defines.push_back("PCF_SIZE " + std::to_string(s.pcfSize));
-    } else {
-        defines.push_back(s.filter == ShadowFilter::None ? "FILTER_NONE" : "FILTER_HW2X2");
     }
     switch (s.depthFormat) {
         case DepthFormat::R8:

@@ -39,7 +39,7 @@ malformed_size)
     ;;
 bad_enum)
     run render --scene book-triangle --filter blurry --out "$work/a.png"
-    expect 2 "--filter: expected one of none, hw2x2, pcf, got 'blurry'"
+    expect 2 "--filter: expected one of none, hw2x2, pcf, poisson, got 'blurry'"
     ;;
 bad_light)
     run render --scene book-triangle --light-only 3 --out "$work/a.png"
