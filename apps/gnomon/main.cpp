@@ -56,8 +56,14 @@ int runRender(const RenderArgs& args, bool verbose) {
     }
     if (verbose) {
         const gnomon::FrameStats stats = renderer.lastFrameStats();
-        std::fprintf(stderr, "gnomon: %d shadow pass(es), %.1f MiB of shadow maps\n",
-                     stats.shadowPasses, double(stats.shadowMapBytes) / (1024.0 * 1024.0));
+        std::fprintf(stderr,
+                     "gnomon: %d shadowed light(s), %d shadow pass(es) drawing %llu triangles "
+                     "(%d caster draws culled), main pass %llu triangles, %.1f MiB of shadow "
+                     "maps\n",
+                     stats.shadowedLights, stats.shadowPasses,
+                     (unsigned long long)stats.shadowTriangles, stats.castersCulled,
+                     (unsigned long long)stats.mainTriangles,
+                     double(stats.shadowMapBytes) / (1024.0 * 1024.0));
     }
     return 0;
 }

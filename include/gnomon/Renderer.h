@@ -3,6 +3,7 @@
 // copies of the last scene it drew; geometry is uploaded once and reused across frames.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,9 +25,15 @@ struct ShadowMapImage {
     Image16 depth;  // stored depth 0..1 scaled to 0..65535
 };
 
+// What a frame cost (SPEC S25): N shadowed lights cost up to N shadow renderings plus the
+// main one, and N maps of memory; maps whose light and casters did not change are kept.
 struct FrameStats {
-    int shadowPasses = 0;            // shadow maps rendered this frame
-    std::size_t shadowMapBytes = 0;  // GPU memory held by shadow maps
+    int shadowPasses = 0;               // shadow maps rendered this frame (kept ones: 0)
+    int shadowedLights = 0;             // lights with a map this frame
+    std::size_t shadowMapBytes = 0;     // GPU memory held by shadow maps
+    std::uint64_t shadowTriangles = 0;  // triangles submitted to shadow maps (cubes: x 6)
+    std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass
+    int castersCulled = 0;              // caster draws skipped as outside a light's volume
 };
 
 class Renderer {

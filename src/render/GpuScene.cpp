@@ -20,7 +20,7 @@ void hashBytes(std::uint64_t& h, const std::vector<T>& v) {
     h = h * 0x100000001b3ull ^ std::hash<std::string_view>{}(bytes) ^ v.size();
 }
 
-std::uint64_t geometryHash(const Scene& scene) {
+std::uint64_t hashGeometry(const Scene& scene) {
     std::uint64_t h = 0xcbf29ce484222325ull ^ scene.meshes.size();
     for (const Mesh& m : scene.meshes) {
         hashBytes(h, m.positions);
@@ -66,7 +66,7 @@ void GpuScene::uploadGeometry(const Scene& scene) {
 
 bool GpuScene::sync(const Scene& scene, double seconds) {
     bool changed = false;
-    const std::uint64_t hash = geometryHash(scene);
+    const std::uint64_t hash = hashGeometry(scene);
     if (!mHaveGeometry || hash != mGeometryHash) {
         uploadGeometry(scene);
         mGeometryHash = hash;
@@ -100,9 +100,16 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         mBounds.extend(box);
         if (o.castsShadows) mCasterBounds.extend(box);
         const Mesh& mesh = scene.meshes[o.mesh];
-        mItems[i] = {std::uint32_t(i),          GLsizei(mesh.indices.size()),
-                     mMeshRanges[o.mesh].first, mMeshRanges[o.mesh].second,
-                     mat.doubleSided,           o.castsShadows};
+        const std::string_view record(reinterpret_cast<const char*>(&mObjectData[i]),
+                                      sizeof(GpuObject));
+        mItems[i] = {std::uint32_t(i),
+                     GLsizei(mesh.indices.size()),
+                     mMeshRanges[o.mesh].first,
+                     mMeshRanges[o.mesh].second,
+                     mat.doubleSided,
+                     o.castsShadows,
+                     box,
+                     std::hash<std::string_view>{}(record)};
     }
     if (dataChanged) {
         if (mObjects.size() != n * sizeof(GpuObject) || !mObjects) {

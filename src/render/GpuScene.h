@@ -27,6 +27,8 @@ struct DrawItem {
     GLint baseVertex = 0;
     bool doubleSided = false;
     bool casts = true;
+    Aabb bounds;                 // world space, at the synced time
+    std::uint64_t dataHash = 0;  // of the object's GPU record: changes when it moves
 };
 
 class GpuScene {
@@ -41,8 +43,10 @@ public:
     // World bounds of all objects (or casters only) at the synced time.
     const Aabb& bounds() const { return mBounds; }
     const Aabb& casterBounds() const { return mCasterBounds; }
-    // Changes whenever geometry or object data changed (for shadow-map caching).
+    // Changes whenever geometry or object data changed.
     std::uint64_t revision() const { return mRevision; }
+    // Content hash of all vertex and index data.
+    std::uint64_t geometryHash() const { return mGeometryHash; }
 
 private:
     void uploadGeometry(const Scene& scene);

@@ -148,7 +148,14 @@ struct Renderer::Impl {
         planLights(s, options, viewFromWorld);
 
         stats = {};
-        stats.shadowPasses = shadowPass.render(scene, shadowed, options.shadow);
+        const render::ShadowPassStats passStats =
+            shadowPass.render(scene, shadowed, options.shadow);
+        stats.shadowPasses = passStats.rendered;
+        stats.shadowTriangles = passStats.triangles;
+        stats.castersCulled = passStats.culled;
+        stats.shadowedLights = int(shadowed.size());
+        for (const render::DrawItem& item : scene.items())
+            stats.mainTriangles += item.indexCount / 3;
         stats.shadowMapBytes = shadowed.empty() ? 0 : shadowPass.bytes();
         finishLights();
 

@@ -133,12 +133,34 @@ void ShadowPass::setDepthState(const ShadowOptions& options, bool depthClamp) co
     depthClamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
 }
 
+std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLight& light) {
+    mVisible.clear();
+    const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+    const glm::mat4 clipFromWorld = cube ? glm::mat4(1.0f) : light.frame.clipFromWorld();
+    std::uint64_t hash = scene.geometryHash();
+    const std::vector<DrawItem>& items = scene.items();
+    for (std::uint32_t i = 0; i < items.size(); ++i) {
+        const DrawItem& item = items[i];
+        if (!item.casts || item.indexCount == 0) continue;
+        const bool outside =
+            cube ? shadow::outsideCube(item.bounds, light.frame)
+                 : shadow::outsideClipVolume(item.bounds, clipFromWorld, light.depthClamp);
+        if (outside) {
+            ++mCulled;
+            continue;
+        }
+        mVisible.push_back(i);
+        hash = (hash ^ item.dataHash) * 0x100000001b3ull + i;
+    }
+    return hash;
+}
+
 void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options,
                              GLsizei instances) const {
     bool culling = false;
     glDisable(GL_CULL_FACE);
-    for (const DrawItem& item : scene.items()) {
-        if (!item.casts) continue;
+    for (std::uint32_t index : mVisible) {
+        const DrawItem& item = scene.items()[index];
         const bool wantCull = options.cull != CullMode::None && !item.doubleSided;
         if (wantCull != culling) {
             wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
@@ -148,8 +170,8 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
     }
 }
 
-int ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
-                       const ShadowOptions& options) {
+ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
+                                   const ShadowOptions& options) {
     int size2D = 0, sizeCube = 0, count2D = 0, countCube = 0;
     for (ShadowedLight& l : lights) {
         if (l.frame.kind == shadow::FrameKind::Cube) {
@@ -171,14 +193,15 @@ int ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights
         allocateCubes(sizeCube, countCube, format);
     }
 
-    int rendered = 0;
+    ShadowPassStats stats;
+    mCulled = 0;
     bool any = false;
     const float one = 1.0f;
     for (const ShadowedLight& light : lights) {
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
         LayerState want{{},
                         light.mapSize,
-                        scene.revision(),
+                        collectCasters(scene, light),
                         options.cull,
                         options.biasSlope,
                         options.biasUnits,
@@ -235,14 +258,18 @@ int ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights
                 }
             }
         }
-        ++rendered;
+        ++stats.rendered;
+        for (std::uint32_t index : mVisible) {
+            stats.triangles += std::uint64_t(scene.items()[index].indexCount / 3) * (cube ? 6 : 1);
+        }
     }
     if (any) {
         glDisable(GL_POLYGON_OFFSET_FILL);
         glDisable(GL_DEPTH_CLAMP);
         glDisable(GL_CULL_FACE);
     }
-    return rendered;
+    stats.culled = mCulled;
+    return stats;
 }
 
 namespace {

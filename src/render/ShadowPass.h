@@ -3,7 +3,8 @@
 // a DEPTH_COMPONENT32F 2D array (a light's map in the layer's lower-left mapSize^2 texels);
 // omnidirectional point lights own six layers of a cube-map array, drawn in one instanced
 // pass with gl_Layer from the vertex shader, or six passes where the driver cannot.
-// A light's map is re-rendered only when its camera, the scene or the depth state changed.
+// Casters outside a light's volume are not drawn into its map, and a map is re-rendered
+// only when its camera, the depth state or a caster inside its volume changed.
 #pragma once
 
 #include <vector>
@@ -24,14 +25,20 @@ struct ShadowedLight {
     int layer = 0;            // 2D array layer, or cube index in the cube-map array
 };
 
+struct ShadowPassStats {
+    int rendered = 0;             // maps drawn this frame (the others were kept)
+    std::uint64_t triangles = 0;  // triangles submitted to the drawn maps (cubes: x 6)
+    int culled = 0;               // caster draws skipped as outside a light's volume
+};
+
 class ShadowPass {
 public:
     // `layeredCubes` false forces six passes per cube (to test the fallback path).
     explicit ShadowPass(bool layeredCubes = true);
     // Renders (or keeps) every light's map. Lights with frame.kind == Cube go to the cube
-    // array (layer = cube index), others to the 2D array. Returns the maps rendered.
-    int render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
-               const ShadowOptions& options);
+    // array (layer = cube index), others to the 2D array.
+    ShadowPassStats render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
+                           const ShadowOptions& options);
     // The 2D maps: a depth texture, or for colour formats an RGBA8 texture of encoded depth.
     const gl::Texture& maps() const { return mMaps; }
     DepthFormat mapFormat() const { return mMapFormat; }
@@ -46,7 +53,7 @@ private:
     struct LayerState {
         std::vector<glm::mat4> clipFromWorld;
         int mapSize = 0;
-        std::uint64_t sceneRevision = ~0ull;
+        std::uint64_t castersHash = ~0ull;  // geometry + the casters in the volume
         CullMode cull = CullMode::Back;
         float slope = -1.0f, units = -1.0f;
         bool depthClamp = false;
@@ -57,6 +64,9 @@ private:
     void allocateCubes(int size, int cubes, DepthFormat format);
     const gl::Program& colourProgram(DepthFormat format);
     void setDepthState(const ShadowOptions& options, bool depthClamp) const;
+    // The casters of `light` that can reach its map (indices into scene.items()), and a hash
+    // of them; fills mVisible.
+    std::uint64_t collectCasters(const GpuScene& scene, const ShadowedLight& light);
     void drawCasters(const GpuScene& scene, const ShadowOptions& options, GLsizei instances) const;
 
     bool mLayered;
@@ -69,6 +79,8 @@ private:
     gl::Framebuffer mCubeFramebuffer;                    // layered: the whole cube array
     std::vector<gl::Framebuffer> mCubeFaceFramebuffers;  // fallback: one per cube face
     std::vector<LayerState> mLayers, mCubeLayers;
+    std::vector<std::uint32_t> mVisible;  // reused every frame
+    int mCulled = 0;
 };
 
 }  // namespace gnomon::render

@@ -134,6 +134,33 @@ LightCameraFrame fitCube(const glm::vec3& position, const Aabb& bounds, int mapS
 
 }  // namespace
 
+bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ignoreNear) {
+    if (box.empty()) return true;
+    glm::vec4 clip[8];
+    const auto corners = box.corners();
+    for (int i = 0; i < 8; ++i)
+        clip[i] = clipFromWorld * glm::vec4(corners[size_t(i)], 1.0f);
+    // Plane k: -w <= x, x <= w, -w <= y, y <= w, -w <= z, z <= w.
+    for (int plane = 0; plane < 6; ++plane) {
+        if (ignoreNear && plane == 4) continue;
+        const int axis = plane / 2;
+        const float sign = plane % 2 ? 1.0f : -1.0f;
+        bool allOutside = true;
+        for (int i = 0; i < 8 && allOutside; ++i) {
+            allOutside = sign * clip[i][axis] > clip[i].w;
+        }
+        if (allOutside) return true;
+    }
+    return false;
+}
+
+bool outsideCube(const Aabb& box, const LightCameraFrame& cube) {
+    if (box.empty()) return true;
+    const glm::vec3 eye = glm::vec3(glm::inverse(cube.lightFromWorld)[3]);
+    const glm::vec3 nearest = glm::clamp(eye, box.min, box.max);
+    return glm::length(nearest - eye) > cube.far;
+}
+
 glm::mat4 cubeFaceRotation(int face) {
     static const glm::vec3 kForward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                           {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};

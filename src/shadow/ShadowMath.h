@@ -20,7 +20,7 @@ struct LightCameraFrame {
     glm::mat4 lightFromWorld{1.0f};  // view matrix (Cube: a translation to the light)
     glm::mat4 clipFromLight{1.0f};   // its projection (Cube: 90 degrees, aspect 1)
     FrameKind kind = FrameKind::Perspective;
-    bool orthographic = false;       // kind == Orthographic
+    bool orthographic = false;  // kind == Orthographic
     float near = 1.0f;
     float far = 100.0f;
     // World-space size of one map texel: orthographic: constant; perspective: at distance 1
@@ -55,6 +55,13 @@ glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::v
 // `mapSize` sets texelWorldSize.
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
                                   const Aabb& casterAndReceiverBounds, int mapSize);
+
+// True when no point of `box` can land in the clip volume of `clipFromWorld` (each corner
+// tested against the six planes; conservative: a box straddling a corner may be kept).
+// `ignoreNear`: depth-clamped passes keep casters in front of the near plane.
+bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ignoreNear);
+// True when `box` cannot cast into any face of a cube frame (beyond its far sphere).
+bool outsideCube(const Aabb& box, const LightCameraFrame& cube);
 
 // View-camera matrices for an output of `aspect` (width / height).
 glm::mat4 viewFromWorld(const Camera& camera);

@@ -101,3 +101,41 @@ TEST(DepthPass, AnimationRerendersTheMap) {
 
 }  // namespace
 }  // namespace gnomon::test
+
+namespace gnomon::test {
+namespace {
+
+// SPEC S23-S25: casters outside a light's volume are not drawn into its map, and moving
+// them does not re-render it; moving a caster inside the volume does.
+TEST(Cost, MapsFollowOnlyTheCastersInTheirVolume) {
+    Scene s = builtinScene("course-two-lights");
+    RenderOptions o = s.options;
+    o.width = o.height = 64;
+    sharedRenderer().render(s, o);
+    FrameStats stats = sharedRenderer().lastFrameStats();
+    EXPECT_EQ(stats.shadowedLights, 2);
+    EXPECT_EQ(stats.shadowPasses, 2);
+    // Light 0 at (3, 0, 5) sees the second copy at (-4, 0, -4) behind the first (about 1.4
+    // off its axis, inside its +-2 box); light 1 at (-3, 0, 5) does not: it culls the copy's
+    // three planes. 6 + 6 triangles for light 0, 6 for light 1.
+    EXPECT_EQ(stats.shadowTriangles, 18u);
+    EXPECT_EQ(stats.castersCulled, 3);
+    EXPECT_EQ(stats.mainTriangles, 12u);
+
+    // Move a plane of the far copy: only light 0's map follows it; light 1 keeps its map.
+    s.objects[4].worldFromModel[3] += glm::vec4(0.0f, 0.5f, 0.0f, 0.0f);
+    sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 1);
+
+    // Nothing moves: both maps are kept.
+    sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 0);
+
+    // Move a plane of the near copy: both maps see it, both are redrawn.
+    s.objects[1].worldFromModel[3] += glm::vec4(0.1f, 0.0f, 0.0f, 0.0f);
+    sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 2);
+}
+
+}  // namespace
+}  // namespace gnomon::test

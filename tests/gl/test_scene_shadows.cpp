@@ -52,8 +52,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BuiltinShadows, testing::ValuesIn(builtinCases(
 
 // Every filter and the course light cameras switched to perspective keep the property.
 TEST(Shadows, EachFilterKeepsShadowsWhereGeometrySays) {
-    for (ShadowFilter f : {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf,
-                           ShadowFilter::Poisson}) {
+    for (ShadowFilter f :
+         {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf, ShadowFilter::Poisson}) {
         Scene scene = builtinScene("tutorial-room");
         RenderOptions o = scene.options;
         o.shadow.filter = f;

@@ -336,9 +336,10 @@ void expectCubeHolds(const Light& point, const Aabb& bounds) {
         const int face = 2 * axis + (d[axis] < 0.0f ? 1 : 0);
         const glm::vec4 clip = f.faceClipFromWorld(face) * glm::vec4(c, 1.0f);
         ASSERT_GT(clip.w, 0.0f);
-        for (int k = 0; k < 2; ++k) EXPECT_LE(std::fabs(clip[k] / clip.w), 1.0f + 1e-5f);
-        EXPECT_NEAR(0.5f * clip.z / clip.w + 0.5f,
-                    shadow::cubeStoredDepth(d, f.near, f.far), 1e-5f);
+        for (int k = 0; k < 2; ++k)
+            EXPECT_LE(std::fabs(clip[k] / clip.w), 1.0f + 1e-5f);
+        EXPECT_NEAR(0.5f * clip.z / clip.w + 0.5f, shadow::cubeStoredDepth(d, f.near, f.far),
+                    1e-5f);
     }
 }
 
@@ -368,18 +369,42 @@ TEST(LightCamera, PointFitFromInsideIsACubeHoldingEveryCorner) {
 // Rendering face f through cubeFaceRotation(f) must put direction r at window (s, t).
 TEST(CubeFaces, RenderedFacesMatchTheSamplingConvention) {
     const glm::mat4 clipFromLight = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
-    const glm::vec3 dirs[6] = {{1.0f, 0.3f, -0.6f}, {-1.0f, 0.3f, -0.6f}, {0.3f, 1.0f, -0.6f},
-                               {0.3f, -1.0f, -0.6f}, {0.3f, -0.6f, 1.0f}, {0.3f, -0.6f, -1.0f}};
+    const glm::vec3 dirs[6] = {{1.0f, 0.3f, -0.6f},  {-1.0f, 0.3f, -0.6f}, {0.3f, 1.0f, -0.6f},
+                               {0.3f, -1.0f, -0.6f}, {0.3f, -0.6f, 1.0f},  {0.3f, -0.6f, -1.0f}};
     for (int face = 0; face < 6; ++face) {
         const glm::vec3 r = dirs[face];
         float sc = 0, tc = 0, ma = 0;
         switch (face) {
-            case 0: sc = -r.z; tc = -r.y; ma = r.x; break;
-            case 1: sc = r.z; tc = -r.y; ma = r.x; break;
-            case 2: sc = r.x; tc = r.z; ma = r.y; break;
-            case 3: sc = r.x; tc = -r.z; ma = r.y; break;
-            case 4: sc = r.x; tc = -r.y; ma = r.z; break;
-            case 5: sc = -r.x; tc = -r.y; ma = r.z; break;
+            case 0:
+                sc = -r.z;
+                tc = -r.y;
+                ma = r.x;
+                break;
+            case 1:
+                sc = r.z;
+                tc = -r.y;
+                ma = r.x;
+                break;
+            case 2:
+                sc = r.x;
+                tc = r.z;
+                ma = r.y;
+                break;
+            case 3:
+                sc = r.x;
+                tc = -r.z;
+                ma = r.y;
+                break;
+            case 4:
+                sc = r.x;
+                tc = -r.y;
+                ma = r.z;
+                break;
+            case 5:
+                sc = -r.x;
+                tc = -r.y;
+                ma = r.z;
+                break;
         }
         const float s = 0.5f * (sc / std::fabs(ma) + 1.0f), t = 0.5f * (tc / std::fabs(ma) + 1.0f);
         const glm::vec4 clip = clipFromLight * shadow::cubeFaceRotation(face) * glm::vec4(r, 1.0f);
@@ -399,6 +424,54 @@ TEST(LightCamera, FitWithEmptyBoundsIsInvalid) {
         EXPECT_FALSE(shadow::lightCameraFrame(l, Camera{}, Aabb{}, 1024).valid)
             << "light type " << int(type);
     }
+}
+
+}  // namespace
+}  // namespace gnomon
+
+namespace gnomon {
+namespace {
+
+// Culling casters per light (SPEC S23-S25): a box wholly outside any plane is culled, one
+// inside or straddling is kept; depth-clamped passes keep boxes in front of near.
+TEST(Culling, BoxesOutsideTheClipVolumeAreCulled) {
+    const glm::mat4 clipFromWorld =
+        glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 1.0f, 10.0f) *
+        glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+    auto box = [](glm::vec3 c, float h) {
+        Aabb b;
+        b.extend(c - glm::vec3(h));
+        b.extend(c + glm::vec3(h));
+        return b;
+    };
+    EXPECT_FALSE(shadow::outsideClipVolume(box({0, 0, 0}, 0.5f), clipFromWorld, false));
+    EXPECT_FALSE(
+        shadow::outsideClipVolume(box({1.2f, 0, 0}, 0.5f), clipFromWorld, false));  // straddles
+    EXPECT_TRUE(shadow::outsideClipVolume(box({3, 0, 0}, 0.5f), clipFromWorld, false));
+    EXPECT_TRUE(shadow::outsideClipVolume(box({0, -3, 0}, 0.5f), clipFromWorld, false));
+    EXPECT_TRUE(
+        shadow::outsideClipVolume(box({0, 0, -8}, 0.5f), clipFromWorld, false));  // beyond far
+    // In front of the near plane (between the camera and near): culled unless depth clamps.
+    EXPECT_TRUE(shadow::outsideClipVolume(box({0, 0, 4.6f}, 0.2f), clipFromWorld, false));
+    EXPECT_FALSE(shadow::outsideClipVolume(box({0, 0, 4.6f}, 0.2f), clipFromWorld, true));
+    EXPECT_TRUE(shadow::outsideClipVolume(Aabb{}, clipFromWorld, false));
+}
+
+TEST(Culling, CubesCullOnlyBeyondTheirFarSphere) {
+    Light point;
+    point.type = LightType::Point;
+    point.position = {0.0f, 0.0f, 0.0f};
+    Aabb bounds;
+    bounds.extend(glm::vec3(-3.0f));
+    bounds.extend(glm::vec3(3.0f));
+    const auto cube = shadow::lightCameraFrame(point, Camera{}, bounds, 256);
+    Aabb near, far;
+    near.extend(glm::vec3(-0.1f, 2.0f, 0.0f));
+    near.extend(glm::vec3(0.1f, 2.5f, 0.1f));
+    far.extend(glm::vec3(50.0f));
+    far.extend(glm::vec3(51.0f));
+    EXPECT_FALSE(shadow::outsideCube(near, cube));
+    EXPECT_TRUE(shadow::outsideCube(far, cube));
 }
 
 }  // namespace
