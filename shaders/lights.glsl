@@ -12,13 +12,14 @@ const int kArea = 3;
 const float kFramePerspective = 0.0;
 const float kFrameOrthographic = 1.0;
 const float kFrameCube = 2.0;
+const float kFrameCascaded = 3.0;  // wsPosition: x first cascade record, y count, z blend
 
 struct LightData {
     mat4 textureFromWorld;  // world -> light clip -> [0,1] map coordinates and depth
     vec4 vsPosition;        // xyz, w = type
     vec4 vsDirection;       // xyz towards where the light goes, w = on (0/1)
     vec4 colour;            // rgb = colour x intensity, w = shadow layer (-1: no shadow)
-    vec4 attenuation;       // c0, c1, c2, cos(outer cone)
+    vec4 attenuation;       // c0, c1, c2, cos(outer cone); cascade records: x = far split
     vec4 shadow;            // x cos(inner cone), y texel world size, z frame kind, w uv scale
     vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv,
                             // w cube far plane

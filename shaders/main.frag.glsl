@@ -69,7 +69,7 @@ void main() {
 #ifndef SHADOWS_OFF
         if (receives && light.colour.w >= 0.0) {
             vec3 wsToLight = mat3(uWorldFromView) * vsToLight;
-            visibility = shadowVisibility(light, vIn.wsPosition, wsN, wsToLight);
+            visibility = shadowVisibility(light, vIn.wsPosition, wsN, wsToLight, -vIn.vsPosition.z);
         }
 #endif
         if (unlit) {
@@ -87,5 +87,11 @@ void main() {
         lit += visibility * contribution;
 #endif
     }
-    fragColour = vec4(lit * factor, 1.0);
+    vec3 colour = lit * factor;
+#ifdef DEBUG_CASCADES
+    const vec3 kTints[4] = vec3[](vec3(1, 0.3, 0.3), vec3(0.3, 1, 0.3), vec3(0.3, 0.5, 1),
+                                  vec3(1, 1, 0.3));
+    if (gCascade >= 0) colour = mix(colour, kTints[gCascade], 0.35);
+#endif
+    fragColour = vec4(colour, 1.0);
 }

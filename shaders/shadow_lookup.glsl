@@ -119,9 +119,8 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
 #endif
 }
 
-// Visibility of a world point for one light, 0 (shadowed) .. 1 (lit).
-float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
-    if (light.shadow.z == kFrameCube) return cubeVisibility(light, wsPosition, wsNormal, wsToLight);
+// One single-frustum map: orthographic or perspective, a light's own or one cascade's.
+float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
     float layer = light.colour.w;
     float uvScale = light.shadow.w;
     float texelUv = light.shadowBias.z;
@@ -165,4 +164,43 @@ float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsT
 #else
     return compareDepth(clamp(uv, lo, hi), layer, reference);
 #endif
+}
+
+// Cascade of the last lookup, for --debug-view cascades (-1: none).
+int gCascade = -1;
+
+// Cascaded directional light (SPEC S22): the first cascade whose far split lies beyond the
+// fragment's view depth; within the last `blend` fraction of a cascade, a mix with the next
+// one hides the seam. Beyond the last cascade nothing is shadowed.
+float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
+                        float vsDepth) {
+    int first = int(light.wsPosition.x), count = int(light.wsPosition.y);
+    float blend = light.wsPosition.z;
+    float previousSplit = 0.0;
+    for (int k = 0; k < count; ++k) {
+        LightData cascade = lights[first + k];
+        float split = cascade.attenuation.x;
+        if (vsDepth <= split) {
+            gCascade = k;
+            float v = mapVisibility(cascade, wsPosition, wsNormal, wsToLight);
+            float bandStart = split - blend * (split - previousSplit);
+            if (k + 1 < count && vsDepth > bandStart) {
+                float t = (vsDepth - bandStart) / max(split - bandStart, 1e-6);
+                v = mix(v, mapVisibility(lights[first + k + 1], wsPosition, wsNormal, wsToLight), t);
+            }
+            return v;
+        }
+        previousSplit = split;
+    }
+    return 1.0;
+}
+
+// Visibility of a world point for one light, 0 (shadowed) .. 1 (lit).
+float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
+                       float vsDepth) {
+    if (light.shadow.z == kFrameCube) return cubeVisibility(light, wsPosition, wsNormal, wsToLight);
+    if (light.shadow.z == kFrameCascaded) {
+        return cascadeVisibility(light, wsPosition, wsNormal, wsToLight, vsDepth);
+    }
+    return mapVisibility(light, wsPosition, wsNormal, wsToLight);
 }

@@ -72,6 +72,18 @@ void RenderFlags::add(CLI::App& a) {
     a.add_option(
         "--pcf-size", pcfSize,
         "kernel width in texels for pcf and poisson, odd 1..9 (default " + str(s.pcfSize) + ")");
+    a.add_option("--cascades", cascades,
+                 "fitted directional lights: 1..4 cascaded maps along the view (default " +
+                     str(s.cascades) + ")");
+    a.add_option(
+        "--cascade-lambda", cascadeLambda,
+        "cascade splits: 0 uniform .. 1 logarithmic (default " + str(s.cascadeLambda) + ")");
+    a.add_option("--cascade-blend", cascadeBlend,
+                 "fraction of each cascade blended into the next, 0..0.5 (default " +
+                     str(s.cascadeBlend) + ")");
+    a.add_option("--debug-view", debugView,
+                 "none|cascades: tint each pixel by the cascade its shadow came from "
+                 "(default none)");
     a.add_option("--depth-format", depthFormat,
                  "r8|rgba8-packed-256|rgba8-packed-255|depth16|depth24|depth32f: shadow map "
                  "storage (default depth32f; point-light cubes use depth32f for colour formats)");
@@ -126,6 +138,12 @@ void RenderFlags::apply(RenderOptions& o) const {
         o.shadow.filter =
             parseEnum("--filter", filter, parseShadowFilter, "none, hw2x2, pcf, poisson");
     if (given("--pcf-size")) o.shadow.pcfSize = pcfSize;
+    if (given("--cascades")) o.shadow.cascades = cascades;
+    if (given("--cascade-lambda")) o.shadow.cascadeLambda = cascadeLambda;
+    if (given("--cascade-blend")) o.shadow.cascadeBlend = cascadeBlend;
+    if (given("--debug-view")) {
+        o.debugView = parseEnum("--debug-view", debugView, parseDebugView, "none, cascades");
+    }
     if (given("--depth-format")) {
         o.shadow.depthFormat =
             parseEnum("--depth-format", depthFormat, parseDepthFormat,

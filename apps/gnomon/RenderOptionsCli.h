@@ -11,9 +11,11 @@
 namespace gnomon::cli {
 
 struct RenderFlags {
-    std::string preset, size, shadows, outside, cull, filter, shadowed, depthFormat, mapFilter;
-    int lightOnly = -1, mapSize = 0, pcfSize = 3;
+    std::string preset, debugView, size, shadows, outside, cull, filter, shadowed, depthFormat,
+        mapFilter;
+    int lightOnly = -1, mapSize = 0, pcfSize = 3, cascades = 1;
     double time = 0.0;
+    float cascadeLambda = 0, cascadeBlend = 0;
     float biasConstant = 0, biasDepthAware = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0,
           shadowFactor = 0;
     CLI::App* app = nullptr;

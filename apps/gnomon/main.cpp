@@ -49,7 +49,8 @@ int runRender(const RenderArgs& args, bool verbose) {
         }
         for (const gnomon::ShadowMapImage& map : renderer.shadowMaps()) {
             const std::string path =
-                args.shadowMaps + "/light-" + std::to_string(map.light) + ".png";
+                args.shadowMaps + "/light-" + std::to_string(map.light) +
+                (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") + ".png";
             gnomon::writePng(path, map.depth);
             if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
         }
@@ -57,10 +58,10 @@ int runRender(const RenderArgs& args, bool verbose) {
     if (verbose) {
         const gnomon::FrameStats stats = renderer.lastFrameStats();
         std::fprintf(stderr,
-                     "gnomon: %d shadowed light(s), %d shadow pass(es) drawing %llu triangles "
+                     "gnomon: %d shadow map(s), %d shadow pass(es) drawing %llu triangles "
                      "(%d caster draws culled), main pass %llu triangles, %.1f MiB of shadow "
                      "maps\n",
-                     stats.shadowedLights, stats.shadowPasses,
+                     stats.shadowMaps, stats.shadowPasses,
                      (unsigned long long)stats.shadowTriangles, stats.castersCulled,
                      (unsigned long long)stats.mainTriangles,
                      double(stats.shadowMapBytes) / (1024.0 * 1024.0));
@@ -91,7 +92,8 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--out", render.out, "output PNG path (written atomically)")->required();
     renderCmd->add_option(
         "--shadow-maps", render.shadowMaps,
-        "also write each light's shadow map as DIR/light-N.png (16-bit grey, darker = nearer)");
+        "also write each light's shadow map as DIR/light-N.png (cascades: light-N-cascade-K.png; "
+        "cubes: six faces side by side; 16-bit grey, darker = nearer)");
     render.flags.add(*renderCmd);
 
     try {

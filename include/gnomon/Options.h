@@ -66,9 +66,18 @@ struct ShadowOptions {
     CullMode cull = CullMode::Back;           // faces culled in the depth pass
     ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
     int pcfSize = 3;                          // kernel width for Pcf, odd, 1..9
-    int mapSize = 0;  // texels per side for every light, 0 = each light's own
+    int mapSize = 0;              // texels per side for every light, 0 = each light's own
+    int cascades = 1;             // directional lights (fitted): 1..4 maps along the view
+    float cascadeLambda = 0.75f;  // splits: 0 uniform .. 1 logarithmic (SPEC S22)
+    float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
     MapFilter mapFilter = MapFilter::Nearest;         // colour formats: filtering of stored depth
+};
+
+// Diagnostic renderings (DESIGN: debug views are features).
+enum class DebugView {
+    None,
+    Cascades,  // tint each pixel by the cascade its shadow came from (red, green, blue, yellow)
 };
 
 struct ShadingOptions {
@@ -82,6 +91,7 @@ struct RenderOptions {
     double time = 0.0;     // seconds: poses animated scenes (book triangle: 40 deg/s)
     int lightOnly = -1;    // >= 0: only this light (index) is on; -1: the scene's own switches
     ShadowOptions shadow;  // shadow technique
+    DebugView debugView = DebugView::None;  // diagnostic tint of the picture
     ShadingOptions shading;
 
     // Empty when valid; otherwise one sentence per problem, naming the option.
@@ -96,6 +106,7 @@ const char* toString(ShadowFilter v);
 const char* toString(DepthFormat v);
 const char* toString(MapFilter v);
 const char* toString(Preset v);
+const char* toString(DebugView v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
 std::optional<CullMode> parseCullMode(const std::string& s);
@@ -103,6 +114,7 @@ std::optional<ShadowFilter> parseShadowFilter(const std::string& s);
 std::optional<DepthFormat> parseDepthFormat(const std::string& s);
 std::optional<MapFilter> parseMapFilter(const std::string& s);
 std::optional<Preset> parsePreset(const std::string& s);
+std::optional<DebugView> parseDebugView(const std::string& s);
 // True for the formats stored in colour channels (r8 and the RGBA8 packings).
 bool isColourFormat(DepthFormat v);
 

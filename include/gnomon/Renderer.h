@@ -21,15 +21,16 @@ struct ContextOptions {
 
 // One light's shadow map read back from the GPU (SPEC S26: grey, darker = nearer).
 struct ShadowMapImage {
-    int light = 0;  // index into Scene::lights
-    Image16 depth;  // stored depth 0..1 scaled to 0..65535
+    int light = 0;     // index into Scene::lights
+    int cascade = -1;  // cascade index for cascaded directional lights, else -1
+    Image16 depth;     // stored depth 0..1 scaled to 0..65535
 };
 
 // What a frame cost (SPEC S25): N shadowed lights cost up to N shadow renderings plus the
 // main one, and N maps of memory; maps whose light and casters did not change are kept.
 struct FrameStats {
     int shadowPasses = 0;               // shadow maps rendered this frame (kept ones: 0)
-    int shadowedLights = 0;             // lights with a map this frame
+    int shadowMaps = 0;                 // maps in use (a cascaded light: one per cascade)
     std::size_t shadowMapBytes = 0;     // GPU memory held by shadow maps
     std::uint64_t shadowTriangles = 0;  // triangles submitted to shadow maps (cubes: x 6)
     std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass

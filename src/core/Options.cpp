@@ -47,6 +47,9 @@ const std::pair<const char*, MapFilter> kMapFilters[] = {{"nearest", MapFilter::
 const std::pair<const char*, Preset> kPresets[] = {{"default", Preset::Default},
                                                    {"textbook", Preset::Textbook}};
 
+const std::pair<const char*, DebugView> kDebugViews[] = {{"none", DebugView::None},
+                                                         {"cascades", DebugView::Cascades}};
+
 bool finite(float v) {
     return std::isfinite(v);
 }
@@ -95,6 +98,12 @@ const char* toString(Preset v) {
 std::optional<Preset> parsePreset(const std::string& s) {
     return lookup(s, kPresets);
 }
+const char* toString(DebugView v) {
+    return nameOf(v, kDebugViews);
+}
+std::optional<DebugView> parseDebugView(const std::string& s) {
+    return lookup(s, kDebugViews);
+}
 bool isColourFormat(DepthFormat v) {
     return v == DepthFormat::R8 || v == DepthFormat::Rgba8Packed256 ||
            v == DepthFormat::Rgba8Packed255;
@@ -116,6 +125,12 @@ std::vector<std::string> RenderOptions::validate() const {
              std::to_string(s.biasConstant));
     need(finite(s.biasDepthAware) && s.biasDepthAware >= 0.0f && s.biasDepthAware <= 1000.0f,
          "bias-depth-aware must be in [0, 1000] steps, got " + std::to_string(s.biasDepthAware));
+    need(s.cascades >= 1 && s.cascades <= 4,
+         "cascades must be in 1..4, got " + std::to_string(s.cascades));
+    need(finite(s.cascadeLambda) && s.cascadeLambda >= 0.0f && s.cascadeLambda <= 1.0f,
+         "cascade-lambda must be in [0, 1], got " + std::to_string(s.cascadeLambda));
+    need(finite(s.cascadeBlend) && s.cascadeBlend >= 0.0f && s.cascadeBlend <= 0.5f,
+         "cascade-blend must be in [0, 0.5], got " + std::to_string(s.cascadeBlend));
     need(finite(s.biasSlope) && s.biasSlope >= 0.0f && s.biasSlope <= 100.0f,
          "bias-slope must be in [0, 100], got " + std::to_string(s.biasSlope));
     need(finite(s.biasUnits) && s.biasUnits >= 0.0f && s.biasUnits <= 1.0e6f,

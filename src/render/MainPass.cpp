@@ -62,6 +62,7 @@ const gl::Program& MainPass::program(const RenderOptions& options) {
             break;
     }
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
+    if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
     if (options.shading.shadowedRule == ShadowedRule::Factor) {
         defines.push_back("SHADOWED_FACTOR");
     }
@@ -136,7 +137,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     glUniform3fv(3, 1, &in.ambient[0]);
     glUniform1f(4, options.shading.shadowFactor);
     glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
-    glUniform1i(6, GLint(lights.size()));
+    glUniform1i(6, GLint(in.lightCount));
     // Spacing of stored depths per kind of map; -1 asks the shader for a float ulp.
     auto spacing = [](DepthFormat f) {
         return f == DepthFormat::Depth32F ? -1.0f : shadow::storedDepthSpacing(f, 0.5f);

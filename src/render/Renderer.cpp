@@ -51,7 +51,8 @@ struct Renderer::Impl {
     gl::Texture colour, depth;
     gl::Framebuffer target;
     std::vector<render::ShadowedLight> shadowed;
-    std::vector<render::GpuLight> lights;
+    std::vector<render::GpuLight> lights;          // scene lights, then cascade records
+    std::vector<render::GpuLight> cascadeRecords;  // reused every frame
     FrameStats stats;
 
     explicit Impl(const ContextOptions& o) : context(o.debug || kDebugBuild, o.verbose) {
@@ -73,6 +74,8 @@ struct Renderer::Impl {
     void planLights(const Scene& s, const RenderOptions& options, const glm::mat4& viewFromWorld) {
         shadowed.clear();
         lights.clear();
+        cascadeRecords.clear();
+        const float aspect = float(options.width) / float(options.height);
         for (size_t i = 0; i < s.lights.size(); ++i) {
             const Light& light = s.lights[i];
             render::GpuLight g;
@@ -90,34 +93,80 @@ struct Renderer::Impl {
             g.shadow.x = std::cos(glm::radians(light.innerConeDegrees));
             const int mapSize =
                 options.shadow.mapSize > 0 ? options.shadow.mapSize : light.shadowMapSize;
-            if (options.shadow.enabled && light.castsShadows && g.vsDirection.w > 0.5f) {
+            const bool shadowing =
+                options.shadow.enabled && light.castsShadows && g.vsDirection.w > 0.5f;
+            g.shadowBias.x = options.shadow.biasConstant;
+            g.shadowBias.y = options.shadow.normalOffset;
+            if (shadowing && light.type == LightType::Directional &&
+                light.shadowCamera.policy == ShadowCameraPolicy::Fit &&
+                options.shadow.cascades > 1 && !scene.bounds().empty()) {
+                planCascades(s, options, i, direction, mapSize, aspect, g);
+            } else if (shadowing) {
                 const shadow::LightCameraFrame frame =
                     shadow::lightCameraFrame(light, s.camera, scene.bounds(), mapSize);
                 if (frame.valid) {
-                    g.shadow.y = frame.texelWorldSize;
-                    g.shadow.z = float(int(frame.kind == shadow::FrameKind::Cube           ? 2
-                                           : frame.kind == shadow::FrameKind::Orthographic ? 1
-                                                                                           : 0));
+                    fillShadowRecord(g, frame);
                     if (frame.kind == shadow::FrameKind::Cube) {
                         g.wsPosition = glm::vec4(light.position, frame.near);
                         g.shadowBias.w = frame.far;
-                    } else {
-                        g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
                     }
-                    g.shadowBias.x = options.shadow.biasConstant;
-                    g.shadowBias.y = options.shadow.normalOffset;
                     shadowed.push_back({int(i), mapSize, frame,
-                                        light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0});
+                                        light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
+                                        int(i), -1});
                 }
             }
             lights.push_back(g);
+        }
+        // Cascade records follow the scene's lights; their light records point at them.
+        lights.insert(lights.end(), cascadeRecords.begin(), cascadeRecords.end());
+    }
+
+    // The map-related fields of a light record for a single-frustum or cube frame.
+    static void fillShadowRecord(render::GpuLight& g, const shadow::LightCameraFrame& frame) {
+        g.shadow.y = frame.texelWorldSize;
+        g.shadow.z = frame.kind == shadow::FrameKind::Cube           ? 2.0f
+                     : frame.kind == shadow::FrameKind::Orthographic ? 1.0f
+                                                                     : 0.0f;
+        if (frame.kind != shadow::FrameKind::Cube) {
+            g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
+        }
+    }
+
+    // SPEC S22: `cascades` stabilised maps along the view, from the camera's near plane to
+    // where the scene ends (or the camera's far plane).
+    void planCascades(const Scene& s, const RenderOptions& options, size_t lightIndex,
+                      const glm::vec3& direction, int mapSize, float aspect, render::GpuLight& g) {
+        const Camera& cam = s.camera;
+        const glm::vec3 forward = glm::normalize(cam.centre - cam.eye);
+        float farthest = cam.near * 2.0f;
+        for (const glm::vec3& c : scene.bounds().corners()) {
+            farthest = std::max(farthest, glm::dot(c - cam.eye, forward));
+        }
+        const float far = std::min(cam.far, farthest);
+        const int count = options.shadow.cascades;
+        const std::vector<float> splits =
+            shadow::cascadeSplits(cam.near, far, count, options.shadow.cascadeLambda);
+        const int first = int(s.lights.size() + cascadeRecords.size());
+        g.shadow.z = 3.0f;
+        g.colour.w = 0.0f;  // has shadows; the maps are the cascade records'
+        g.wsPosition = glm::vec4(float(first), float(count), options.shadow.cascadeBlend, 0.0f);
+        for (int k = 0; k < count; ++k) {
+            const shadow::LightCameraFrame frame =
+                shadow::cascadeFrame(direction, cam, aspect, splits[size_t(k)],
+                                     splits[size_t(k) + 1], scene.bounds(), mapSize);
+            render::GpuLight c = g;
+            fillShadowRecord(c, frame);
+            c.attenuation.x = splits[size_t(k) + 1];
+            c.wsPosition = glm::vec4(0.0f);
+            cascadeRecords.push_back(c);
+            shadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k});
         }
     }
 
     // After the shadow pass placed each map: layer, and the map's share of its array.
     void finishLights() {
         for (const render::ShadowedLight& sl : shadowed) {
-            render::GpuLight& g = lights[size_t(sl.light)];
+            render::GpuLight& g = lights[size_t(sl.record)];
             const bool cube = sl.frame.kind == shadow::FrameKind::Cube;
             const int arraySize = cube ? shadowPass.cubes().width() : shadowPass.mapArraySize();
             g.colour.w = float(sl.layer);
@@ -146,6 +195,12 @@ struct Renderer::Impl {
         const float aspect = float(options.width) / float(options.height);
         const glm::mat4 viewFromWorld = shadow::viewFromWorld(s.camera);
         planLights(s, options, viewFromWorld);
+        if (lights.size() > std::size_t(mainPass.maxLights())) {
+            throw Error(ErrorKind::InvalidInput,
+                        "scene '" + s.name + "' needs " + std::to_string(lights.size()) +
+                            " light records with its cascades; this OpenGL driver allows " +
+                            std::to_string(mainPass.maxLights()));
+        }
 
         stats = {};
         const render::ShadowPassStats passStats =
@@ -153,7 +208,7 @@ struct Renderer::Impl {
         stats.shadowPasses = passStats.rendered;
         stats.shadowTriangles = passStats.triangles;
         stats.castersCulled = passStats.culled;
-        stats.shadowedLights = int(shadowed.size());
+        stats.shadowMaps = int(shadowed.size());
         for (const render::DrawItem& item : scene.items())
             stats.mainTriangles += item.indexCount / 3;
         stats.shadowMapBytes = shadowed.empty() ? 0 : shadowPass.bytes();
@@ -171,6 +226,7 @@ struct Renderer::Impl {
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
         in.ambient = s.ambient;
         in.lights = &lights;
+        in.lightCount = int(s.lights.size());
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
         for (const render::ShadowedLight& sl : shadowed) {
@@ -209,7 +265,7 @@ std::vector<ShadowMapImage> Renderer::shadowMaps() {
     mImpl->context.makeCurrent();
     std::vector<ShadowMapImage> out;
     for (const render::ShadowedLight& sl : mImpl->shadowed) {
-        out.push_back({sl.light, mImpl->shadowPass.readBack(sl)});
+        out.push_back({sl.light, sl.cascade, mImpl->shadowPass.readBack(sl)});
     }
     return out;
 }

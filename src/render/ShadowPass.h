@@ -23,6 +23,8 @@ struct ShadowedLight {
     shadow::LightCameraFrame frame;
     bool depthClamp = false;  // fitted cameras: casters in front of near still cast
     int layer = 0;            // 2D array layer, or cube index in the cube-map array
+    int record = 0;           // the main pass light record this map belongs to
+    int cascade = -1;         // cascade index of a directional light, -1 if not cascaded
 };
 
 struct ShadowPassStats {

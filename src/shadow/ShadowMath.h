@@ -3,6 +3,8 @@
 // bFromA: `lightFromWorld` takes world points into the light camera's view space.
 #pragma once
 
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "core/Aabb.h"
@@ -62,6 +64,20 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
 bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ignoreNear);
 // True when `box` cannot cast into any face of a cube frame (beyond its far sphere).
 bool outsideCube(const Aabb& box, const LightCameraFrame& cube);
+
+// Cascade split distances along the view direction (SPEC S22): count + 1 values from near to
+// far, each the blend lambda * log + (1 - lambda) * uniform split ("practical split scheme",
+// Zhang et al. 2006, Parallel-Split Shadow Maps).
+std::vector<float> cascadeSplits(float near, float far, int count, float lambda);
+
+// A stabilised orthographic camera for the view frustum slice [splitNear, splitFar] of a
+// directional light: it encloses the slice's bounding sphere (so its size does not change
+// as the view turns) and its origin moves in whole map texels (so the shadow does not
+// shimmer as the view moves); depth reaches back to `sceneBounds` so every caster between
+// the light and the slice is in the map.
+LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& view, float aspect,
+                              float splitNear, float splitFar, const Aabb& sceneBounds,
+                              int mapSize);
 
 // View-camera matrices for an output of `aspect` (width / height).
 glm::mat4 viewFromWorld(const Camera& camera);

@@ -113,7 +113,7 @@ TEST(Cost, MapsFollowOnlyTheCastersInTheirVolume) {
     o.width = o.height = 64;
     sharedRenderer().render(s, o);
     FrameStats stats = sharedRenderer().lastFrameStats();
-    EXPECT_EQ(stats.shadowedLights, 2);
+    EXPECT_EQ(stats.shadowMaps, 2);
     EXPECT_EQ(stats.shadowPasses, 2);
     // Light 0 at (3, 0, 5) sees the second copy at (-4, 0, -4) behind the first (about 1.4
     // off its axis, inside its +-2 box); light 1 at (-3, 0, 5) does not: it culls the copy's
