@@ -40,8 +40,7 @@ Texture Texture::array2D(const std::string& label, GLenum internalFormat, int wi
     return Texture(n, internalFormat, width, height, layers);
 }
 
-Texture Texture::cubeArray(const std::string& label, GLenum internalFormat, int size,
-                           int cubes) {
+Texture Texture::cubeArray(const std::string& label, GLenum internalFormat, int size, int cubes) {
     GLuint n = 0;
     glCreateTextures(GL_TEXTURE_CUBE_MAP_ARRAY, 1, &n);
     glTextureStorage3D(n, 1, internalFormat, size, size, 6 * cubes);

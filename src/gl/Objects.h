@@ -60,8 +60,7 @@ public:
     static Texture array2D(const std::string& label, GLenum internalFormat, int width, int height,
                            int layers);
     // Cube-map array of `cubes` cubes (6 layers each) of size x size, one mip level.
-    static Texture cubeArray(const std::string& label, GLenum internalFormat, int size,
-                             int cubes);
+    static Texture cubeArray(const std::string& label, GLenum internalFormat, int size, int cubes);
     // 2D texture, one mip level.
     static Texture plain2D(const std::string& label, GLenum internalFormat, int width, int height);
     int width() const { return mWidth; }

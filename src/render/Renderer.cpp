@@ -2,6 +2,7 @@
 // camera, render the shadow maps, render the main pass into an offscreen target, read back.
 #include "gnomon/Renderer.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gl/Context.h"
@@ -242,13 +243,9 @@ struct Renderer::Impl {
                      image.pixels.data());
         // GL rows run bottom-up; images top-down.
         const size_t row = size_t(options.width) * 4;
-        std::vector<std::uint8_t> tmp(row);
         for (int y = 0; y < options.height / 2; ++y) {
-            std::uint8_t* a = image.at(0, y);
-            std::uint8_t* b = image.at(0, options.height - 1 - y);
-            std::copy(a, a + row, tmp.data());
-            std::copy(b, b + row, a);
-            std::copy(tmp.data(), tmp.data() + row, b);
+            std::swap_ranges(image.at(0, y), image.at(0, y) + row,
+                             image.at(0, options.height - 1 - y));
         }
         return image;
     }

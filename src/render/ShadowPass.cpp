@@ -209,21 +209,21 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
                         format};
         if (cube) {
             for (int face = 0; face < 6; ++face) {
-                want.clipFromWorld.push_back(light.frame.faceClipFromWorld(face));
+                want.clipFromWorld[size_t(face)] = light.frame.faceClipFromWorld(face);
             }
         } else {
-            want.clipFromWorld.push_back(light.frame.clipFromWorld());
+            want.clipFromWorld[0] = light.frame.clipFromWorld();
         }
         LayerState& have = (cube ? mCubeLayers : mLayers)[size_t(light.layer)];
         if (have == want) continue;  // nothing changed: keep the map
-        have = std::move(want);
+        have = want;
         if (!any) {
             scene.bind();
             any = true;
         }
         setDepthState(options, light.depthClamp);
         glViewport(0, 0, light.mapSize, light.mapSize);
-        const std::vector<glm::mat4>& m = have.clipFromWorld;
+        const std::array<glm::mat4, 6>& m = have.clipFromWorld;
         if (!cube) {
             const bool colour = isColourFormat(format);
             glUseProgram(colour ? colourProgram(format).id() : mProgram.id());

@@ -7,6 +7,7 @@
 // only when its camera, the depth state or a caster inside its volume changed.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "gl/Objects.h"
@@ -53,7 +54,7 @@ public:
 
 private:
     struct LayerState {
-        std::vector<glm::mat4> clipFromWorld;
+        std::array<glm::mat4, 6> clipFromWorld{};  // one (2D map) or six (cube) used
         int mapSize = 0;
         std::uint64_t castersHash = ~0ull;  // geometry + the casters in the volume
         CullMode cull = CullMode::Back;

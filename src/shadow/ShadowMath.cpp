@@ -195,11 +195,12 @@ LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& vie
     const float farHalf2 = (tanX * tanX + tanY * tanY) * splitFar * splitFar;
     const float length = splitFar - splitNear;
     // Distance t from the near cap where both caps' rims are equally far.
-    const float t = std::clamp((length * length + farHalf2 - nearHalf2) / (2.0f * length), 0.0f,
-                               length);
+    const float t =
+        std::clamp((length * length + farHalf2 - nearHalf2) / (2.0f * length), 0.0f, length);
     const glm::vec3 centre = nearCentre + (farCentre - nearCentre) * (t / length);
     float radius = 0.0f;
-    for (const glm::vec3& c : corners) radius = std::max(radius, glm::length(c - centre));
+    for (const glm::vec3& c : corners)
+        radius = std::max(radius, glm::length(c - centre));
     radius = std::ceil(radius * 16.0f) / 16.0f;  // a steady size, not float noise
 
     LightCameraFrame f;
@@ -214,10 +215,10 @@ LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& vie
     lsCentre.y = std::floor(lsCentre.y / texel) * texel;
     // Depth: from the sphere's far side back to the farthest scene corner towards the light.
     const Aabb lsScene = sceneBounds.transformed(rotation);
-    const float zFar = lsCentre.z - radius;                          // farthest from the light
+    const float zFar = lsCentre.z - radius;                            // farthest from the light
     const float zNear = std::max(lsCentre.z + radius, lsScene.max.z);  // nearest to the light
-    f.lightFromWorld = glm::translate(glm::mat4(1.0f), -glm::vec3(lsCentre.x, lsCentre.y, 0.0f)) *
-                       rotation;
+    f.lightFromWorld =
+        glm::translate(glm::mat4(1.0f), -glm::vec3(lsCentre.x, lsCentre.y, 0.0f)) * rotation;
     f.near = -zNear - 1e-3f * radius;
     f.far = -zFar + 1e-3f * radius;
     f.clipFromLight = glm::ortho(-radius, radius, -radius, radius, f.near, f.far);

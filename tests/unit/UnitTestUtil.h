@@ -31,6 +31,13 @@ inline ::testing::AssertionResult matNear(const char* actualExpr, const char* ex
     return ::testing::AssertionSuccess();
 }
 
+// Component-wise comparison of two vectors.
+inline void expectVec(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
 inline bool allFinite(const glm::mat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)

@@ -9,16 +9,11 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "UnitTestUtil.h"
 #include "core/Aabb.h"
 
 namespace gnomon {
 namespace {
-
-void expectVec(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
 
 Aabb box(const glm::vec3& lo, const glm::vec3& hi) {
     Aabb b;
@@ -32,8 +27,8 @@ TEST(Aabb, DefaultIsEmptyAndOnePointIsNot) {
     EXPECT_TRUE(b.empty());
     b.extend(glm::vec3(1.0f, -2.0f, 3.0f));
     EXPECT_FALSE(b.empty());
-    expectVec(b.min, {1.0f, -2.0f, 3.0f}, 0.0f);
-    expectVec(b.max, {1.0f, -2.0f, 3.0f}, 0.0f);
+    test::expectVec(b.min, {1.0f, -2.0f, 3.0f}, 0.0f);
+    test::expectVec(b.max, {1.0f, -2.0f, 3.0f}, 0.0f);
     EXPECT_FLOAT_EQ(b.radius(), 0.0f);
 }
 
@@ -42,10 +37,10 @@ TEST(Aabb, ExtendByPointsTakesComponentwiseMinAndMax) {
     b.extend(glm::vec3(1.0f, 5.0f, -1.0f));
     b.extend(glm::vec3(-2.0f, 3.0f, 4.0f));
     b.extend(glm::vec3(0.0f, 7.0f, 0.0f));  // inside on x and z, grows y
-    expectVec(b.min, {-2.0f, 3.0f, -1.0f}, 0.0f);
-    expectVec(b.max, {1.0f, 7.0f, 4.0f}, 0.0f);
-    expectVec(b.centre(), {-0.5f, 5.0f, 1.5f});
-    expectVec(b.extent(), {3.0f, 4.0f, 5.0f});
+    test::expectVec(b.min, {-2.0f, 3.0f, -1.0f}, 0.0f);
+    test::expectVec(b.max, {1.0f, 7.0f, 4.0f}, 0.0f);
+    test::expectVec(b.centre(), {-0.5f, 5.0f, 1.5f});
+    test::expectVec(b.extent(), {3.0f, 4.0f, 5.0f});
     // Half the diagonal: 0.5 * sqrt(9 + 16 + 25) = 3.5355339.
     EXPECT_NEAR(b.radius(), 3.5355339f, 1e-6f);
 }
@@ -53,8 +48,8 @@ TEST(Aabb, ExtendByPointsTakesComponentwiseMinAndMax) {
 TEST(Aabb, ExtendByEmptyBoxChangesNothing) {
     Aabb b = box({0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f});
     b.extend(Aabb{});
-    expectVec(b.min, glm::vec3(0.0f), 0.0f);
-    expectVec(b.max, glm::vec3(1.0f), 0.0f);
+    test::expectVec(b.min, glm::vec3(0.0f), 0.0f);
+    test::expectVec(b.max, glm::vec3(1.0f), 0.0f);
 
     Aabb e;
     e.extend(Aabb{});
@@ -64,13 +59,13 @@ TEST(Aabb, ExtendByEmptyBoxChangesNothing) {
 TEST(Aabb, ExtendByBoxIsTheUnion) {
     Aabb b = box({0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f});
     b.extend(box({-1.0f, 0.5f, 2.0f}, {0.5f, 3.0f, 2.5f}));
-    expectVec(b.min, {-1.0f, 0.0f, 0.0f}, 0.0f);
-    expectVec(b.max, {1.0f, 3.0f, 2.5f}, 0.0f);
+    test::expectVec(b.min, {-1.0f, 0.0f, 0.0f}, 0.0f);
+    test::expectVec(b.max, {1.0f, 3.0f, 2.5f}, 0.0f);
 
     Aabb e;  // an empty box extended by a box becomes that box
     e.extend(box({2.0f, 2.0f, 2.0f}, {3.0f, 4.0f, 5.0f}));
-    expectVec(e.min, {2.0f, 2.0f, 2.0f}, 0.0f);
-    expectVec(e.max, {3.0f, 4.0f, 5.0f}, 0.0f);
+    test::expectVec(e.min, {2.0f, 2.0f, 2.0f}, 0.0f);
+    test::expectVec(e.max, {3.0f, 4.0f, 5.0f}, 0.0f);
 }
 
 TEST(Aabb, EmptyWhenAnyAxisIsInverted) {
@@ -92,8 +87,8 @@ TEST(Aabb, CornersAreTheEightCombinations) {
     }
     EXPECT_EQ(seen.size(), 8u);
     // The first is min, the last max.
-    expectVec(b.corners().front(), b.min, 0.0f);
-    expectVec(b.corners().back(), b.max, 0.0f);
+    test::expectVec(b.corners().front(), b.min, 0.0f);
+    test::expectVec(b.corners().back(), b.max, 0.0f);
 }
 
 TEST(Aabb, TransformedEmptyStaysEmpty) {
@@ -104,8 +99,8 @@ TEST(Aabb, TransformedEmptyStaysEmpty) {
 TEST(Aabb, TransformedByTranslationMovesTheBox) {
     const Aabb b = box({0.0f, 0.0f, 0.0f}, {1.0f, 2.0f, 3.0f});
     const Aabb t = b.transformed(glm::translate(glm::mat4(1.0f), glm::vec3(-4.0f, 0.0f, -4.0f)));
-    expectVec(t.min, {-4.0f, 0.0f, -4.0f});
-    expectVec(t.max, {-3.0f, 2.0f, -1.0f});
+    test::expectVec(t.min, {-4.0f, 0.0f, -4.0f});
+    test::expectVec(t.max, {-3.0f, 2.0f, -1.0f});
 }
 
 // Rotation by +90 degrees about y maps (x, y, z) to (z, y, -x). The box [1,2]x[0,1]x[0,3]
@@ -114,8 +109,8 @@ TEST(Aabb, TransformedByNinetyDegreesAboutY) {
     const Aabb b = box({1.0f, 0.0f, 0.0f}, {2.0f, 1.0f, 3.0f});
     const glm::mat4 r = glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(0, 1, 0));
     const Aabb t = b.transformed(r);
-    expectVec(t.min, {0.0f, 0.0f, -2.0f});
-    expectVec(t.max, {3.0f, 1.0f, -1.0f});
+    test::expectVec(t.min, {0.0f, 0.0f, -2.0f});
+    test::expectVec(t.max, {3.0f, 1.0f, -1.0f});
     // A quarter turn keeps the volume: extents are a permutation.
     EXPECT_NEAR(t.extent().x * t.extent().y * t.extent().z, 3.0f, 1e-5f);
 }
@@ -126,8 +121,8 @@ TEST(Aabb, TransformedByFortyFiveDegreesGrows) {
     const Aabb b = box(glm::vec3(-1.0f), glm::vec3(1.0f));
     const glm::mat4 r = glm::rotate(glm::mat4(1.0f), glm::radians(45.0f), glm::vec3(0, 1, 0));
     const Aabb t = b.transformed(r);
-    expectVec(t.min, {-1.4142136f, -1.0f, -1.4142136f});
-    expectVec(t.max, {1.4142136f, 1.0f, 1.4142136f});
+    test::expectVec(t.min, {-1.4142136f, -1.0f, -1.4142136f});
+    test::expectVec(t.max, {1.4142136f, 1.0f, 1.4142136f});
 }
 
 TEST(Aabb, TransformedHoldsEveryTransformedPoint) {

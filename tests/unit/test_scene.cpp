@@ -19,12 +19,6 @@
 namespace gnomon {
 namespace {
 
-void expectVec(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
-
 const char* const kBuiltinNames[] = {
     "book-triangle", "book-triangle-far",  "course-two-lights",    "course-cubes",
     "tutorial-room", "tutorial-room-thin", "tutorial-directional", "tutorial-spot",
@@ -72,20 +66,20 @@ TEST(Scene, BookTriangleNumbers) {
     const Scene s = builtinScene("book-triangle");
     ASSERT_EQ(s.lights.size(), 1u);
     const Light& l = s.lights[0];
-    expectVec(l.position, {0.0f, 7.0f, 2.0f}, 0.0f);
+    test::expectVec(l.position, {0.0f, 7.0f, 2.0f}, 0.0f);
     EXPECT_EQ(l.shadowCamera.policy, ShadowCameraPolicy::Manual);
     EXPECT_EQ(l.shadowCamera.projection, Projection::Perspective);
-    expectVec(l.shadowCamera.target, glm::vec3(0.0f), 0.0f);
-    expectVec(l.shadowCamera.up, {0.0f, 1.0f, 0.0f}, 0.0f);
+    test::expectVec(l.shadowCamera.target, glm::vec3(0.0f), 0.0f);
+    test::expectVec(l.shadowCamera.up, {0.0f, 1.0f, 0.0f}, 0.0f);
     EXPECT_FLOAT_EQ(l.shadowCamera.fovyDegrees, 70.0f);
     EXPECT_FLOAT_EQ(l.shadowCamera.aspect, 1.0f);
     EXPECT_FLOAT_EQ(l.shadowCamera.near, 1.0f);
     EXPECT_FLOAT_EQ(l.shadowCamera.far, 100.0f);
     EXPECT_EQ(l.shadowMapSize, 2048);  // the shipped code's size
 
-    expectVec(s.camera.eye, {0.0f, 7.0f, 9.0f}, 0.0f);
-    expectVec(s.camera.centre, glm::vec3(0.0f), 0.0f);
-    expectVec(s.camera.up, {0.0f, 1.0f, 0.0f}, 0.0f);
+    test::expectVec(s.camera.eye, {0.0f, 7.0f, 9.0f}, 0.0f);
+    test::expectVec(s.camera.centre, glm::vec3(0.0f), 0.0f);
+    test::expectVec(s.camera.up, {0.0f, 1.0f, 0.0f}, 0.0f);
     EXPECT_FLOAT_EQ(s.camera.fovyDegrees, 45.0f);
     EXPECT_FLOAT_EQ(s.camera.near, 1.0f);
     EXPECT_FLOAT_EQ(s.camera.far, 100.0f);
@@ -98,10 +92,10 @@ TEST(Scene, BookTriangleNumbers) {
 TEST(Scene, BookTriangleFarMovesTheLightAndItsFarPlane) {
     const Scene s = builtinScene("book-triangle-far");
     ASSERT_EQ(s.lights.size(), 1u);
-    expectVec(s.lights[0].position, {0.0f, 40.0f, 2.0f}, 0.0f);
+    test::expectVec(s.lights[0].position, {0.0f, 40.0f, 2.0f}, 0.0f);
     EXPECT_FLOAT_EQ(s.lights[0].shadowCamera.far, 200.0f);
     EXPECT_FLOAT_EQ(s.lights[0].shadowCamera.near, 1.0f);
-    expectVec(s.camera.eye, {0.0f, 7.0f, 9.0f}, 0.0f);
+    test::expectVec(s.camera.eye, {0.0f, 7.0f, 9.0f}, 0.0f);
 }
 
 const Object& objectNamed(const Scene& s, const std::string& name) {
@@ -119,16 +113,16 @@ TEST(Scene, BookTriangleSpinsFortyDegreesPerSecond) {
     EXPECT_FLOAT_EQ(tri.spin.degreesPerSecond, 40.0f);
     const Mesh& mesh = s.meshes.at(tri.mesh);
     ASSERT_EQ(mesh.positions.size(), 3u);
-    expectVec(mesh.positions[1], {0.8f, 3.5f, 0.0f}, 0.0f);
-    expectVec(mesh.positions[2], {0.0f, 3.5f, 1.8f}, 0.0f);
+    test::expectVec(mesh.positions[1], {0.8f, 3.5f, 0.0f}, 0.0f);
+    test::expectVec(mesh.positions[2], {0.0f, 3.5f, 1.8f}, 0.0f);
 
     auto at = [&](double t, const glm::vec3& p) {
         return glm::vec3(tri.worldFromModelAt(t) * glm::vec4(p, 1.0f));
     };
     for (const glm::vec3& p : mesh.positions)
-        expectVec(at(9.0, p), p, 1e-5f);
-    expectVec(at(2.25, mesh.positions[1]), {0.0f, 3.5f, -0.8f}, 1e-5f);
-    expectVec(at(2.25, mesh.positions[2]), {1.8f, 3.5f, 0.0f}, 1e-5f);
+        test::expectVec(at(9.0, p), p, 1e-5f);
+    test::expectVec(at(2.25, mesh.positions[1]), {0.0f, 3.5f, -0.8f}, 1e-5f);
+    test::expectVec(at(2.25, mesh.positions[2]), {1.8f, 3.5f, 0.0f}, 1e-5f);
     // The plane does not spin.
     const Object& plane = objectNamed(s, "plane");
     EXPECT_PRED_FORMAT3(test::matNear, plane.worldFromModelAt(2.25), plane.worldFromModel, 0.0f);
@@ -140,8 +134,8 @@ TEST(Scene, BookTriangleSpinsFortyDegreesPerSecond) {
 TEST(Scene, BookPlaneIsTiltedAboutTheDiagonalAxis) {
     const Scene s = builtinScene("book-triangle");
     const glm::mat4 m = objectNamed(s, "plane").worldFromModel;
-    expectVec(glm::vec3(m * glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)), {0.7071068f, -0.5f, 0.5f});
-    expectVec(glm::vec3(m * glm::vec4(0.0f, 1.0f, 1.0f, 0.0f)), {0.0f, 1.0f, 1.0f});  // axis
+    test::expectVec(glm::vec3(m * glm::vec4(1.0f, 0.0f, 0.0f, 0.0f)), {0.7071068f, -0.5f, 0.5f});
+    test::expectVec(glm::vec3(m * glm::vec4(0.0f, 1.0f, 1.0f, 0.0f)), {0.0f, 1.0f, 1.0f});  // axis
 }
 
 // Course text: lights at (3, 0, 5) and (-3, 0, 5) looking at the view centre, orthographic
@@ -151,8 +145,8 @@ TEST(Scene, CourseNumbers) {
         SCOPED_TRACE(name);
         const Scene s = builtinScene(name);
         ASSERT_EQ(s.lights.size(), 2u);
-        expectVec(s.lights[0].position, {3.0f, 0.0f, 5.0f}, 0.0f);
-        expectVec(s.lights[1].position, {-3.0f, 0.0f, 5.0f}, 0.0f);
+        test::expectVec(s.lights[0].position, {3.0f, 0.0f, 5.0f}, 0.0f);
+        test::expectVec(s.lights[1].position, {-3.0f, 0.0f, 5.0f}, 0.0f);
         for (const Light& l : s.lights) {
             EXPECT_TRUE(l.enabled);
             const ShadowCamera& c = l.shadowCamera;
@@ -170,9 +164,9 @@ TEST(Scene, CourseNumbers) {
             EXPECT_FLOAT_EQ(l.attenuation.linear, 0.1f);
             EXPECT_FLOAT_EQ(l.attenuation.quadratic, 0.0f);
         }
-        expectVec(s.ambient, glm::vec3(0.3f), 0.0f);
-        expectVec(s.camera.eye, {0.0f, 0.0f, 5.0f}, 0.0f);
-        expectVec(s.camera.centre, glm::vec3(0.0f), 0.0f);
+        test::expectVec(s.ambient, glm::vec3(0.3f), 0.0f);
+        test::expectVec(s.camera.eye, {0.0f, 0.0f, 5.0f}, 0.0f);
+        test::expectVec(s.camera.centre, glm::vec3(0.0f), 0.0f);
         EXPECT_FLOAT_EQ(s.camera.fovyDegrees, 45.0f);
         EXPECT_FLOAT_EQ(s.camera.far, 20.0f);
         EXPECT_EQ(s.options.shading.shadowedRule, ShadowedRule::AmbientOnly);
@@ -184,7 +178,7 @@ TEST(Scene, CourseNumbers) {
         for (size_t i = 0; i < half; ++i) {
             const glm::mat4 delta =
                 s.objects[half + i].worldFromModel * glm::inverse(s.objects[i].worldFromModel);
-            expectVec(glm::vec3(delta[3]), {-4.0f, 0.0f, -4.0f});
+            test::expectVec(glm::vec3(delta[3]), {-4.0f, 0.0f, -4.0f});
         }
     }
 }
@@ -198,10 +192,10 @@ TEST(Scene, TutorialSunNumbers) {
         EXPECT_EQ(sun.type, LightType::Directional);
         // (0.267, -0.802, 0.535) has length 1.000359: normalised (0.2669042, -0.8017122,
         // 0.5348080).
-        expectVec(sun.direction, {0.2669042f, -0.8017122f, 0.5348080f}, 1e-6f);
+        test::expectVec(sun.direction, {0.2669042f, -0.8017122f, 0.5348080f}, 1e-6f);
         EXPECT_FLOAT_EQ(sun.intensity, 0.75f);
         EXPECT_EQ(sun.shadowCamera.policy, ShadowCameraPolicy::Fit);
-        expectVec(s.ambient, glm::vec3(0.1f), 0.0f);
+        test::expectVec(s.ambient, glm::vec3(0.1f), 0.0f);
     }
     // The thin variant's floor is one double-sided quad; the thick one a closed box.
     const Scene thick = builtinScene("tutorial-room"), thin = builtinScene("tutorial-room-thin");

@@ -6,16 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include "UnitTestUtil.h"
 #include "scene/SceneUtil.h"
 
 namespace gnomon {
 namespace {
-
-void expectVec(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
 
 size_t indexOf(const Scene& s, const std::string& name) {
     for (size_t i = 0; i < s.objects.size(); ++i)
@@ -28,12 +23,12 @@ TEST(SceneUtil, MeshBoundsAreInModelSpaceAndInMeshOrder) {
     const std::vector<Aabb> boxes = meshBounds(s);
     ASSERT_EQ(boxes.size(), s.meshes.size());
     const Aabb& tri = boxes.at(s.objects.at(indexOf(s, "triangle")).mesh);
-    expectVec(tri.min, {-0.8f, 3.5f, 0.0f}, 0.0f);
-    expectVec(tri.max, {0.8f, 3.5f, 1.8f}, 0.0f);
+    test::expectVec(tri.min, {-0.8f, 3.5f, 0.0f}, 0.0f);
+    test::expectVec(tri.max, {0.8f, 3.5f, 1.8f}, 0.0f);
     // The plane before its tilt: 6 x 5 at y = -1.7.
     const Aabb& plane = boxes.at(s.objects.at(indexOf(s, "plane")).mesh);
-    expectVec(plane.min, {-3.0f, -1.7f, -2.5f}, 0.0f);
-    expectVec(plane.max, {3.0f, -1.7f, 2.5f}, 0.0f);
+    test::expectVec(plane.min, {-3.0f, -1.7f, -2.5f}, 0.0f);
+    test::expectVec(plane.max, {3.0f, -1.7f, 2.5f}, 0.0f);
 }
 
 TEST(SceneUtil, MeshWithoutVerticesHasEmptyBounds) {
@@ -50,8 +45,8 @@ TEST(SceneUtil, CastersOnlyDropsNonCasters) {
     const Aabb all = worldBounds(s, meshBounds(s), 0.0, false);
     const Aabb casters = worldBounds(s, meshBounds(s), 0.0, true);
     // Only the (unspun) triangle is left.
-    expectVec(casters.min, {-0.8f, 3.5f, 0.0f});
-    expectVec(casters.max, {0.8f, 3.5f, 1.8f});
+    test::expectVec(casters.min, {-0.8f, 3.5f, 0.0f});
+    test::expectVec(casters.max, {0.8f, 3.5f, 1.8f});
     // The tilted plane reaches below the triangle.
     EXPECT_LT(all.min.y, -1.0f);
     EXPECT_LE(all.min.x, casters.min.x);
@@ -68,8 +63,8 @@ TEST(SceneUtil, WorldBoundsFollowAnimation) {
     Scene s = builtinScene("book-triangle");
     s.objects[indexOf(s, "plane")].castsShadows = false;
     const Aabb b = worldBounds(s, meshBounds(s), 2.25, true);
-    expectVec(b.min, {0.0f, 3.5f, -0.8f});
-    expectVec(b.max, {1.8f, 3.5f, 0.8f});
+    test::expectVec(b.min, {0.0f, 3.5f, -0.8f});
+    test::expectVec(b.max, {1.8f, 3.5f, 0.8f});
 }
 
 TEST(SceneUtil, WorldBoundsOfTutorialRoom) {
@@ -77,8 +72,8 @@ TEST(SceneUtil, WorldBoundsOfTutorialRoom) {
     // rise to 6; nothing else sticks out.
     const Scene s = builtinScene("tutorial-room");
     const Aabb b = worldBounds(s, meshBounds(s), 0.0, false);
-    expectVec(b.min, {-10.5f, -0.5f, -10.5f});
-    expectVec(b.max, {10.5f, 6.0f, 10.5f});
+    test::expectVec(b.min, {-10.5f, -0.5f, -10.5f});
+    test::expectVec(b.max, {10.5f, 6.0f, 10.5f});
 }
 
 TEST(SceneUtil, LightIsOnFollowsSceneSwitchesUnlessLightOnly) {
@@ -100,15 +95,15 @@ TEST(SceneUtil, SpinAboutAnOffsetPivot) {
     // (one unit +x of the pivot) goes to one unit -z of it: (1, 0, -1).
     Object o;
     o.spin = Spin{{0.0f, 1.0f, 0.0f}, 90.0f, {1.0f, 0.0f, 0.0f}};
-    expectVec(glm::vec3(o.worldFromModelAt(1.0) * glm::vec4(2.0f, 0.0f, 0.0f, 1.0f)),
-              {1.0f, 0.0f, -1.0f});
+    test::expectVec(glm::vec3(o.worldFromModelAt(1.0) * glm::vec4(2.0f, 0.0f, 0.0f, 1.0f)),
+                    {1.0f, 0.0f, -1.0f});
     // The pivot itself does not move, and the spin applies after worldFromModel.
     o.worldFromModel[3] = glm::vec4(0.0f, 5.0f, 0.0f, 1.0f);  // lift by 5
-    expectVec(glm::vec3(o.worldFromModelAt(1.0) * glm::vec4(1.0f, -5.0f, 0.0f, 1.0f)),
-              {1.0f, 0.0f, 0.0f});
+    test::expectVec(glm::vec3(o.worldFromModelAt(1.0) * glm::vec4(1.0f, -5.0f, 0.0f, 1.0f)),
+                    {1.0f, 0.0f, 0.0f});
     // At time 0 there is no spin.
-    expectVec(glm::vec3(o.worldFromModelAt(0.0) * glm::vec4(2.0f, 0.0f, 0.0f, 1.0f)),
-              {2.0f, 5.0f, 0.0f});
+    test::expectVec(glm::vec3(o.worldFromModelAt(0.0) * glm::vec4(2.0f, 0.0f, 0.0f, 1.0f)),
+                    {2.0f, 5.0f, 0.0f});
 }
 
 }  // namespace
