@@ -26,7 +26,7 @@ MainPass::MainPass() {
                          GL_DYNAMIC_STORAGE_BIT);
 }
 
-const gl::Program& MainPass::program(const RenderOptions& options) {
+const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in) {
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
     const ShadowOptions& s = options.shadow;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
@@ -63,6 +63,8 @@ const gl::Program& MainPass::program(const RenderOptions& options) {
     }
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
+    if (in.shadowCubes) defines.push_back("HAS_CUBES");
+    if (in.hasCascades) defines.push_back("HAS_CASCADES");
     if (options.shading.shadowedRule == ShadowedRule::Factor) {
         defines.push_back("SHADOWED_FACTOR");
     }
@@ -83,7 +85,7 @@ const gl::Program& MainPass::program(const RenderOptions& options) {
 
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
                       const RenderOptions& options) {
-    const gl::Program& prog = program(options);
+    const gl::Program& prog = program(options, in);
 
     // Lights: upload only when they differ from what the GPU holds.
     const std::vector<GpuLight>& lights = *in.lights;

@@ -33,6 +33,7 @@ struct MainPassInputs {
     glm::vec3 ambient{0.0f};
     const std::vector<GpuLight>* lights = nullptr;  // the scene's lights, then cascade records
     int lightCount = 0;                             // the scene's lights
+    bool hasCascades = false;                       // some light is cascaded this frame
     const gl::Texture* shadowMaps = nullptr;        // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;       // cube-map array; null when no light has one
 };
@@ -45,7 +46,7 @@ public:
     int maxLights() const { return mMaxLights; }
 
 private:
-    const gl::Program& program(const RenderOptions& options);
+    const gl::Program& program(const RenderOptions& options, const MainPassInputs& in);
 
     std::map<std::string, gl::Program> mPrograms;
     int mMaxLights = 0;

@@ -228,6 +228,7 @@ struct Renderer::Impl {
         in.ambient = s.ambient;
         in.lights = &lights;
         in.lightCount = int(s.lights.size());
+        in.hasCascades = !cascadeRecords.empty();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
         for (const render::ShadowedLight& sl : shadowed) {
