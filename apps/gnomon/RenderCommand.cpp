@@ -88,8 +88,8 @@ void RenderFlags::add(CLI::App& a) {
                  "r8|rgba8-packed-256|rgba8-packed-255|depth16|depth24|depth32f: shadow map "
                  "storage (default depth32f; point-light cubes use depth32f for colour formats)");
     a.add_option("--map-filter", mapFilter,
-                 "nearest|linear: filtering of colour-format maps before the comparison "
-                 "(default nearest)");
+                 "nearest|linear: filtering of the stored depth before a comparison by hand "
+                 "(colour formats, and --filter none) (default nearest)");
     a.add_option("--shadowed", shadowed,
                  "ambient|factor: a shadowed fragment keeps ambient only, or is multiplied by "
                  "--shadow-factor (default: scene's; ambient)");

@@ -26,9 +26,9 @@ enum class CullMode { Back, Front, None };
 
 // How the shadow map is sampled (SPEC S13, S17).
 enum class ShadowFilter {
-    None,     // one nearest texel, one comparison: hard, aliased edges
-    Hw2x2,    // hardware comparison sampler with LINEAR: 2x2 bilinear PCF
-    Pcf,      // pcfSize x pcfSize box of hardware 2x2 comparisons
+    None,     // one lookup filtered by mapFilter, compared by hand: hard, aliased edges
+    Hw2x2,    // comparison sampler with LINEAR: 2x2 bilinear PCF (colour formats: one lookup)
+    Pcf,      // pcfSize x pcfSize box of comparisons (2x2 bilinear each for native depth)
     Poisson,  // 16 taps of a rotated Poisson disc, pcfSize texels wide
 };
 
@@ -45,7 +45,8 @@ enum class DepthFormat {
     Depth32F,
 };
 
-// Texture filtering of colour-format maps before the comparison (SPEC S13).
+// Filtering of the stored depth before a comparison by hand (SPEC S13): every lookup of a
+// colour format, and --filter none on native depth (the course text's LINEAR lookups).
 enum class MapFilter { Nearest, Linear };
 
 // Where a render's options start (CLI --preset); flags given after it override.
@@ -71,7 +72,7 @@ struct ShadowOptions {
     float cascadeLambda = 0.75f;  // splits: 0 uniform .. 1 logarithmic (SPEC S22)
     float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
-    MapFilter mapFilter = MapFilter::Nearest;         // colour formats: filtering of stored depth
+    MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
 };
 
 // Diagnostic renderings (DESIGN: debug views are features).
