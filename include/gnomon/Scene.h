@@ -75,8 +75,10 @@ enum class LightType {
 
 // How a light's shadow camera is placed (SPEC S6-S8).
 enum class ShadowCameraPolicy {
-    Fit,     // fitted to the scene's bounds, tight near/far: orthographic for directional and
-             // area lights, the cone for spots, all six cube faces for point lights
+    Fit,     // holds the visible receivers that casters can shadow, and those casters:
+             // orthographic for directional and area lights (squared and texel-snapped),
+             // the cone for spots, six cube faces for point lights; no map when nothing
+             // visible can be shadowed
     Manual,  // look at `target` with `up`, the projection numbers as given
     Course,  // the course text: look at the view camera's centre with the view camera's up
 };

@@ -108,6 +108,7 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
                      mMeshRanges[o.mesh].second,
                      mat.doubleSided,
                      o.castsShadows,
+                     o.receivesShadows,
                      box,
                      std::hash<std::string_view>{}(record)};
     }

@@ -27,6 +27,7 @@ struct DrawItem {
     GLint baseVertex = 0;
     bool doubleSided = false;
     bool casts = true;
+    bool receives = true;
     Aabb bounds;                 // world space, at the synced time
     std::uint64_t dataHash = 0;  // of the object's GPU record: changes when it moves
 };

@@ -54,6 +54,7 @@ struct Renderer::Impl {
     std::vector<render::ShadowedLight> shadowed;
     std::vector<render::GpuLight> lights;          // scene lights, then cascade records
     std::vector<render::GpuLight> cascadeRecords;  // reused every frame
+    shadow::FitScene fit;                          // reused every frame
     FrameStats stats;
 
     explicit Impl(const ContextOptions& o) : context(o.debug || kDebugBuild, o.verbose) {
@@ -77,6 +78,16 @@ struct Renderer::Impl {
         lights.clear();
         cascadeRecords.clear();
         const float aspect = float(options.width) / float(options.height);
+        // What fitted light cameras look at: the items' boxes and the view (SPEC S8).
+        fit.casters.clear();
+        fit.receivers.clear();
+        for (const render::DrawItem& item : scene.items()) {
+            if (item.indexCount == 0) continue;
+            if (item.casts) fit.casters.push_back(item.bounds);
+            if (item.receives) fit.receivers.push_back(item.bounds);
+        }
+        fit.viewKnown = true;
+        fit.viewClipFromWorld = shadow::clipFromView(s.camera, aspect) * viewFromWorld;
         for (size_t i = 0; i < s.lights.size(); ++i) {
             const Light& light = s.lights[i];
             render::GpuLight g;
@@ -104,7 +115,7 @@ struct Renderer::Impl {
                 planCascades(s, options, i, direction, mapSize, aspect, g);
             } else if (shadowing) {
                 const shadow::LightCameraFrame frame =
-                    shadow::lightCameraFrame(light, s.camera, scene.bounds(), mapSize);
+                    shadow::lightCameraFrame(light, s.camera, fit, mapSize);
                 if (frame.valid) {
                     fillShadowRecord(g, frame);
                     if (frame.kind == shadow::FrameKind::Cube) {

@@ -1,10 +1,14 @@
 #include "shadow/ShadowMath.h"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/SceneUtil.h"
 
 namespace gnomon::shadow {
 
@@ -73,60 +77,240 @@ LightCameraFrame fromNumbers(const ShadowCamera& c, const glm::mat4& lightFromWo
     return f;
 }
 
-// Orthographic camera along `direction` holding the whole box, near/far at its corners.
-LightCameraFrame fitOrthographic(const glm::vec3& direction, const Aabb& bounds, int mapSize) {
-    LightCameraFrame f;
-    f.orthographic = true;
-    f.kind = FrameKind::Orthographic;
-    const glm::vec3 centre = bounds.centre();
-    const float radius = std::max(bounds.radius(), 1e-4f);
-    const glm::vec3 eye = centre - glm::normalize(direction) * (2.0f * radius);
-    f.lightFromWorld = safeLookAt(eye, centre, glm::vec3(0, 1, 0));
-    Aabb ls = bounds.transformed(f.lightFromWorld);
-    // A margin keeps the outermost texels and depths inside the map: relative to the box,
-    // and never below the float rounding of the view transform, whose translation grows with
-    // the distance from the world origin (a small box far away).
-    const float worldScale = glm::length(centre) + 2.0f * radius;
-    const float margin = std::max(1e-3f * radius, 16.0f * FLT_EPSILON * worldScale);
-    f.near = -ls.max.z - margin;
-    f.far = -ls.min.z + margin;
-    const float w = ls.max.x - ls.min.x + 2 * margin, h = ls.max.y - ls.min.y + 2 * margin;
-    f.clipFromLight = glm::ortho(ls.min.x - margin, ls.max.x + margin, ls.min.y - margin,
-                                 ls.max.y + margin, f.near, f.far);
-    f.texelWorldSize = std::max(w, h) / float(mapSize);
+// The boxes Fit works with in one frame: visible receivers (clipped to the view frustum's
+// box) and all casters.
+struct FitBoxes {
+    std::vector<Aabb> receivers;
+    const std::vector<Aabb>* casters = nullptr;
+    bool snap = false;  // the fit follows the view: keep it steady
+};
+
+Aabb intersect(const Aabb& a, const Aabb& b) {
+    Aabb out;
+    out.min = glm::max(a.min, b.min);
+    out.max = glm::min(a.max, b.max);
+    return out.empty() ? Aabb{} : out;
+}
+
+// Clips the segment p0 -> p1 to where all six signed distances (linear along it) are >= 0;
+// adds the ends of what remains to `out`.
+void clipSegment(const glm::vec3& p0, const glm::vec3& p1, const float (&d0)[6],
+                 const float (&d1)[6], Aabb& out) {
+    float t0 = 0.0f, t1 = 1.0f;
+    for (int k = 0; k < 6; ++k) {
+        if (d0[k] < 0.0f && d1[k] < 0.0f) return;
+        if (d0[k] < 0.0f) t0 = std::max(t0, d0[k] / (d0[k] - d1[k]));
+        if (d1[k] < 0.0f) t1 = std::min(t1, d0[k] / (d0[k] - d1[k]));
+    }
+    if (t0 > t1) return;
+    out.extend(p0 + (p1 - p0) * t0);
+    out.extend(p0 + (p1 - p0) * t1);
+}
+
+// Signed distances of a clip-space point to the six planes of the clip volume.
+void clipDistances(const glm::vec4& c, float (&d)[6]) {
+    d[0] = c.w + c.x;
+    d[1] = c.w - c.x;
+    d[2] = c.w + c.y;
+    d[3] = c.w - c.y;
+    d[4] = c.w + c.z;
+    d[5] = c.w - c.z;
+}
+
+void boxDistances(const Aabb& b, const glm::vec3& p, float (&d)[6]) {
+    for (int k = 0; k < 3; ++k) {
+        d[2 * k] = p[k] - b.min[k];
+        d[2 * k + 1] = b.max[k] - p[k];
+    }
+}
+
+// The box around the part of `box` inside the clip volume of `clipFromWorld` (exact: the
+// intersection of two convex solids has its vertices on the edges of one clipped by the
+// other).
+Aabb clipToFrustum(const Aabb& box, const glm::mat4& clipFromWorld,
+                   const std::array<glm::vec3, 8>& frustum) {
+    Aabb out;
+    const std::array<glm::vec3, 8> corners = box.corners();
+    float boxClip[8][6], frustumBox[8][6];
+    for (int i = 0; i < 8; ++i) {
+        clipDistances(clipFromWorld * glm::vec4(corners[size_t(i)], 1.0f), boxClip[i]);
+        boxDistances(box, frustum[size_t(i)], frustumBox[i]);
+    }
+    // Edges join the corners whose indices differ in one bit (both solids number corners
+    // by x, y, z bits).
+    for (int i = 0; i < 8; ++i) {
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            const int j = i | bit;
+            if (j == i) continue;
+            clipSegment(corners[size_t(i)], corners[size_t(j)], boxClip[i], boxClip[j], out);
+            clipSegment(frustum[size_t(i)], frustum[size_t(j)], frustumBox[i], frustumBox[j],
+                        out);
+        }
+    }
+    return intersect(out, box);  // rounding must not grow the box
+}
+
+FitBoxes visibleReceivers(const FitScene& scene) {
+    FitBoxes f;
+    f.casters = &scene.casters;
+    f.snap = scene.viewKnown;
+    std::array<glm::vec3, 8> frustum{};
+    if (scene.viewKnown) {
+        const glm::mat4 worldFromClip = glm::inverse(scene.viewClipFromWorld);
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec4 p = worldFromClip * glm::vec4(i & 1 ? 1.0f : -1.0f,
+                                                          i & 2 ? 1.0f : -1.0f,
+                                                          i & 4 ? 1.0f : -1.0f, 1.0f);
+            frustum[size_t(i)] = glm::vec3(p) / p.w;
+        }
+    }
+    for (const Aabb& r : scene.receivers) {
+        if (r.empty()) continue;
+        if (!scene.viewKnown) {
+            f.receivers.push_back(r);
+            continue;
+        }
+        const Aabb clipped = clipToFrustum(r, scene.viewClipFromWorld, frustum);
+        if (!clipped.empty()) f.receivers.push_back(clipped);
+    }
     return f;
 }
 
-// Perspective camera from `eye` along `axis` with fovy, near/far fitted to the box.
+// Rounds `x` up to a step of 1/16 of its power of two: few distinct sizes, at most 1/16 more.
+float quantizeUp(float x) {
+    const float step = std::exp2(std::ceil(std::log2(std::max(x, 1e-20f))) - 4.0f);
+    return std::ceil(x / step) * step;
+}
+
+// Orthographic camera along `direction`: across the light, the receivers' extent where a
+// caster overlaps it; in depth, from the nearest such caster to the farthest receiver.
+LightCameraFrame fitOrthographic(const glm::vec3& direction, const FitBoxes& boxes, int mapSize) {
+    LightCameraFrame f;
+    f.orthographic = true;
+    f.kind = FrameKind::Orthographic;
+    f.valid = false;
+    // Rotation only: light space differs from world space by a turn, so a snapped origin
+    // stays on one grid whatever the view does.
+    const glm::mat4 rotation =
+        safeLookAt(glm::vec3(0.0f), glm::normalize(direction), glm::vec3(0, 1, 0));
+    Aabb receivers;
+    for (const Aabb& r : boxes.receivers)
+        receivers.extend(r.transformed(rotation));
+    if (receivers.empty()) return f;
+    Aabb casters;
+    for (const Aabb& c : *boxes.casters) {
+        if (c.empty()) continue;
+        const Aabb ls = c.transformed(rotation);
+        // Light space looks down -z: a caster entirely farther than every receiver, or beside
+        // them all, cannot shadow one.
+        if (ls.max.z < receivers.min.z || ls.max.x < receivers.min.x ||
+            ls.min.x > receivers.max.x || ls.max.y < receivers.min.y ||
+            ls.min.y > receivers.max.y) {
+            continue;
+        }
+        casters.extend(ls);
+    }
+    if (casters.empty()) return f;
+    glm::vec2 lo = glm::max(glm::vec2(receivers.min), glm::vec2(casters.min));
+    glm::vec2 hi = glm::min(glm::vec2(receivers.max), glm::vec2(casters.max));
+    float zNear = std::max(casters.max.z, receivers.min.z);  // nearest to the light
+    float zFar = receivers.min.z;                             // farthest from it
+    // A margin keeps the outermost texels and depths inside the map: relative to the box
+    // on each axis, and never below the float rounding of light-space coordinates, which
+    // grows with their distance from the world origin (a small box far away).
+    const float worldScale = std::max({glm::length(glm::vec3(receivers.max)),
+                                       glm::length(glm::vec3(receivers.min)),
+                                       glm::length(glm::vec3(casters.max)),
+                                       glm::length(glm::vec3(casters.min))});
+    const glm::vec3 margin = glm::max(1e-3f * glm::vec3(hi - lo, zNear - zFar),
+                                      glm::vec3(16.0f * FLT_EPSILON * worldScale));
+    lo -= glm::vec2(margin);
+    hi += glm::vec2(margin);
+    zNear += margin.z;
+    zFar -= margin.z;
+    glm::vec2 size = hi - lo;
+    if (boxes.snap) {
+        // Square, a quantised size with room for the origin's snap, origin and depth range
+        // on multiples of a texel: the same inputs up to a texel give the same camera.
+        const float side = quantizeUp(std::max(size.x, size.y) / (1.0f - 4.0f / float(mapSize)));
+        const float texel = side / float(mapSize);
+        const glm::vec2 centre = 0.5f * (lo + hi);
+        lo = glm::floor((centre - 0.5f * side) / texel) * texel;
+        hi = lo + side;
+        size = glm::vec2(side);
+        zNear = std::ceil(zNear / texel) * texel;
+        zFar = std::floor(zFar / texel) * texel;
+    }
+    f.valid = true;
+    f.lightFromWorld = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -zNear)) * rotation;
+    f.near = 0.0f;
+    f.far = zNear - zFar;
+    f.clipFromLight = glm::ortho(lo.x, hi.x, lo.y, hi.y, f.near, f.far);
+    f.texelWorldSize = std::max(size.x, size.y) / float(mapSize);
+    return f;
+}
+
+// Perspective camera from `eye` along `axis` with fovy: far at the farthest receiver corner
+// inside the cone, near at the nearest caster that can shadow one.
 LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, float fovyRadians,
-                                const Aabb& bounds, int mapSize) {
+                                const FitBoxes& boxes, int mapSize) {
     LightCameraFrame f;
     f.lightFromWorld = safeLookAt(eye, eye + axis, glm::vec3(0, 1, 0));
-    float nearest = 0.0f, farthest = 0.0f;
-    depthRange(bounds, f.lightFromWorld, nearest, farthest);
+    f.valid = false;
+    // The cone's four side planes (no near or far): what the map can see at all.
+    const glm::mat4 cone =
+        glm::infinitePerspective(fovyRadians, 1.0f, 1.0f) * f.lightFromWorld;
+    float farthest = 0.0f;
+    for (const Aabb& r : boxes.receivers) {
+        if (outsideClipVolume(r, cone, true)) continue;
+        float nearest = 0.0f, far = 0.0f;
+        depthRange(r, f.lightFromWorld, nearest, far);
+        farthest = std::max(farthest, far);
+    }
+    if (!(farthest > 0.0f)) return f;
+    float nearestCaster = std::numeric_limits<float>::max();
+    for (const Aabb& c : *boxes.casters) {
+        if (c.empty() || outsideClipVolume(c, cone, true)) continue;
+        float nearest = 0.0f, far = 0.0f;
+        depthRange(c, f.lightFromWorld, nearest, far);
+        if (nearest > farthest) continue;  // beyond every receiver
+        nearestCaster = std::min(nearestCaster, nearest);
+    }
+    if (nearestCaster == std::numeric_limits<float>::max()) return f;
     // The light may sit inside the bounds: keep near positive, at most 1/1000 of far,
     // so depth precision stays usable (SPEC S12).
+    f.valid = true;
     f.far = std::max(farthest * 1.01f, 1e-3f);
-    f.near = std::clamp(nearest * 0.99f, f.far * 1e-3f, f.far * 0.999f);
+    f.near = std::clamp(nearestCaster * 0.99f, f.far * 1e-3f, f.far * 0.999f);
     f.clipFromLight = glm::perspective(fovyRadians, 1.0f, f.near, f.far);
     f.texelWorldSize = 2.0f * std::tan(0.5f * fovyRadians) / float(mapSize);
     return f;
 }
 
-// Six faces around the light reaching the farthest corner; near as close as depth precision
-// allows (geometry nearer than near still casts: the pass clamps depth for fitted lights).
-LightCameraFrame fitCube(const glm::vec3& position, const Aabb& bounds, int mapSize) {
+// Six faces around the light reaching the farthest receiver corner; near as close as depth
+// precision allows (geometry nearer than near still casts: the pass clamps depth for fitted
+// lights).
+LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int mapSize) {
     LightCameraFrame f;
     f.kind = FrameKind::Cube;
     f.lightFromWorld = glm::translate(glm::mat4(1.0f), -position);
+    f.valid = false;
     float farthest = 0.0f;
-    for (const glm::vec3& c : bounds.corners()) {
-        farthest = std::max(farthest, glm::length(c - position));
+    for (const Aabb& r : boxes.receivers) {
+        for (const glm::vec3& c : r.corners())
+            farthest = std::max(farthest, glm::length(c - position));
     }
-    const glm::vec3 nearestPoint = glm::clamp(position, bounds.min, bounds.max);
-    const float nearest = glm::length(nearestPoint - position);
+    if (!(farthest > 0.0f)) return f;
+    float nearestCaster = std::numeric_limits<float>::max();
+    for (const Aabb& c : *boxes.casters) {
+        if (c.empty()) continue;
+        const float d = glm::length(glm::clamp(position, c.min, c.max) - position);
+        if (d <= farthest) nearestCaster = std::min(nearestCaster, d);
+    }
+    if (nearestCaster == std::numeric_limits<float>::max()) return f;
+    f.valid = true;
     f.far = std::max(farthest * 1.01f, 1e-3f);
-    f.near = std::clamp(nearest * 0.99f, f.far * 1e-3f, f.far * 0.5f);
+    f.near = std::clamp(nearestCaster * 0.99f, f.far * 1e-3f, f.far * 0.5f);
     f.clipFromLight = glm::perspective(glm::radians(90.0f), 1.0f, f.near, f.far);
     f.texelWorldSize = 2.0f / float(mapSize);  // tan(45 deg) = 1: two units per face at d = 1
     return f;
@@ -244,7 +428,7 @@ float cubeStoredDepth(const glm::vec3& d, float near, float far) {
     return 0.5f * ndc + 0.5f;
 }
 
-LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const Aabb& bounds,
+LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const FitScene& scene,
                                   int mapSize) {
     const ShadowCamera& c = light.shadowCamera;
     switch (c.policy) {
@@ -255,27 +439,43 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
         case ShadowCameraPolicy::Fit:
             break;
     }
-    if (bounds.empty()) {
-        LightCameraFrame f;
-        f.valid = false;
-        return f;
-    }
+    const FitBoxes boxes = visibleReceivers(scene);
     switch (light.type) {
         case LightType::Directional:
-            return fitOrthographic(light.direction, bounds, mapSize);
+        case LightType::Area:
+            // Area lights have parallel rays like the sun: the same orthographic fit (the
+            // plane only sets the falloff).
+            return fitOrthographic(light.direction, boxes, mapSize);
         case LightType::Spot:
             return fitPerspective(
                 light.position, glm::normalize(light.direction),
-                glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), bounds,
+                glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), boxes,
                 mapSize);
-        case LightType::Area:
-            // Parallel rays like the sun: the same orthographic fit (the plane only sets
-            // the falloff).
-            return fitOrthographic(light.direction, bounds, mapSize);
         case LightType::Point:
-            return fitCube(light.position, bounds, mapSize);
+            return fitCube(light.position, boxes, mapSize);
     }
     return {};
+}
+
+LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const Aabb& bounds,
+                                  int mapSize) {
+    FitScene scene;
+    scene.casters = {bounds};
+    scene.receivers = {bounds};
+    return lightCameraFrame(light, view, scene, mapSize);
+}
+
+FitScene fitScene(const Scene& scene, double seconds, float aspect) {
+    FitScene f;
+    const std::vector<Aabb> meshes = meshBounds(scene);
+    for (const Object& o : scene.objects) {
+        const Aabb box = meshes[o.mesh].transformed(o.worldFromModelAt(seconds));
+        if (o.castsShadows) f.casters.push_back(box);
+        if (o.receivesShadows) f.receivers.push_back(box);
+    }
+    f.viewKnown = true;
+    f.viewClipFromWorld = clipFromView(scene.camera, aspect) * viewFromWorld(scene.camera);
+    return f;
 }
 
 }  // namespace gnomon::shadow

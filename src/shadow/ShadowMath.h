@@ -51,12 +51,36 @@ glm::mat4 textureFromClip();
 // the world axis least aligned with the direction).
 glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::vec3& up);
 
-// The light camera of `light` for a frame: Manual and Course use the light's numbers;
-// Fit encloses `casterAndReceiverBounds` as tightly as an axis-aligned fit in light space
-// allows, with near/far at the bounds (point lights: a cube reaching the farthest corner).
+// What the Fit policy looks at (SPEC S8): world boxes of the shadow casters and of the
+// receivers and, when known, the view camera, whose frustum decides which receivers are
+// visible (without it every receiver counts).
+struct FitScene {
+    std::vector<Aabb> casters;
+    std::vector<Aabb> receivers;
+    bool viewKnown = false;
+    glm::mat4 viewClipFromWorld{1.0f};
+};
+
+// The light camera of `light` for a frame: Manual and Course use the light's numbers; Fit
+// holds the visible receivers that casters can shadow, and those casters:
+// - directional and area lights: an orthographic box over the receivers' and casters'
+//   common extent across the light, from the nearest caster to the farthest receiver;
+//   when it follows the view it is squared and snapped (size in steps of 1/16 of a power
+//   of two, origin and depth on the texel grid) so small camera moves neither change the
+//   map nor make its edges shimmer;
+// - spot lights: the cone (fovy = 2 x outer angle), near at the nearest caster, far at the
+//   farthest receiver inside it;
+// - point lights: six faces reaching the farthest visible receiver.
+// Invalid (no map needed) when no receiver is visible or no caster can shadow one.
 // `mapSize` sets texelWorldSize.
+LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const FitScene& scene,
+                                  int mapSize);
+// The same with one box as every caster and receiver and no view (fit the whole box).
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
                                   const Aabb& casterAndReceiverBounds, int mapSize);
+
+// The world boxes Fit looks at for `scene` at `seconds`, seen by its camera at `aspect`.
+FitScene fitScene(const Scene& scene, double seconds, float aspect);
 
 // True when no point of `box` can land in the clip volume of `clipFromWorld` (each corner
 // tested against the six planes; conservative: a box straddling a corner may be kept).

@@ -116,7 +116,8 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
         }
         world.casts.push_back(obj.castsShadows);
     }
-    const Aabb bounds = worldBounds(scene, meshBounds(scene), options.time, false);
+    const float aspect = float(options.width) / float(options.height);
+    const shadow::FitScene fit = shadow::fitScene(scene, options.time, aspect);
 
     std::vector<LightModel> lights(scene.lights.size());
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -124,14 +125,13 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
         LightModel& lm = lights[i];
         lm.on = lightIsOn(scene, options, i);
         const int size = options.shadow.mapSize > 0 ? options.shadow.mapSize : l.shadowMapSize;
-        lm.frame = shadow::lightCameraFrame(l, scene.camera, bounds, size);
+        lm.frame = shadow::lightCameraFrame(l, scene.camera, fit, size);
         lm.shadowed = lm.on && l.castsShadows && lm.frame.valid && options.shadow.enabled;
         const glm::mat4 worldFromLight = glm::inverse(lm.frame.lightFromWorld);
         lm.eye = glm::vec3(worldFromLight[3]);
         lm.axis = -glm::normalize(glm::vec3(worldFromLight[2]));
     }
 
-    const float aspect = float(options.width) / float(options.height);
     const glm::mat4 worldFromClip = glm::inverse(shadow::clipFromView(scene.camera, aspect) *
                                                  shadow::viewFromWorld(scene.camera));
 
