@@ -22,8 +22,10 @@ struct LightData {
     vec4 attenuation;       // c0, c1, c2, cos(outer cone); cascade records: x = far split
     vec4 shadow;            // x cos(inner cone), y texel world size, z frame kind, w uv scale
     vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv,
-                            // w cube far plane
-    vec4 wsPosition;        // xyz world position (cube lookups), w cube near plane
+                            // w the map's far plane
+    vec4 wsPosition;        // xyz world position (cube lookups), w the map's near plane
+    vec4 soft;              // PCSS: x emitter radius (world; directional: tan of its angular
+                            // radius), y 1 = angular, z emitter distance at map depth 0
 };
 
 layout(std140, binding = 1) uniform Lights {

@@ -48,7 +48,7 @@ void RenderFlags::add(CLI::App& a) {
         "lit|clamp: lookups outside a light's map (default lit; clamp shows the textbooks' error)");
     a.add_option(
         "--map-size", mapSize,
-        "shadow map texels per side for every light, 16..16384 (default 0: each light's own)");
+        "shadow map texels per side for every light, 64..8192 (default 0: each light's own)");
     a.add_option(
         "--bias-constant", biasConstant,
         "tolerance added to the stored depth, [0,1) (default " + str(s.biasConstant) + ")");
@@ -68,10 +68,16 @@ void RenderFlags::add(CLI::App& a) {
                  "back|front|none: faces culled in the depth pass (default back; double-sided "
                  "materials never)");
     a.add_option("--filter", filter,
-                 "none|hw2x2|pcf|poisson: shadow map lookup filter (default pcf)");
+                 "none|hw2x2|pcf|poisson|pcss: shadow map lookup filter (default pcf)");
     a.add_option(
         "--pcf-size", pcfSize,
         "kernel width in texels for pcf and poisson, odd 1..9 (default " + str(s.pcfSize) + ")");
+    a.add_option("--light-radius", lightRadius,
+                 "pcss: emitter radius of spot, point and area lights, world units (default " +
+                     str(s.lightRadius) + ")");
+    a.add_option("--light-angle", lightAngle,
+                 "pcss: angular radius of directional lights, degrees 0..20 (default " +
+                     str(s.lightAngle) + ")");
     a.add_option("--cascades", cascades,
                  "fitted directional lights: 1..4 cascaded maps along the view (default " +
                      str(s.cascades) + ")");
@@ -136,8 +142,10 @@ void RenderFlags::apply(RenderOptions& o) const {
         o.shadow.cull = parseEnum("--cull", cull, parseCullMode, "back, front, none");
     if (given("--filter"))
         o.shadow.filter =
-            parseEnum("--filter", filter, parseShadowFilter, "none, hw2x2, pcf, poisson");
+            parseEnum("--filter", filter, parseShadowFilter, "none, hw2x2, pcf, poisson, pcss");
     if (given("--pcf-size")) o.shadow.pcfSize = pcfSize;
+    if (given("--light-radius")) o.shadow.lightRadius = lightRadius;
+    if (given("--light-angle")) o.shadow.lightAngle = lightAngle;
     if (given("--cascades")) o.shadow.cascades = cascades;
     if (given("--cascade-lambda")) o.shadow.cascadeLambda = cascadeLambda;
     if (given("--cascade-blend")) o.shadow.cascadeBlend = cascadeBlend;

@@ -15,7 +15,7 @@ struct RenderFlags {
         mapFilter;
     int lightOnly = -1, mapSize = 0, pcfSize = 3, cascades = 1;
     double time = 0.0;
-    float cascadeLambda = 0, cascadeBlend = 0;
+    float cascadeLambda = 0, cascadeBlend = 0, lightRadius = 0, lightAngle = 0;
     float biasConstant = 0, biasDepthAware = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0,
           shadowFactor = 0;
     CLI::App* app = nullptr;

@@ -30,6 +30,8 @@ enum class ShadowFilter {
     Hw2x2,    // comparison sampler with LINEAR: 2x2 bilinear PCF (colour formats: one lookup)
     Pcf,      // pcfSize x pcfSize box of comparisons (2x2 bilinear each for native depth)
     Poisson,  // 16 taps of a rotated Poisson disc, pcfSize texels wide
+    Pcss,     // percentage-closer soft shadows: a blocker search sizes a Poisson filter by the
+              // penumbra of a light of lightRadius (lightAngle for directional lights)
 };
 
 // How a shadow map stores depth (SPEC S10). Colour formats write gl_FragCoord.z from the
@@ -66,9 +68,11 @@ struct ShadowOptions {
     float normalOffset = 1.0f;  // lookup shift along the normal: texels x filter reach x sin(angle)
     CullMode cull = CullMode::Back;           // faces culled in the depth pass
     ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
-    int pcfSize = 3;                          // kernel width for Pcf, odd, 1..9
-    int mapSize = 0;              // texels per side for every light, 0 = each light's own
-    int cascades = 1;             // directional lights (fitted): 1..4 maps along the view
+    int pcfSize = 3;                          // kernel width for Pcf and Poisson, odd, 1..9
+    float lightRadius = 0.25f;  // Pcss: emitter radius of spot, point and area lights, world units
+    float lightAngle = 1.0f;    // Pcss: angular radius of directional lights, degrees, 0..20
+    int mapSize = 0;            // texels per side for every light, 64..8192; 0 = each light's own
+    int cascades = 1;           // directional lights (fitted): 1..4 maps along the view
     float cascadeLambda = 0.75f;  // splits: 0 uniform .. 1 logarithmic (SPEC S22)
     float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)

@@ -114,7 +114,7 @@ struct Light {
     float innerConeDegrees = 20.0f;  // spot: full intensity inside (half-angle)
     float outerConeDegrees = 30.0f;  // spot: zero outside (half-angle)
     bool castsShadows = true;
-    int shadowMapSize = 1024;  // texels per side, 16..16384
+    int shadowMapSize = 1024;  // texels per side, 64..8192
     ShadowCamera shadowCamera;
 };
 

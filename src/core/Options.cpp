@@ -32,7 +32,8 @@ const std::pair<const char*, CullMode> kCull[] = {
 const std::pair<const char*, ShadowFilter> kFilters[] = {{"none", ShadowFilter::None},
                                                          {"hw2x2", ShadowFilter::Hw2x2},
                                                          {"pcf", ShadowFilter::Pcf},
-                                                         {"poisson", ShadowFilter::Poisson}};
+                                                         {"poisson", ShadowFilter::Poisson},
+                                                         {"pcss", ShadowFilter::Pcss}};
 
 const std::pair<const char*, DepthFormat> kFormats[] = {
     {"r8", DepthFormat::R8},
@@ -139,8 +140,12 @@ std::vector<std::string> RenderOptions::validate() const {
          "normal-offset must be in [0, 100] texels, got " + std::to_string(s.normalOffset));
     need(s.pcfSize >= 1 && s.pcfSize <= 9 && s.pcfSize % 2 == 1,
          "pcf-size must be odd and in 1..9, got " + std::to_string(s.pcfSize));
-    need(s.mapSize == 0 || (s.mapSize >= 16 && s.mapSize <= 16384),
-         "map-size must be 0 (each light's own) or in 16..16384, got " + std::to_string(s.mapSize));
+    need(s.mapSize == 0 || (s.mapSize >= 64 && s.mapSize <= 8192),
+         "map-size must be 0 (each light's own) or in 64..8192, got " + std::to_string(s.mapSize));
+    need(finite(s.lightRadius) && s.lightRadius >= 0.0f && s.lightRadius <= 1.0e4f,
+         "light-radius must be in [0, 1e4] world units, got " + std::to_string(s.lightRadius));
+    need(finite(s.lightAngle) && s.lightAngle >= 0.0f && s.lightAngle <= 20.0f,
+         "light-angle must be in [0, 20] degrees, got " + std::to_string(s.lightAngle));
     need(finite(shading.shadowFactor) && shading.shadowFactor >= 0.0f &&
              shading.shadowFactor <= 1.0f,
          "shadow-factor must be in [0, 1], got " + std::to_string(shading.shadowFactor));

@@ -16,7 +16,7 @@ bool handCompare(const ShadowOptions& s) {
 }
 }  // namespace
 
-static_assert(sizeof(GpuLight) == 176, "GpuLight must match LightData in lights.glsl");
+static_assert(sizeof(GpuLight) == 192, "GpuLight must match LightData in lights.glsl");
 
 MainPass::MainPass() {
     GLint blockBytes = 0;
@@ -43,6 +43,9 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
             break;
         case ShadowFilter::None:
             defines.push_back("FILTER_NONE");
+            break;
+        case ShadowFilter::Pcss:
+            defines.push_back("FILTER_PCSS");
             break;
     }
     if (s.filter == ShadowFilter::Pcf || s.filter == ShadowFilter::Poisson) {
@@ -131,6 +134,21 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     glBindTextureUnit(1, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
     glBindSampler(0, mMapSampler.id());
     glBindSampler(1, mCubeSampler.id());
+    const bool pcss = so.filter == ShadowFilter::Pcss;
+    if (pcss) {
+        if (!mRawSampler) {
+            mRawSampler = gl::Sampler("shadow depth sampler (pcss)");
+            mRawSampler.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST)
+                .set(GL_TEXTURE_MAG_FILTER, GL_NEAREST)
+                .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
+                .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE)
+                .set(GL_TEXTURE_COMPARE_MODE, GL_NONE);
+        }
+        glBindTextureUnit(2, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
+        glBindTextureUnit(3, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
+        glBindSampler(2, mRawSampler.id());
+        glBindSampler(3, mRawSampler.id());
+    }
 
     glUseProgram(prog.id());
     const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
@@ -167,6 +185,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     glDisable(GL_CULL_FACE);
     glBindSampler(0, 0);
     glBindSampler(1, 0);
+    if (pcss) {
+        glBindSampler(2, 0);
+        glBindSampler(3, 0);
+    }
 }
 
 }  // namespace gnomon::render

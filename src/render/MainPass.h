@@ -25,6 +25,7 @@ struct GpuLight {
     glm::vec4 shadow{0.0f};
     glm::vec4 shadowBias{0.0f};
     glm::vec4 wsPosition{0.0f};
+    glm::vec4 soft{0.0f};
 };
 
 struct MainPassInputs {
@@ -55,6 +56,7 @@ private:
     // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;
+    gl::Sampler mRawSampler;  // PCSS blocker search: stored depth, NEAREST, no comparison
     std::string mMapSamplerKey, mCubeSamplerKey;
     gl::Texture mDummyMaps, mDummyCubes;  // bound when a kind of map is absent
 };

@@ -117,10 +117,9 @@ struct Renderer::Impl {
                 const shadow::LightCameraFrame frame =
                     shadow::lightCameraFrame(light, s.camera, fit, mapSize);
                 if (frame.valid) {
-                    fillShadowRecord(g, frame);
+                    fillShadowRecord(g, frame, light, options.shadow);
                     if (frame.kind == shadow::FrameKind::Cube) {
                         g.wsPosition = glm::vec4(light.position, frame.near);
-                        g.shadowBias.w = frame.far;
                     }
                     shadowed.push_back({int(i), mapSize, frame,
                                         light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
@@ -134,8 +133,23 @@ struct Renderer::Impl {
     }
 
     // The map-related fields of a light record for a single-frustum or cube frame.
-    static void fillShadowRecord(render::GpuLight& g, const shadow::LightCameraFrame& frame) {
+    static void fillShadowRecord(render::GpuLight& g, const shadow::LightCameraFrame& frame,
+                                 const Light& light, const ShadowOptions& options) {
         g.shadow.y = frame.texelWorldSize;
+        g.wsPosition.w = frame.near;
+        g.shadowBias.w = frame.far;
+        // PCSS's emitter: a disc of lightRadius at the light (area lights: on their plane,
+        // which may lie off the map's depth origin), or the directional light's angle.
+        if (light.type == LightType::Directional) {
+            g.soft = glm::vec4(std::tan(glm::radians(options.lightAngle)), 1.0f, 0.0f, 0.0f);
+        } else {
+            const glm::vec3 eye = glm::vec3(glm::inverse(frame.lightFromWorld)[3]);
+            const float offset =
+                light.type == LightType::Area && glm::length(light.direction) > 0.0f
+                    ? glm::dot(eye - light.position, glm::normalize(light.direction))
+                    : 0.0f;
+            g.soft = glm::vec4(options.lightRadius, 0.0f, offset, 0.0f);
+        }
         g.shadow.z = frame.kind == shadow::FrameKind::Cube           ? 2.0f
                      : frame.kind == shadow::FrameKind::Orthographic ? 1.0f
                                                                      : 0.0f;
@@ -167,9 +181,9 @@ struct Renderer::Impl {
                 shadow::cascadeFrame(direction, cam, aspect, splits[size_t(k)],
                                      splits[size_t(k) + 1], scene.bounds(), mapSize);
             render::GpuLight c = g;
-            fillShadowRecord(c, frame);
+            fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
             c.attenuation.x = splits[size_t(k) + 1];
-            c.wsPosition = glm::vec4(0.0f);
+            c.wsPosition = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
             cascadeRecords.push_back(c);
             shadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k});
         }

@@ -83,9 +83,9 @@ std::vector<std::string> Scene::validate() const {
               light.outerConeDegrees > 0.0f && light.outerConeDegrees < 90.0f)) {
             add(where + " spot cone needs 0 <= inner <= outer < 90 degrees");
         }
-        if (light.shadowMapSize < 16 || light.shadowMapSize > 16384) {
+        if (light.shadowMapSize < 64 || light.shadowMapSize > 8192) {
             add(where + " shadow map size " + std::to_string(light.shadowMapSize) +
-                " is outside 16..16384");
+                " is outside 64..8192");
         }
         const ShadowCamera& c = light.shadowCamera;
         if (c.policy != ShadowCameraPolicy::Fit && !(c.near > 0.0f && c.far > c.near)) {

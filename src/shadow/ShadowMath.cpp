@@ -143,8 +143,7 @@ Aabb clipToFrustum(const Aabb& box, const glm::mat4& clipFromWorld,
             const int j = i | bit;
             if (j == i) continue;
             clipSegment(corners[size_t(i)], corners[size_t(j)], boxClip[i], boxClip[j], out);
-            clipSegment(frustum[size_t(i)], frustum[size_t(j)], frustumBox[i], frustumBox[j],
-                        out);
+            clipSegment(frustum[size_t(i)], frustum[size_t(j)], frustumBox[i], frustumBox[j], out);
         }
     }
     return intersect(out, box);  // rounding must not grow the box
@@ -158,9 +157,9 @@ FitBoxes visibleReceivers(const FitScene& scene) {
     if (scene.viewKnown) {
         const glm::mat4 worldFromClip = glm::inverse(scene.viewClipFromWorld);
         for (int i = 0; i < 8; ++i) {
-            const glm::vec4 p = worldFromClip * glm::vec4(i & 1 ? 1.0f : -1.0f,
-                                                          i & 2 ? 1.0f : -1.0f,
-                                                          i & 4 ? 1.0f : -1.0f, 1.0f);
+            const glm::vec4 p =
+                worldFromClip *
+                glm::vec4(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f, 1.0f);
             frustum[size_t(i)] = glm::vec3(p) / p.w;
         }
     }
@@ -214,14 +213,13 @@ LightCameraFrame fitOrthographic(const glm::vec3& direction, const FitBoxes& box
     glm::vec2 lo = glm::max(glm::vec2(receivers.min), glm::vec2(casters.min));
     glm::vec2 hi = glm::min(glm::vec2(receivers.max), glm::vec2(casters.max));
     float zNear = std::max(casters.max.z, receivers.min.z);  // nearest to the light
-    float zFar = receivers.min.z;                             // farthest from it
+    float zFar = receivers.min.z;                            // farthest from it
     // A margin keeps the outermost texels and depths inside the map: relative to the box
     // on each axis, and never below the float rounding of light-space coordinates, which
     // grows with their distance from the world origin (a small box far away).
-    const float worldScale = std::max({glm::length(glm::vec3(receivers.max)),
-                                       glm::length(glm::vec3(receivers.min)),
-                                       glm::length(glm::vec3(casters.max)),
-                                       glm::length(glm::vec3(casters.min))});
+    const float worldScale =
+        std::max({glm::length(glm::vec3(receivers.max)), glm::length(glm::vec3(receivers.min)),
+                  glm::length(glm::vec3(casters.max)), glm::length(glm::vec3(casters.min))});
     const glm::vec3 margin = glm::max(1e-3f * glm::vec3(hi - lo, zNear - zFar),
                                       glm::vec3(16.0f * FLT_EPSILON * worldScale));
     lo -= glm::vec2(margin);
@@ -258,8 +256,7 @@ LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, flo
     f.lightFromWorld = safeLookAt(eye, eye + axis, glm::vec3(0, 1, 0));
     f.valid = false;
     // The cone's four side planes (no near or far): what the map can see at all.
-    const glm::mat4 cone =
-        glm::infinitePerspective(fovyRadians, 1.0f, 1.0f) * f.lightFromWorld;
+    const glm::mat4 cone = glm::infinitePerspective(fovyRadians, 1.0f, 1.0f) * f.lightFromWorld;
     float farthest = 0.0f;
     for (const Aabb& r : boxes.receivers) {
         if (outsideClipVolume(r, cone, true)) continue;

@@ -39,7 +39,7 @@ malformed_size)
     ;;
 bad_enum)
     run render --scene book-triangle --filter blurry --out "$work/a.png"
-    expect 2 "--filter: expected one of none, hw2x2, pcf, poisson, got 'blurry'"
+    expect 2 "--filter: expected one of none, hw2x2, pcf, poisson, pcss, got 'blurry'"
     ;;
 bad_light)
     run render --scene book-triangle --light-only 3 --out "$work/a.png"
@@ -50,8 +50,9 @@ help)
     expect 0 "--shadows"
     for flag in --size --time --light-only --shadow-maps --outside --map-size --bias-constant \
                 --bias-depth-aware --preset \
-                --bias-slope --normal-offset --cull --filter --pcf-size --shadowed --depth-format \
-                --map-filter; do
+                --bias-slope --bias-units --normal-offset --cull --filter --pcf-size \
+                --light-radius --light-angle --cascades --cascade-lambda --cascade-blend \
+                --debug-view --shadowed --shadow-factor --depth-format --map-filter; do
         grep -qF -- "$flag" "$work/stdout" || fail "help lacks $flag"
     done
     grep -qF -- "default" "$work/stdout" || fail "help shows no defaults"

@@ -52,12 +52,25 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BuiltinShadows, testing::ValuesIn(builtinCases(
 
 // Every filter and the course light cameras switched to perspective keep the property.
 TEST(Shadows, EachFilterKeepsShadowsWhereGeometrySays) {
-    for (ShadowFilter f :
-         {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf, ShadowFilter::Poisson}) {
+    for (ShadowFilter f : {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf,
+                           ShadowFilter::Poisson, ShadowFilter::Pcss}) {
         Scene scene = builtinScene("tutorial-room");
         RenderOptions o = scene.options;
         o.shadow.filter = f;
         SCOPED_TRACE(toString(f));
+        expectShadowsMatchGeometry(scene, o);
+    }
+}
+
+// PCSS through each light type's map (perspective, cube, orthographic from a plane): soft
+// edges, but shadowed where the geometry says and no acne or leaks elsewhere.
+TEST(Shadows, PcssOnEveryLightType) {
+    for (const char* name : {"tutorial-spot", "tutorial-point", "tutorial-area"}) {
+        Scene scene = builtinScene(name);
+        RenderOptions o = scene.options;
+        o.shadow.filter = ShadowFilter::Pcss;
+        o.shadow.lightRadius = 0.1f;
+        SCOPED_TRACE(name);
         expectShadowsMatchGeometry(scene, o);
     }
 }

@@ -145,8 +145,8 @@ TEST(FitReceivers, NothingVisibleToShadowNeedsNoMap) {
 TEST(FitReceivers, NoCastersNeedsNoMap) {
     shadow::FitScene s = blockOnFloor({0, 0, 0});
     s.casters.clear();
-    for (LightType type : {LightType::Directional, LightType::Area, LightType::Spot,
-                           LightType::Point}) {
+    for (LightType type :
+         {LightType::Directional, LightType::Area, LightType::Spot, LightType::Point}) {
         Light l = sunAlong({0, -1, 0});
         l.type = type;
         l.position = {0, 8, 0};

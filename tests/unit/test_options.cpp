@@ -81,6 +81,15 @@ INSTANTIATE_TEST_SUITE_P(
         InvalidCase{"pcf-size=11", [](RenderOptions& o) { o.shadow.pcfSize = 11; }, "pcf-size"},
         InvalidCase{"map-size=8", [](RenderOptions& o) { o.shadow.mapSize = 8; }, "map-size"},
         InvalidCase{"map-size=-1", [](RenderOptions& o) { o.shadow.mapSize = -1; }, "map-size"},
+        InvalidCase{"map-size=32", [](RenderOptions& o) { o.shadow.mapSize = 32; }, "map-size"},
+        InvalidCase{"map-size=16384", [](RenderOptions& o) { o.shadow.mapSize = 16384; },
+                    "map-size"},
+        InvalidCase{"light-radius=-1", [](RenderOptions& o) { o.shadow.lightRadius = -1.0f; },
+                    "light-radius"},
+        InvalidCase{"light-radius=NaN", [](RenderOptions& o) { o.shadow.lightRadius = kNaN; },
+                    "light-radius"},
+        InvalidCase{"light-angle=30", [](RenderOptions& o) { o.shadow.lightAngle = 30.0f; },
+                    "light-angle"},
         InvalidCase{"shadow-factor=2", [](RenderOptions& o) { o.shading.shadowFactor = 2.0f; },
                     "shadow-factor"},
         InvalidCase{"shadow-factor=NaN", [](RenderOptions& o) { o.shading.shadowFactor = kNaN; },
@@ -117,11 +126,11 @@ TEST(Options, BoundaryValuesAreValid) {
     o.lightOnly = 0;
     o.shadow.biasConstant = 0.0f;
     o.shadow.pcfSize = 9;
-    o.shadow.mapSize = 16;
+    o.shadow.mapSize = 64;
     o.shading.shadowFactor = 1.0f;
     EXPECT_TRUE(o.validate().empty());
     o.shadow.pcfSize = 1;
-    o.shadow.mapSize = 16384;
+    o.shadow.mapSize = 8192;
     o.shading.shadowFactor = 0.0f;
     EXPECT_TRUE(o.validate().empty());
 }
