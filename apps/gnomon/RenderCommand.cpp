@@ -88,8 +88,9 @@ void RenderFlags::add(CLI::App& a) {
                  "fraction of each cascade blended into the next, 0..0.5 (default " +
                      str(s.cascadeBlend) + ")");
     a.add_option("--debug-view", debugView,
-                 "none|cascades: tint each pixel by the cascade its shadow came from "
-                 "(default none)");
+                 "none|cascades|shadow-map|light-frusta: tint by cascade, show one light's maps "
+                 "(--light-only's, else the first shadowed light's), or draw the shadow cameras' "
+                 "volumes (default none)");
     a.add_option("--depth-format", depthFormat,
                  "r8|rgba8-packed-256|rgba8-packed-255|depth16|depth24|depth32f: shadow map "
                  "storage (default depth32f; point-light cubes use depth32f for colour formats)");
@@ -150,7 +151,8 @@ void RenderFlags::apply(RenderOptions& o) const {
     if (given("--cascade-lambda")) o.shadow.cascadeLambda = cascadeLambda;
     if (given("--cascade-blend")) o.shadow.cascadeBlend = cascadeBlend;
     if (given("--debug-view")) {
-        o.debugView = parseEnum("--debug-view", debugView, parseDebugView, "none, cascades");
+        o.debugView = parseEnum("--debug-view", debugView, parseDebugView,
+                                "none, cascades, shadow-map, light-frusta");
     }
     if (given("--depth-format")) {
         o.shadow.depthFormat =

@@ -82,7 +82,11 @@ struct ShadowOptions {
 // Diagnostic renderings (DESIGN: debug views are features).
 enum class DebugView {
     None,
-    Cascades,  // tint each pixel by the cascade its shadow came from (red, green, blue, yellow)
+    Cascades,     // tint each pixel by the cascade its shadow came from (red, green, blue, yellow)
+    ShadowMap,    // instead of the scene, one light's maps in grey (lightOnly's, else the first
+                  // shadowed light's): cascades side by side, a cube's faces in two rows
+    LightFrusta,  // the scene with every shadow camera's volume drawn as lines, one colour per
+                  // light
 };
 
 struct ShadingOptions {

@@ -49,7 +49,9 @@ const std::pair<const char*, Preset> kPresets[] = {{"default", Preset::Default},
                                                    {"textbook", Preset::Textbook}};
 
 const std::pair<const char*, DebugView> kDebugViews[] = {{"none", DebugView::None},
-                                                         {"cascades", DebugView::Cascades}};
+                                                         {"cascades", DebugView::Cascades},
+                                                         {"shadow-map", DebugView::ShadowMap},
+                                                         {"light-frusta", DebugView::LightFrusta}};
 
 bool finite(float v) {
     return std::isfinite(v);

@@ -48,6 +48,15 @@ Texture Texture::cubeArray(const std::string& label, GLenum internalFormat, int 
     return Texture(n, internalFormat, size, size, 6 * cubes);
 }
 
+Texture Texture::layersView(const std::string& label, const Texture& source) {
+    GLuint n = 0;
+    glGenTextures(1, &n);  // a view needs a name that has no texture object yet
+    glTextureView(n, GL_TEXTURE_2D_ARRAY, source.id(), source.format(), 0, 1, 0,
+                  GLuint(source.layers()));
+    setLabel(GL_TEXTURE, n, label);
+    return Texture(n, source.format(), source.width(), source.height(), source.layers());
+}
+
 Texture Texture::plain2D(const std::string& label, GLenum internalFormat, int width, int height) {
     GLuint n = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &n);

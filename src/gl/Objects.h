@@ -63,6 +63,9 @@ public:
     static Texture cubeArray(const std::string& label, GLenum internalFormat, int size, int cubes);
     // 2D texture, one mip level.
     static Texture plain2D(const std::string& label, GLenum internalFormat, int width, int height);
+    // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
+    // storage.
+    static Texture layersView(const std::string& label, const Texture& source);
     int width() const { return mWidth; }
     int height() const { return mHeight; }
     int layers() const { return mLayers; }  // array layers; cube arrays: 6 per cube

@@ -7,6 +7,7 @@
 
 #include "gl/Context.h"
 #include "gnomon/Error.h"
+#include "render/DebugPass.h"
 #include "render/GpuScene.h"
 #include "render/MainPass.h"
 #include "render/ShadowPass.h"
@@ -49,6 +50,7 @@ struct Renderer::Impl {
     render::GpuScene scene;
     render::ShadowPass shadowPass;
     render::MainPass mainPass;
+    render::DebugPass debugPass;
     gl::Texture colour, depth;
     gl::Framebuffer target;
     std::vector<render::ShadowedLight> shadowed;
@@ -261,7 +263,25 @@ struct Renderer::Impl {
         }
         in.shadowMaps = any2D ? &shadowPass.maps() : nullptr;
         in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
-        mainPass.render(scene, in, options);
+        if (options.debugView == DebugView::ShadowMap) {
+            const int light = options.lightOnly >= 0 ? options.lightOnly
+                              : shadowed.empty()     ? -1
+                                                     : shadowed.front().light;
+            if (!debugPass.drawMaps(shadowPass, shadowed, light, options.width, options.height)) {
+                throw Error(ErrorKind::InvalidInput,
+                            light < 0 ? "debug-view shadow-map: no light of scene '" + s.name +
+                                            "' has a shadow map in this frame"
+                                      : "debug-view shadow-map: light " + std::to_string(light) +
+                                            " of scene '" + s.name +
+                                            "' has no shadow map in this frame (off, not "
+                                            "casting, or nothing in view to shadow)");
+            }
+        } else {
+            mainPass.render(scene, in, options);
+            if (options.debugView == DebugView::LightFrusta) {
+                debugPass.drawFrusta(shadowed, in.clipFromView * viewFromWorld);
+            }
+        }
 
         Image image(options.width, options.height, 4);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
