@@ -2,6 +2,8 @@
 // Renderer::render (shadow passes, main pass, read-back; the read-back waits for the GPU).
 // Three cases side by side in one run: maps cached (static scenes keep their maps), maps
 // re-rendered every frame, and shadows off, the reference a shadowed frame is judged by.
+// Then the lookup filters side by side on tutorial-room (maps cached: the filter's cost is
+// in the main pass).
 #include <benchmark/benchmark.h>
 
 #include <gnomon/gnomon.h>
@@ -42,6 +44,27 @@ const int kRegistered = [] {
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
         }
+    }
+    const std::pair<const char*, gnomon::ShadowFilter> filters[] = {
+        {"none", gnomon::ShadowFilter::None},
+        {"hw2x2", gnomon::ShadowFilter::Hw2x2},
+        {"pcf3", gnomon::ShadowFilter::Pcf},
+        {"poisson", gnomon::ShadowFilter::Poisson},
+        {"pcss", gnomon::ShadowFilter::Pcss}};
+    for (auto [label, filter] : filters) {
+        benchmark::RegisterBenchmark(
+            (std::string("filter/tutorial-room/512/") + label).c_str(),
+            [filter](benchmark::State& state) {
+                const gnomon::Scene scene = gnomon::builtinScene("tutorial-room");
+                gnomon::RenderOptions options = scene.options;
+                options.width = options.height = 512;
+                options.shadow.filter = filter;
+                renderer().render(scene, options);
+                for (auto _ : state)
+                    benchmark::DoNotOptimize(renderer().render(scene, options));
+            })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
     }
     return 0;
 }();

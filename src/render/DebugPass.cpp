@@ -22,10 +22,9 @@ const char* packDefine(DepthFormat f) {
 
 // Distinct colours for up to eight lights, then repeating.
 glm::vec3 lightColour(int light) {
-    static const glm::vec3 kColours[8] = {{1.0f, 0.9f, 0.2f}, {0.2f, 0.9f, 1.0f},
-                                          {1.0f, 0.4f, 0.9f}, {0.4f, 1.0f, 0.4f},
-                                          {1.0f, 0.55f, 0.2f}, {0.6f, 0.6f, 1.0f},
-                                          {1.0f, 0.3f, 0.3f}, {0.9f, 0.9f, 0.9f}};
+    static const glm::vec3 kColours[8] = {
+        {1.0f, 0.9f, 0.2f},  {0.2f, 0.9f, 1.0f}, {1.0f, 0.4f, 0.9f}, {0.4f, 1.0f, 0.4f},
+        {1.0f, 0.55f, 0.2f}, {0.6f, 0.6f, 1.0f}, {1.0f, 0.3f, 0.3f}, {0.9f, 0.9f, 0.9f}};
     return kColours[light % 8];
 }
 }  // namespace
@@ -115,7 +114,8 @@ void DebugPass::drawFrusta(const std::vector<ShadowedLight>& shadowed,
         for (int i = 0; i < 8; ++i) {
             for (int bit = 1; bit < 8; bit <<= 1) {
                 if (i & bit) continue;
-                mLineData.insert(mLineData.end(), {c[size_t(i)], colour, c[size_t(i | bit)], colour});
+                mLineData.insert(mLineData.end(),
+                                 {c[size_t(i)], colour, c[size_t(i | bit)], colour});
             }
         }
     };
@@ -126,14 +126,14 @@ void DebugPass::drawFrusta(const std::vector<ShadowedLight>& shadowed,
             // The six faces' frusta together: a cube of half-size `far` around the light.
             const glm::vec3 eye = glm::vec3(glm::inverse(sl.frame.lightFromWorld)[3]);
             for (int i = 0; i < 8; ++i) {
-                corners[size_t(i)] = eye + sl.frame.far * glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1,
-                                                                     i & 4 ? 1 : -1);
+                corners[size_t(i)] =
+                    eye + sl.frame.far * glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
             }
         } else {
             const glm::mat4 worldFromClip = glm::inverse(sl.frame.clipFromWorld());
             for (int i = 0; i < 8; ++i) {
-                const glm::vec4 p = worldFromClip * glm::vec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1,
-                                                              i & 4 ? 1 : -1, 1.0f);
+                const glm::vec4 p =
+                    worldFromClip * glm::vec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1, 1.0f);
                 corners[size_t(i)] = glm::vec3(p) / p.w;
             }
         }
@@ -154,8 +154,9 @@ void DebugPass::drawFrusta(const std::vector<ShadowedLight>& shadowed,
     }
     mLineBuffer.update(0, bytes, mLineData.data());
     if (!mLinesProgram) {
-        mLinesProgram = gl::buildProgram("debug lines", {{GL_VERTEX_SHADER, "debug_lines.vert.glsl"},
-                                                         {GL_FRAGMENT_SHADER, "debug_lines.frag.glsl"}});
+        mLinesProgram =
+            gl::buildProgram("debug lines", {{GL_VERTEX_SHADER, "debug_lines.vert.glsl"},
+                                             {GL_FRAGMENT_SHADER, "debug_lines.frag.glsl"}});
     }
     glUseProgram(mLinesProgram.id());
     glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld[0][0]);

@@ -27,7 +27,7 @@ private:
     std::map<DepthFormat, gl::Program> mMapsPrograms;
     gl::Program mLinesProgram;
     gl::Sampler mRawSampler;
-    gl::Texture mCubeView;      // the cube array's faces as a 2D array
+    gl::Texture mCubeView;       // the cube array's faces as a 2D array
     GLuint mCubeViewSource = 0;  // the cube array it views
     gl::VertexArray mEmpty, mLines;
     gl::Buffer mLineBuffer;

@@ -46,8 +46,7 @@ TEST(DebugViews, ShadowMapUnfoldsACubeInTwoRows) {
     const auto maps = sharedRenderer().shadowMaps();
     ASSERT_EQ(maps.size(), 1u);
     for (int face = 0; face < 6; ++face) {
-        EXPECT_EQ(mismatches(view, (face % 3) * 128, (face / 3) * 128, maps[0].depth, face, 128),
-                  0)
+        EXPECT_EQ(mismatches(view, (face % 3) * 128, (face / 3) * 128, maps[0].depth, face, 128), 0)
             << "face " << face;
     }
 }
