@@ -92,10 +92,23 @@ Aabb intersect(const Aabb& a, const Aabb& b) {
     return out.empty() ? Aabb{} : out;
 }
 
+// The vertices of a box clipped by a frustum: at most the ends of 24 clipped edges.
+struct ClippedPoints {
+    std::array<glm::vec3, 48> points;
+    int count = 0;
+    void extend(const glm::vec3& p) { points[size_t(count++)] = p; }
+    Aabb box() const {
+        Aabb b;
+        for (int i = 0; i < count; ++i)
+            b.extend(points[size_t(i)]);
+        return b;
+    }
+};
+
 // Clips the segment p0 -> p1 to where all six signed distances (linear along it) are >= 0;
 // adds the ends of what remains to `out`.
 void clipSegment(const glm::vec3& p0, const glm::vec3& p1, const float (&d0)[6],
-                 const float (&d1)[6], Aabb& out) {
+                 const float (&d1)[6], ClippedPoints& out) {
     float t0 = 0.0f, t1 = 1.0f;
     for (int k = 0; k < 6; ++k) {
         if (d0[k] < 0.0f && d1[k] < 0.0f) return;
@@ -124,12 +137,12 @@ void boxDistances(const Aabb& b, const glm::vec3& p, float (&d)[6]) {
     }
 }
 
-// The box around the part of `box` inside the clip volume of `clipFromWorld` (exact: the
+// The vertices of the part of `box` inside the clip volume of `clipFromWorld` (exact: the
 // intersection of two convex solids has its vertices on the edges of one clipped by the
-// other).
-Aabb clipToFrustum(const Aabb& box, const glm::mat4& clipFromWorld,
-                   const std::array<glm::vec3, 8>& frustum) {
-    Aabb out;
+// other). `frustum`: the volume's corners in world space, numbered by x, y, z bits.
+ClippedPoints clipToFrustum(const Aabb& box, const glm::mat4& clipFromWorld,
+                            const std::array<glm::vec3, 8>& frustum) {
+    ClippedPoints out;
     const std::array<glm::vec3, 8> corners = box.corners();
     float boxClip[8][6], frustumBox[8][6];
     for (int i = 0; i < 8; ++i) {
@@ -146,7 +159,18 @@ Aabb clipToFrustum(const Aabb& box, const glm::mat4& clipFromWorld,
             clipSegment(frustum[size_t(i)], frustum[size_t(j)], frustumBox[i], frustumBox[j], out);
         }
     }
-    return intersect(out, box);  // rounding must not grow the box
+    return out;
+}
+
+std::array<glm::vec3, 8> frustumCorners(const glm::mat4& clipFromWorld) {
+    const glm::mat4 worldFromClip = glm::inverse(clipFromWorld);
+    std::array<glm::vec3, 8> c{};
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 p = worldFromClip * glm::vec4(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f,
+                                                      i & 4 ? 1.0f : -1.0f, 1.0f);
+        c[size_t(i)] = glm::vec3(p) / p.w;
+    }
+    return c;
 }
 
 FitBoxes visibleReceivers(const FitScene& scene) {
@@ -154,22 +178,15 @@ FitBoxes visibleReceivers(const FitScene& scene) {
     f.casters = &scene.casters;
     f.snap = scene.viewKnown;
     std::array<glm::vec3, 8> frustum{};
-    if (scene.viewKnown) {
-        const glm::mat4 worldFromClip = glm::inverse(scene.viewClipFromWorld);
-        for (int i = 0; i < 8; ++i) {
-            const glm::vec4 p =
-                worldFromClip *
-                glm::vec4(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f, 1.0f);
-            frustum[size_t(i)] = glm::vec3(p) / p.w;
-        }
-    }
+    if (scene.viewKnown) frustum = frustumCorners(scene.viewClipFromWorld);
     for (const Aabb& r : scene.receivers) {
         if (r.empty()) continue;
         if (!scene.viewKnown) {
             f.receivers.push_back(r);
             continue;
         }
-        const Aabb clipped = clipToFrustum(r, scene.viewClipFromWorld, frustum);
+        // Rounding must not grow the box.
+        const Aabb clipped = intersect(clipToFrustum(r, scene.viewClipFromWorld, frustum).box(), r);
         if (!clipped.empty()) f.receivers.push_back(clipped);
     }
     return f;
@@ -265,13 +282,20 @@ LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, flo
         farthest = std::max(farthest, far);
     }
     if (!(farthest > 0.0f)) return f;
+    // Near at the nearest point of a caster inside the cone (not the nearest corner of its
+    // box: a floor reaching behind the light would pull near to ~0 and waste the depth
+    // precision of the whole map). Clipped to the cone from 1/1000 of far to far.
+    const glm::mat4 coneVolume =
+        glm::perspective(fovyRadians, 1.0f, farthest * 1e-3f, farthest * 1.01f) * f.lightFromWorld;
+    const std::array<glm::vec3, 8> coneCorners = frustumCorners(coneVolume);
     float nearestCaster = std::numeric_limits<float>::max();
     for (const Aabb& c : *boxes.casters) {
-        if (c.empty() || outsideClipVolume(c, cone, true)) continue;
-        float nearest = 0.0f, far = 0.0f;
-        depthRange(c, f.lightFromWorld, nearest, far);
-        if (nearest > farthest) continue;  // beyond every receiver
-        nearestCaster = std::min(nearestCaster, nearest);
+        if (c.empty() || outsideClipVolume(c, coneVolume, false)) continue;
+        const ClippedPoints inside = clipToFrustum(c, coneVolume, coneCorners);
+        for (int i = 0; i < inside.count; ++i) {
+            const float d = -(f.lightFromWorld * glm::vec4(inside.points[size_t(i)], 1.0f)).z;
+            nearestCaster = std::min(nearestCaster, d);
+        }
     }
     if (nearestCaster == std::numeric_limits<float>::max()) return f;
     // The light may sit inside the bounds: keep near positive, at most 1/1000 of far,

@@ -210,3 +210,39 @@ TEST(FitReceivers, SmallCameraMovesKeepTheSameCamera) {
 
 }  // namespace
 }  // namespace gnomon
+
+namespace gnomon {
+namespace {
+
+// A spot light tilted 45 degrees over a wide floor whose box reaches behind the light: near
+// sits at the nearest floor point inside the cone's frustum (~4.6 here), not at the box's
+// nearest corner (behind the light: near would fall to far / 1000 and a constant tolerance
+// in stored depth would span world units at the far end).
+TEST(FitReceivers, SpotNearIgnoresCasterPartsOutsideTheCone) {
+    shadow::FitScene s;
+    s.casters = {box({-50, -0.1f, -50}, {50, 0, 50})};
+    s.receivers = s.casters;
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0, 5, 0};
+    spot.direction = glm::normalize(glm::vec3(1, -1, 0));
+    spot.outerConeDegrees = 20.0f;
+    const auto f = shadow::lightCameraFrame(spot, Camera{}, s, 1024);
+    ASSERT_TRUE(f.valid);
+    EXPECT_GT(f.near, 4.0f);
+    EXPECT_LT(f.near, 5.2f);
+    // Every floor point the cone sees lies between near and far.
+    for (float x = 0.0f; x <= 30.0f; x += 0.5f) {
+        for (float z = -15.0f; z <= 15.0f; z += 0.5f) {
+            const glm::vec3 p(x, 0.0f, z);
+            const glm::vec3 toP = glm::normalize(p - spot.position);
+            if (glm::dot(toP, spot.direction) < std::cos(glm::radians(20.0f))) continue;
+            const float depth = -(f.lightFromWorld * glm::vec4(p, 1.0f)).z;
+            EXPECT_GE(depth, f.near) << x << ", " << z;
+            EXPECT_LE(depth, f.far) << x << ", " << z;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace gnomon
