@@ -5,6 +5,9 @@
 // A shadowed fragment keeps ambient only (SHADOWED_FACTOR undefined) or has its colour
 // multiplied by uShadowFactor per shadowing light (SHADOWED_FACTOR, the WebGL book's 0.7).
 // SHADOWS_OFF skips every lookup and leaves lighting unchanged.
+// VISIBILITY_PASS (gnomon score): after the main pass, the visible surfaces are drawn again
+// (depth test LEQUAL, no writes) and each light's visibility and the world size of the map
+// texel it came from are stored per pixel, one image layer per light.
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 
@@ -23,6 +26,11 @@ layout(location = 4) uniform float uShadowFactor;
 layout(location = 5) uniform mat4 uWorldFromView;
 
 layout(location = 0) out vec4 fragColour;
+
+#ifdef VISIBILITY_PASS
+layout(early_fragment_tests) in;
+layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
+#endif
 
 void main() {
     bool unlit = vIn.material.z > 0.5;
@@ -69,7 +77,12 @@ void main() {
 #ifndef SHADOWS_OFF
         if (receives && light.colour.w >= 0.0) {
             vec3 wsToLight = mat3(uWorldFromView) * vsToLight;
+            gTexelWorld = 0.0;
             visibility = shadowVisibility(light, vIn.wsPosition, wsN, wsToLight, -vIn.vsPosition.z);
+#ifdef VISIBILITY_PASS
+            imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), i),
+                       vec4(visibility, gTexelWorld, 0.0, 0.0));
+#endif
         }
 #endif
         if (unlit) {

@@ -10,6 +10,10 @@ layout(location = 2) in vec3 vertexColour;
 layout(location = 1) uniform mat4 uViewFromWorld;
 layout(location = 2) uniform mat4 uClipFromView;
 
+// The visibility pass redraws the main pass's surfaces with an equal-depth test: both
+// programs must compute the very same positions.
+invariant gl_Position;
+
 out VertexOut {
     vec3 wsPosition;
     vec3 wsNormal;

@@ -163,6 +163,9 @@ float pcssMap(LightData light, vec2 uv, float layer, float receiverStored, float
 }
 #endif
 
+// World size of the map texel behind the last lookup (gnomon score's aliasing band).
+float gTexelWorld = 0.0;
+
 // Point lights (SPEC S21): the cube face of the direction light -> point holds the depth
 // along that face's axis; compare against the same depth of this point. PCF taps lie in the
 // face's plane (a 2-D kernel on the face, not the tutorial's 3-D grid of directions: the
@@ -172,6 +175,7 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     float near = light.wsPosition.w, far = light.shadowBias.w;
     vec3 a = abs(toPoint);
     float major = max(a.x, max(a.y, a.z));
+    gTexelWorld = light.shadow.y * major;
     vec3 offset = normalOffset(light, wsNormal, wsToLight, light.shadow.y * major);
     toPoint += offset;
     a = abs(toPoint);
@@ -248,6 +252,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 
     vec4 clip = light.textureFromWorld * vec4(wsPosition, 1.0);
     float texelWorld = light.shadow.y * (light.shadow.z == kFrameOrthographic ? 1.0 : clip.w);
+    gTexelWorld = texelWorld;
     vec3 offset = normalOffset(light, wsNormal, wsToLight, texelWorld);
     vec4 shadowCoord = light.textureFromWorld * vec4(wsPosition + offset, 1.0);
     vec3 coord = shadowCoord.xyz / shadowCoord.w;

@@ -1,11 +1,13 @@
 // gnomon: the command-line tool. Subcommands: `scenes` lists the built-in scenes, `render`
-// draws one frame to a PNG (and optionally each light's shadow map). Exit codes: 0 success,
-// 1 failure (I/O, OpenGL), 2 bad usage or input.
+// draws one frame to a PNG (and optionally each light's shadow map), `score` measures its
+// shadows against a ray-traced reference. Exit codes: 0 success, 1 failure (I/O, OpenGL),
+// 2 bad usage or input, 3 score above --max-error.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 
 #include "RenderOptionsCli.h"
+#include "ScoreCommand.h"
 #include "gnomon/gnomon.h"
 
 namespace {
@@ -96,6 +98,9 @@ int main(int argc, char** argv) {
         "cubes: six faces side by side; 16-bit grey, darker = nearer)");
     render.flags.add(*renderCmd);
 
+    gnomon::cli::ScoreArgs scoreArgs;
+    CLI::App* scoreCmd = gnomon::cli::addScoreCommand(app, scoreArgs);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -109,6 +114,7 @@ int main(int argc, char** argv) {
     try {
         if (*scenes) return runScenes(namesOnly);
         if (*renderCmd) return runRender(render, verbose);
+        if (*scoreCmd) return gnomon::cli::runScore(scoreArgs, verbose);
     } catch (const gnomon::Error& e) {
         std::fprintf(stderr, "gnomon: error: %s\n", e.what());
         return e.kind() == gnomon::ErrorKind::InvalidInput ? 2 : 1;

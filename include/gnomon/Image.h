@@ -35,6 +35,8 @@ void writePng(const std::string& path, const Image& image);
 void writePng(const std::string& path, const Image16& image);
 // Read a PNG as 8-bit RGBA. Throws gnomon::Error naming the file.
 Image readPng(const std::string& path);
+// Write text (JSON, CSV, SVG) the same way: to a temporary file, then renamed into place.
+void writeTextFile(const std::string& path, const std::string& text);
 
 // Difference between two images of the same size, as goldens are judged.
 struct ImageDiff {

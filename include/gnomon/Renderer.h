@@ -37,6 +37,15 @@ struct FrameStats {
     int castersCulled = 0;              // caster draws skipped as outside a light's volume
 };
 
+// Per pixel and light, what the main pass's shadow lookups returned (gnomon score): values at
+// [(y * width + x) * lights + light], rows top first. Lights without a lookup at a pixel
+// (off, not shadowed, a non-receiver, nothing drawn) read visibility 1 and texel size 0.
+struct ShadowVisibility {
+    int width = 0, height = 0, lights = 0;
+    std::vector<float> visibility;  // 0 shadowed .. 1 lit
+    std::vector<float> texelWorld;  // world size of the map texel the lookup used
+};
+
 class Renderer {
 public:
     // Creates the headless context; throws gnomon::Error (kind Gl) with one sentence
@@ -48,6 +57,8 @@ public:
 
     // Renders one frame. Throws gnomon::Error for invalid options or scenes.
     Image render(const Scene& scene, const RenderOptions& options);
+    // The same frame, and each light's shadow visibility per pixel as the main pass computed it.
+    Image render(const Scene& scene, const RenderOptions& options, ShadowVisibility& visibility);
     // The shadow maps of the last frame, one per shadowed light.
     std::vector<ShadowMapImage> shadowMaps();
     FrameStats lastFrameStats() const;

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "gnomon/Error.h"
+#include "gnomon/Image.h"
 
 namespace gnomon {
 
@@ -50,6 +51,14 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
         ::unlink(tmpl.c_str());
         throw Error(ErrorKind::Io, "cannot write '" + path + "': " + reason);
     }
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    writeFileAtomically(path, [&](std::FILE* f) {
+        if (std::fwrite(text.data(), 1, text.size(), f) != text.size()) {
+            throw Error(ErrorKind::Io, "cannot write '" + path + "': " + std::strerror(errno));
+        }
+    });
 }
 
 }  // namespace gnomon

@@ -26,8 +26,10 @@ MainPass::MainPass() {
                          GL_DYNAMIC_STORAGE_BIT);
 }
 
-const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in) {
+const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
+                                     bool visibilityPass) {
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
+    if (visibilityPass) defines.push_back("VISIBILITY_PASS");
     const ShadowOptions& s = options.shadow;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
     if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
@@ -86,9 +88,9 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     return it->second;
 }
 
-void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
-                      const RenderOptions& options) {
-    const gl::Program& prog = program(options, in);
+void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
+                      const gl::Texture* visibility) {
+    const gl::Program& prog = program(options, in, false);
 
     // Lights: upload only when they differ from what the GPU holds.
     const std::vector<GpuLight>& lights = *in.lights;
@@ -150,14 +152,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
         glBindSampler(3, mRawSampler.id());
     }
 
-    glUseProgram(prog.id());
     const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
-    glUniformMatrix4fv(1, 1, GL_FALSE, &in.viewFromWorld[0][0]);
-    glUniformMatrix4fv(2, 1, GL_FALSE, &in.clipFromView[0][0]);
-    glUniform3fv(3, 1, &in.ambient[0]);
-    glUniform1f(4, options.shading.shadowFactor);
-    glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
-    glUniform1i(6, GLint(in.lightCount));
     // Spacing of stored depths per kind of map; -1 asks the shader for a float ulp.
     auto spacing = [](DepthFormat f) {
         return f == DepthFormat::Depth32F ? -1.0f : shadow::storedDepthSpacing(f, 0.5f);
@@ -165,24 +160,47 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in,
     const DepthFormat cubeFormat = isColourFormat(options.shadow.depthFormat)
                                        ? DepthFormat::Depth32F
                                        : options.shadow.depthFormat;
-    glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
-                spacing(cubeFormat));
+    auto draw = [&](const gl::Program& p) {
+        glUseProgram(p.id());
+        glUniformMatrix4fv(1, 1, GL_FALSE, &in.viewFromWorld[0][0]);
+        glUniformMatrix4fv(2, 1, GL_FALSE, &in.clipFromView[0][0]);
+        glUniform3fv(3, 1, &in.ambient[0]);
+        glUniform1f(4, options.shading.shadowFactor);
+        glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
+        glUniform1i(6, GLint(in.lightCount));
+        glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
+                    spacing(cubeFormat));
+        bool culling = false;
+        glDisable(GL_CULL_FACE);
+        for (const DrawItem& item : scene.items()) {
+            if (item.doubleSided == culling) {
+                culling = !item.doubleSided;
+                culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+            }
+            scene.draw(item);
+        }
+        glDisable(GL_CULL_FACE);
+    };
 
     scene.bind();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glCullFace(GL_BACK);
-    bool culling = false;
-    glDisable(GL_CULL_FACE);
-    for (const DrawItem& item : scene.items()) {
-        if (item.doubleSided == culling) {
-            culling = !item.doubleSided;
-            culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-        }
-        scene.draw(item);
+    draw(prog);
+    if (visibility) {
+        // The surfaces that won the depth test, again: each light's visibility per pixel.
+        glBindImageTexture(0, visibility->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_FALSE);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        draw(program(options, in, true));
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+        glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+        glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
     }
-    glDisable(GL_CULL_FACE);
     glBindSampler(0, 0);
     glBindSampler(1, 0);
     if (pcss) {

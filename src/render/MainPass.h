@@ -42,12 +42,16 @@ struct MainPassInputs {
 class MainPass {
 public:
     MainPass();
-    void render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options);
+    // Draws the frame; with `visibility` (an RG32F array, a layer per scene light), then
+    // stores each light's shadow visibility and map texel size for every visible pixel.
+    void render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
+                const gl::Texture* visibility = nullptr);
     // Lights one frame can hold: the uniform block size limit / the record size, at most 256.
     int maxLights() const { return mMaxLights; }
 
 private:
-    const gl::Program& program(const RenderOptions& options, const MainPassInputs& in);
+    const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
+                               bool visibilityPass);
 
     std::map<std::string, gl::Program> mPrograms;
     int mMaxLights = 0;

@@ -52,6 +52,7 @@ struct Renderer::Impl {
     render::MainPass mainPass;
     render::DebugPass debugPass;
     gl::Texture colour, depth;
+    gl::Texture visibilityTexture;  // RG32F, a layer per light: gnomon score only
     gl::Framebuffer target;
     std::vector<render::ShadowedLight> shadowed;
     std::vector<render::GpuLight> lights;          // scene lights, then cascade records
@@ -191,6 +192,37 @@ struct Renderer::Impl {
         }
     }
 
+    // The visibility pass's layers as ShadowVisibility's interleaved, top-down values. With
+    // the shadow-map debug view nothing was drawn: every pixel reads lit.
+    void readVisibility(const Scene& s, const RenderOptions& options, ShadowVisibility& out) {
+        out.width = options.width;
+        out.height = options.height;
+        out.lights = int(s.lights.size());
+        const std::size_t pixels = std::size_t(out.width) * std::size_t(out.height);
+        out.visibility.assign(pixels * std::size_t(out.lights), 1.0f);
+        out.texelWorld.assign(pixels * std::size_t(out.lights), 0.0f);
+        if (out.lights == 0 || options.debugView == DebugView::ShadowMap) return;
+        std::vector<float> layers(pixels * 2 * std::size_t(out.lights));
+        glGetTextureImage(visibilityTexture.id(), 0, GL_RG, GL_FLOAT,
+                          GLsizei(layers.size() * sizeof(float)), layers.data());
+        for (int l = 0; l < out.lights; ++l) {
+            for (int y = 0; y < out.height; ++y) {
+                const float* src =
+                    &layers[(std::size_t(l) * pixels +
+                             std::size_t(out.height - 1 - y) * std::size_t(out.width)) *
+                            2];
+                for (int x = 0; x < out.width; ++x) {
+                    const std::size_t cell =
+                        (std::size_t(y) * std::size_t(out.width) + std::size_t(x)) *
+                            std::size_t(out.lights) +
+                        std::size_t(l);
+                    out.visibility[cell] = src[2 * x];
+                    out.texelWorld[cell] = src[2 * x + 1];
+                }
+            }
+        }
+    }
+
     // After the shadow pass placed each map: layer, and the map's share of its array.
     void finishLights() {
         for (const render::ShadowedLight& sl : shadowed) {
@@ -203,7 +235,7 @@ struct Renderer::Impl {
         }
     }
 
-    Image render(const Scene& s, const RenderOptions& options) {
+    Image render(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
         if (auto problems = options.validate(); !problems.empty()) invalid(problems);
         if (auto problems = s.validate(); !problems.empty()) invalid(problems);
         if (s.lights.size() > std::size_t(mainPass.maxLights())) {
@@ -277,7 +309,20 @@ struct Renderer::Impl {
                                             "casting, or nothing in view to shadow)");
             }
         } else {
-            mainPass.render(scene, in, options);
+            const gl::Texture* visibilityTarget = nullptr;
+            if (visibility) {
+                const int layers = std::max<int>(1, int(s.lights.size()));
+                if (!visibilityTexture || visibilityTexture.width() != options.width ||
+                    visibilityTexture.height() != options.height ||
+                    visibilityTexture.layers() != layers) {
+                    visibilityTexture = gl::Texture::array2D("shadow visibility", GL_RG32F,
+                                                             options.width, options.height, layers);
+                }
+                const float unset[2] = {1.0f, 0.0f};
+                glClearTexImage(visibilityTexture.id(), 0, GL_RG, GL_FLOAT, unset);
+                visibilityTarget = &visibilityTexture;
+            }
+            mainPass.render(scene, in, options, visibilityTarget);
             if (options.debugView == DebugView::LightFrusta) {
                 debugPass.drawFrusta(shadowed, in.clipFromView * viewFromWorld);
             }
@@ -293,6 +338,7 @@ struct Renderer::Impl {
             std::swap_ranges(image.at(0, y), image.at(0, y) + row,
                              image.at(0, options.height - 1 - y));
         }
+        if (visibility) readVisibility(s, options, *visibility);
         return image;
     }
 };
@@ -301,7 +347,12 @@ Renderer::Renderer(const ContextOptions& options) : mImpl(std::make_unique<Impl>
 Renderer::~Renderer() = default;
 
 Image Renderer::render(const Scene& scene, const RenderOptions& options) {
-    return mImpl->render(scene, options);
+    return mImpl->render(scene, options, nullptr);
+}
+
+Image Renderer::render(const Scene& scene, const RenderOptions& options,
+                       ShadowVisibility& visibility) {
+    return mImpl->render(scene, options, &visibility);
 }
 
 std::vector<ShadowMapImage> Renderer::shadowMaps() {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # CLI behaviour: exit codes and messages. Usage: cli_test.sh GNOMON_BINARY CASE WORKDIR
-# Exit codes of gnomon: 0 success, 1 failure (I/O, GL), 2 bad usage or input.
+# Exit codes of gnomon: 0 success, 1 failure (I/O, GL), 2 bad usage or input, 3 score above
+# --max-error.
 set -uo pipefail
 gnomon=$1; case=$2; work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -16,6 +17,21 @@ skip_without_gl() {
 }
 
 case $case in
+score)
+    run score --scene tutorial-room --size 96x96 --out-dir "$work/s"
+    skip_without_gl
+    expect 0 "misclassified"
+    expect 0 "directional"
+    for f in render.png errors.png score.json; do [[ -s "$work/s/$f" ]] || fail "no $f"; done
+    grep -q '"false_shadow"' "$work/s/score.json" || fail "score.json lacks false_shadow"
+    # No tolerance at all: acne everywhere, above any sensible bound: exit 3.
+    run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --bias-constant 0 \
+        --bias-depth-aware 0 --bias-slope 0 --bias-units 0 --normal-offset 0 --cull none \
+        --max-error 0.05
+    expect 3 "exceeds --max-error"
+    run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --max-error 2
+    expect 2 "--max-error must be a fraction"
+    ;;
 unknown_scene)
     run render --scene no-such-scene --out "$work/a.png"
     expect 2 "unknown scene 'no-such-scene'"

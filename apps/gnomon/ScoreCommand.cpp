@@ -1,0 +1,86 @@
+#include "ScoreCommand.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "gnomon/gnomon.h"
+
+namespace gnomon::cli {
+
+CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "score", "render one frame and score its shadows against a ray-traced reference");
+    cmd->add_option("--scene", args.scene,
+                    "built-in scene name (see `gnomon scenes`) or model file")
+        ->required();
+    cmd->add_option("--out-dir", args.outDir,
+                    "folder for render.png, errors.png (false shadow red, leaks blue, pale "
+                    "inside the aliasing band) and score.json (default score)");
+    cmd->add_option("--band", args.options.bandTexels,
+                    "aliasing band: map texels either side of a reference shadow boundary, "
+                    "0..64 (default " +
+                        std::to_string(int(args.options.bandTexels)) + ")");
+    cmd->add_option("--soft-samples", args.options.softSamples,
+                    "rays per pixel to the light's surface for the soft reference (filter pcss), "
+                    "1..4096 (default " +
+                        std::to_string(args.options.softSamples) + ")");
+    cmd->add_option("--max-error", args.maxError,
+                    "exit 3 when the overall misclassified fraction exceeds this, 0..1 "
+                    "(default: never)");
+    args.flags.add(*cmd);
+    return cmd;
+}
+
+namespace {
+void printRow(const ShadowScore& s) {
+    const std::string light = s.light < 0 ? "all" : std::to_string(s.light);
+    std::printf("%5s  %-11s %9ld  %12.3f%%  %11.3f%%  %8.3f%%  %12.3f%%  %8.3f%%  %9.4f\n",
+                light.c_str(), s.type.c_str(), s.pixels, 100.0 * s.misclassified,
+                100.0 * s.falseShadow, 100.0 * s.leak, 100.0 * s.falseShadowOutsideBand,
+                100.0 * s.leakOutsideBand, s.meanAbsError);
+}
+}  // namespace
+
+int runScore(const ScoreArgs& args, bool verbose) {
+    if (args.maxError != -1.0 && !(args.maxError >= 0.0 && args.maxError <= 1.0)) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--max-error must be a fraction in [0, 1], got " + std::to_string(args.maxError));
+    }
+    Scene scene = loadScene(args.scene);
+    const RenderOptions options = args.flags.resolve(scene);
+    ContextOptions context;
+    context.verbose = verbose;
+    Renderer renderer(context);
+    const ScoreResult r = score(renderer, scene, options, args.options);
+
+    std::error_code ec;
+    std::filesystem::create_directories(args.outDir, ec);
+    if (ec) {
+        throw Error(ErrorKind::Io,
+                    "--out-dir: cannot create folder '" + args.outDir + "': " + ec.message());
+    }
+    writePng(args.outDir + "/render.png", r.render);
+    writePng(args.outDir + "/errors.png", r.errors);
+    writeTextFile(args.outDir + "/score.json", toJson(r, scene.name, options));
+
+    std::printf("gnomon score: %s, %dx%d, filter %s, %s; reference: %s shadows, traced in %.2f s\n",
+                scene.name.c_str(), options.width, options.height, toString(options.shadow.filter),
+                toString(options.shadow.depthFormat),
+                r.softReference ? "soft (pcss)" : "hard", r.traceSeconds);
+    std::printf("%5s  %-11s %9s  %13s  %12s  %9s  %13s  %9s  %9s\n", "light", "type", "pixels",
+                "misclassified", "false shadow", "leak", "outside band:", "leak", "mean |err|");
+    std::printf("%5s  %-11s %9s  %13s  %12s  %9s  %13s  %9s  %9s\n", "", "", "", "", "", "",
+                "false shadow", "", "");
+    for (const ShadowScore& s : r.lights)
+        printRow(s);
+    printRow(r.overall);
+    std::printf("wrote %s/render.png, errors.png, score.json\n", args.outDir.c_str());
+    if (args.maxError >= 0.0 && r.overall.misclassified > args.maxError) {
+        std::fprintf(stderr, "gnomon: misclassified %.4f%% exceeds --max-error %.4f%%\n",
+                     100.0 * r.overall.misclassified, 100.0 * args.maxError);
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace gnomon::cli

@@ -1,0 +1,81 @@
+// gnomon::score: the renderer's per-pixel visibility against the ray-traced reference.
+#include "gnomon/Score.h"
+
+#include <chrono>
+
+#include <nlohmann/json.hpp>
+
+#include "gnomon/Error.h"
+#include "gnomon/Renderer.h"
+#include "truth/Metrics.h"
+#include "truth/Reference.h"
+
+namespace gnomon {
+
+ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+                  const ScoreOptions& scoreOptions) {
+    if (!(scoreOptions.softSamples >= 1 && scoreOptions.softSamples <= 4096)) {
+        throw Error(ErrorKind::InvalidInput, "soft-samples must be in 1..4096, got " +
+                                                 std::to_string(scoreOptions.softSamples));
+    }
+    if (!(scoreOptions.bandTexels >= 0.0f && scoreOptions.bandTexels <= 64.0f)) {
+        throw Error(ErrorKind::InvalidInput, "band must be in [0, 64] texels, got " +
+                                                 std::to_string(scoreOptions.bandTexels));
+    }
+    if (options.debugView != DebugView::None) {
+        throw Error(ErrorKind::InvalidInput,
+                    "score needs the scene as rendered: use --debug-view none");
+    }
+    ScoreResult result;
+    ShadowVisibility visibility;
+    result.render = renderer.render(scene, options, visibility);
+    result.softReference = options.shadow.filter == ShadowFilter::Pcss;
+    truth::ReferenceOptions ro;
+    ro.softSamples = result.softReference ? scoreOptions.softSamples : 0;
+    ro.threads = scoreOptions.threads;
+    const auto start = std::chrono::steady_clock::now();
+    const truth::Reference reference = truth::traceReference(scene, options, ro);
+    result.traceSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const truth::Scores scores =
+        truth::scoreVisibility(scene, reference, visibility.visibility, visibility.texelWorld,
+                               scoreOptions.bandTexels, result.softReference);
+    result.lights = scores.lights;
+    result.overall = scores.overall;
+    result.errors = truth::errorMap(reference, visibility.visibility, visibility.texelWorld,
+                                    scoreOptions.bandTexels, result.softReference, result.render);
+    return result;
+}
+
+namespace {
+nlohmann::json toJson(const ShadowScore& s) {
+    return {{"light", s.light},
+            {"type", s.type},
+            {"pixels", s.pixels},
+            {"band_pixels", s.bandPixels},
+            {"misclassified", s.misclassified},
+            {"false_shadow", s.falseShadow},
+            {"leak", s.leak},
+            {"false_shadow_outside_band", s.falseShadowOutsideBand},
+            {"leak_outside_band", s.leakOutsideBand},
+            {"mean_abs_error", s.meanAbsError}};
+}
+}  // namespace
+
+std::string toJson(const ScoreResult& r, const std::string& scene, const RenderOptions& o) {
+    nlohmann::json j;
+    j["scene"] = scene;
+    j["width"] = o.width;
+    j["height"] = o.height;
+    j["filter"] = toString(o.shadow.filter);
+    j["depth_format"] = toString(o.shadow.depthFormat);
+    j["soft_reference"] = r.softReference;
+    j["trace_seconds"] = r.traceSeconds;
+    j["overall"] = toJson(r.overall);
+    j["lights"] = nlohmann::json::array();
+    for (const ShadowScore& s : r.lights)
+        j["lights"].push_back(toJson(s));
+    return j.dump(2) + "\n";
+}
+
+}  // namespace gnomon

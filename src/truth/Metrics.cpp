@@ -1,0 +1,230 @@
+#include "truth/Metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gnomon::truth {
+
+namespace {
+
+constexpr float kFar = 1e20f;
+
+// One row or column: d[i] = min_j (i - j)^2 + f[j] (the lower envelope of parabolas).
+void distance1D(const float* f, float* d, int n, std::vector<int>& v, std::vector<float>& z) {
+    v.resize(std::size_t(n));
+    z.resize(std::size_t(n) + 1);
+    int k = 0;
+    v[0] = 0;
+    z[0] = -std::numeric_limits<float>::infinity();
+    z[1] = std::numeric_limits<float>::infinity();
+    for (int q = 1; q < n; ++q) {
+        float s = 0.0f;
+        for (;;) {
+            const int p = v[std::size_t(k)];
+            s = ((f[q] + float(q) * float(q)) - (f[p] + float(p) * float(p))) /
+                (2.0f * float(q) - 2.0f * float(p));
+            if (s <= z[std::size_t(k)] && k > 0) {
+                --k;
+                continue;
+            }
+            break;
+        }
+        if (s <= z[std::size_t(k)]) {  // k == 0: replace the only parabola
+            v[0] = q;
+            z[1] = std::numeric_limits<float>::infinity();
+            continue;
+        }
+        ++k;
+        v[std::size_t(k)] = q;
+        z[std::size_t(k)] = s;
+        z[std::size_t(k) + 1] = std::numeric_limits<float>::infinity();
+    }
+    k = 0;
+    for (int q = 0; q < n; ++q) {
+        while (z[std::size_t(k) + 1] < float(q))
+            ++k;
+        const float dq = float(q - v[std::size_t(k)]);
+        d[q] = dq * dq + f[v[std::size_t(k)]];
+    }
+}
+
+bool occludedRef(const Reference& r, std::size_t cell, bool soft) {
+    return soft ? r.soft[cell] < 0.5f : r.hard[cell] < 0.5f;
+}
+
+// Per pixel x light: inside the aliasing band (within bandTexels map texels of a reference
+// shadow boundary of that light, and never less than a pixel).
+std::vector<std::uint8_t> bandOf(const Reference& r, const std::vector<float>& texelWorld,
+                                 float bandTexels, bool soft) {
+    const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
+    std::vector<std::uint8_t> band(pixels * std::size_t(r.lights), 0);
+    std::vector<std::uint8_t> seeds(pixels);
+    for (int l = 0; l < r.lights; ++l) {
+        std::fill(seeds.begin(), seeds.end(), 0);
+        bool any = false;
+        for (int y = 0; y < r.height; ++y) {
+            for (int x = 0; x < r.width; ++x) {
+                const std::size_t c = r.at(x, y, l);
+                if (!r.applies[c]) continue;
+                const bool occ = occludedRef(r, c, soft);
+                const int nx[2] = {x + 1, x}, ny[2] = {y, y + 1};
+                for (int k = 0; k < 2; ++k) {
+                    if (nx[k] >= r.width || ny[k] >= r.height) continue;
+                    const std::size_t n = r.at(nx[k], ny[k], l);
+                    if (r.applies[n] && occludedRef(r, n, soft) != occ) {
+                        seeds[std::size_t(y) * std::size_t(r.width) + std::size_t(x)] = 1;
+                        seeds[std::size_t(ny[k]) * std::size_t(r.width) + std::size_t(nx[k])] = 1;
+                        any = true;
+                    }
+                }
+            }
+        }
+        if (!any) continue;
+        const std::vector<float> d2 = squaredDistance(seeds, r.width, r.height);
+        for (std::size_t p = 0; p < pixels; ++p) {
+            const std::size_t c = p * std::size_t(r.lights) + std::size_t(l);
+            if (!r.applies[c]) continue;
+            const float ratio = r.pixelWorld[p] > 0.0f ? texelWorld[c] / r.pixelWorld[p] : 0.0f;
+            const float radius = std::max(1.0f, bandTexels * ratio);
+            band[c] = d2[p] <= radius * radius;
+        }
+    }
+    return band;
+}
+
+const char* typeName(LightType t) {
+    switch (t) {
+        case LightType::Directional:
+            return "directional";
+        case LightType::Spot:
+            return "spot";
+        case LightType::Point:
+            return "point";
+        case LightType::Area:
+            return "area";
+    }
+    return "?";
+}
+
+}  // namespace
+
+std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int width,
+                                   int height) {
+    std::vector<float> grid(seeds.size());
+    for (std::size_t i = 0; i < seeds.size(); ++i)
+        grid[i] = seeds[i] ? 0.0f : kFar;
+    const int longest = std::max(width, height);
+    std::vector<float> f(static_cast<std::size_t>(longest));
+    std::vector<float> d(static_cast<std::size_t>(longest));
+    std::vector<int> v;
+    std::vector<float> z;
+    for (int x = 0; x < width; ++x) {  // columns
+        for (int y = 0; y < height; ++y)
+            f[std::size_t(y)] = grid[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+        distance1D(f.data(), d.data(), height, v, z);
+        for (int y = 0; y < height; ++y)
+            grid[std::size_t(y) * std::size_t(width) + std::size_t(x)] = d[std::size_t(y)];
+    }
+    for (int y = 0; y < height; ++y) {  // then rows
+        float* row = &grid[std::size_t(y) * std::size_t(width)];
+        std::copy(row, row + width, f.begin());
+        distance1D(f.data(), row, width, v, z);
+    }
+    return grid;
+}
+
+Scores scoreVisibility(const Scene& scene, const Reference& r,
+                       const std::vector<float>& visibility, const std::vector<float>& texelWorld,
+                       float bandTexels, bool soft) {
+    const std::vector<std::uint8_t> band = bandOf(r, texelWorld, bandTexels, soft);
+    struct Counts {
+        long pixels = 0, band = 0, falseShadow = 0, leak = 0, falseOut = 0, leakOut = 0;
+        double absError = 0.0;
+    };
+    std::vector<Counts> perLight(std::size_t(r.lights));
+    const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        for (int l = 0; l < r.lights; ++l) {
+            const std::size_t c = p * std::size_t(r.lights) + std::size_t(l);
+            if (!r.applies[c]) continue;
+            Counts& k = perLight[std::size_t(l)];
+            const bool refShadowed = occludedRef(r, c, soft);
+            const bool shadowed = visibility[c] < 0.5f;
+            ++k.pixels;
+            k.band += band[c];
+            if (shadowed && !refShadowed) {
+                ++k.falseShadow;
+                k.falseOut += !band[c];
+            } else if (!shadowed && refShadowed) {
+                ++k.leak;
+                k.leakOut += !band[c];
+            }
+            k.absError += std::fabs(double(visibility[c]) - (soft ? r.soft[c] : r.hard[c]));
+        }
+    }
+    auto finish = [](const Counts& k, ShadowScore& s) {
+        s.pixels = k.pixels;
+        s.bandPixels = k.band;
+        const double n = k.pixels > 0 ? double(k.pixels) : 1.0;
+        s.falseShadow = double(k.falseShadow) / n;
+        s.leak = double(k.leak) / n;
+        s.misclassified = s.falseShadow + s.leak;
+        s.falseShadowOutsideBand = double(k.falseOut) / n;
+        s.leakOutsideBand = double(k.leakOut) / n;
+        s.meanAbsError = k.absError / n;
+    };
+    Scores out;
+    out.overall.type = "all";
+    Counts total;
+    for (std::size_t l = 0; l < perLight.size(); ++l) {
+        const Counts& k = perLight[l];
+        if (k.pixels == 0) continue;
+        ShadowScore s;
+        s.light = int(l);
+        s.type = typeName(scene.lights[l].type);
+        finish(k, s);
+        out.lights.push_back(s);
+        total.pixels += k.pixels;
+        total.band += k.band;
+        total.falseShadow += k.falseShadow;
+        total.leak += k.leak;
+        total.falseOut += k.falseOut;
+        total.leakOut += k.leakOut;
+        total.absError += k.absError;
+    }
+    finish(total, out.overall);
+    return out;
+}
+
+Image errorMap(const Reference& r, const std::vector<float>& visibility,
+               const std::vector<float>& texelWorld, float bandTexels, bool soft,
+               const Image& render) {
+    const std::vector<std::uint8_t> band = bandOf(r, texelWorld, bandTexels, soft);
+    Image out(r.width, r.height, 3);
+    for (int y = 0; y < r.height; ++y) {
+        for (int x = 0; x < r.width; ++x) {
+            const std::uint8_t* c = render.at(x, y);
+            const std::uint8_t grey =
+                std::uint8_t((int(c[0]) + int(c[1]) + int(c[2])) / 3 * 2 / 5);
+            int kind = 0;  // 1 false shadow in band, 2 leak in band, 3 false, 4 leak
+            for (int l = 0; l < r.lights; ++l) {
+                const std::size_t cell = r.at(x, y, l);
+                if (!r.applies[cell]) continue;
+                const bool refShadowed = occludedRef(r, cell, soft);
+                const bool shadowed = visibility[cell] < 0.5f;
+                if (shadowed == refShadowed) continue;
+                const int k = (shadowed ? 1 : 2) + (band[cell] ? 0 : 2);
+                kind = std::max(kind, k);
+            }
+            static const std::uint8_t kColours[5][3] = {
+                {0, 0, 0}, {255, 170, 170}, {170, 200, 255}, {255, 40, 40}, {40, 120, 255}};
+            std::uint8_t* o = out.at(x, y);
+            for (int i = 0; i < 3; ++i)
+                o[i] = kind == 0 ? grey : kColours[kind][i];
+        }
+    }
+    return out;
+}
+
+}  // namespace gnomon::truth

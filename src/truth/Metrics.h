@@ -1,0 +1,38 @@
+// Scores rendered shadow visibility against the ray-traced reference (no GL): misclassified
+// pixels split into false shadow (acne: reference lit, rendered shadowed) and light leak
+// (peter-panning, missed casters: reference shadowed, rendered lit), each also counted only
+// outside the aliasing band around the reference's shadow boundaries, plus the mean absolute
+// visibility error. The error map colours what went wrong where.
+#pragma once
+
+#include <vector>
+
+#include "gnomon/Image.h"
+#include "gnomon/Score.h"
+#include "truth/Reference.h"
+
+namespace gnomon::truth {
+
+// `visibility` and `texelWorld` hold one value per pixel x light ([pixel * lights + light],
+// rows top first): the renderer's visibility (0 shadowed .. 1 lit) and the world size of
+// the map texel its lookup used (0: none). Hard metrics threshold visibility at 0.5; with
+// `soft`, the reference is the soft one (and is thresholded at 0.5 for the hard metrics).
+struct Scores {
+    std::vector<ShadowScore> lights;  // lights with scored pixels, in scene order
+    ShadowScore overall;
+};
+Scores scoreVisibility(const Scene& scene, const Reference& reference,
+                       const std::vector<float>& visibility, const std::vector<float>& texelWorld,
+                       float bandTexels, bool soft);
+
+// Per pixel: false shadow red, light leak blue (pale inside the aliasing band), elsewhere
+// the render in dim grey.
+Image errorMap(const Reference& reference, const std::vector<float>& visibility,
+               const std::vector<float>& texelWorld, float bandTexels, bool soft,
+               const Image& render);
+
+// Squared Euclidean distance (in pixels) from every pixel to the nearest `seed` pixel
+// (Felzenszwalb and Huttenlocher 2012); huge where there is no seed.
+std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int width, int height);
+
+}  // namespace gnomon::truth

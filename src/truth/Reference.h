@@ -1,0 +1,47 @@
+// Ray-traced ground truth (no GL): Embree 3 holds the scene's world-space triangles; for each
+// pixel of the view the surface the camera sees is traced from the same camera (through the
+// pixel's centre, where rasterisation samples too), and a shadow ray per light gives the
+// exact hard-shadow answer. Soft references: the fraction of N rays to points on the light's
+// surface (a disc of lightRadius for spot, point and area lights, a cone of lightAngle for
+// directional ones: the emitters PCSS models). Rows are split over all cores.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gnomon/Options.h"
+#include "gnomon/Scene.h"
+
+namespace gnomon::truth {
+
+struct ReferenceOptions {
+    int softSamples = 0;  // rays per pixel and light for the soft reference; 0: hard only
+    int threads = 0;      // 0: every core
+};
+
+// Per pixel (rows top first, as images), and per pixel x light at [pixel * lights + light].
+struct Reference {
+    int width = 0, height = 0, lights = 0;
+    std::vector<int> object;        // object index the camera sees, -1: nothing
+    std::vector<float> pixelWorld;  // world size of the pixel's footprint at the surface
+    // 1 where the light's shadow can show: the light is on and casts shadows, the object
+    // receives them, and the light reaches the surface (in front of it, inside a spot's
+    // cone, on the lit side of an area light's plane).
+    std::vector<std::uint8_t> applies;
+    std::vector<float> hard;  // 1 lit, 0 occluded (where applies)
+    std::vector<float> soft;  // fraction of the light's surface visible (softSamples > 0)
+
+    std::size_t at(int x, int y, int light) const {
+        return (std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(lights) +
+               std::size_t(light);
+    }
+};
+
+// Traces `scene` at options.time as the renderer would draw it at options.width x height.
+// Throws gnomon::Error (Gl kind is never used; InvalidInput for a scene Embree rejects).
+Reference traceReference(const Scene& scene, const RenderOptions& options,
+                         const ReferenceOptions& referenceOptions);
+
+}  // namespace gnomon::truth

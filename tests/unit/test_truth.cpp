@@ -1,0 +1,167 @@
+// Ray-traced ground truth and the score metrics (issue 4), without GL: the reference shadow
+// of a plate over a floor is the analytically computed outline; soft references are 0 in the
+// umbra, 1 outside and fractional across the penumbra; a perfect visibility buffer scores 0
+// and each kind of error lands in its own counter; the distance transform is exact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "scene/MeshBuilder.h"
+#include "truth/Metrics.h"
+#include "truth/Reference.h"
+
+namespace gnomon {
+namespace {
+
+constexpr int kSize = 64;
+
+// A 2 x 2 plate (a thin box) 2 above a 20 x 20 floor; an orthographic camera looks straight
+// down on x, z in [-4, 4] (up = -z, so image rows run along +z); the sun comes down at
+// 45 degrees along +x, so the plate's shadow is the plate moved by its height (2) along +x.
+Scene plateOverFloor() {
+    Scene s;
+    s.name = "plate";
+    Material m;
+    s.materials.push_back(m);
+    s.meshes.push_back(mesh::box("floor", {0.0f, -0.05f, 0.0f}, {20.0f, 0.1f, 20.0f}));
+    s.meshes.push_back(mesh::box("plate", {-1.0f, 2.0f, 0.0f}, {2.0f, 0.02f, 2.0f}));
+    s.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, true, true});
+    s.objects.push_back({"plate", 1, 0, glm::mat4(1.0f), {}, true, true});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+    s.lights.push_back(sun);
+    s.camera.projection = Projection::Orthographic;
+    s.camera.eye = {0.0f, 10.0f, 0.0f};
+    s.camera.centre = {0.0f, 0.0f, 0.0f};
+    s.camera.up = {0.0f, 0.0f, -1.0f};
+    s.camera.left = s.camera.bottom = -4.0f;
+    s.camera.right = s.camera.top = 4.0f;
+    s.camera.near = 1.0f;
+    s.camera.far = 20.0f;
+    s.options.width = s.options.height = kSize;
+    return s;
+}
+
+// World x, z of a pixel centre.
+glm::vec2 worldOf(int x, int y) {
+    return {-4.0f + (float(x) + 0.5f) * 8.0f / kSize, -4.0f + (float(y) + 0.5f) * 8.0f / kSize};
+}
+
+TEST(Truth, HardShadowIsTheAnalyticOutline) {
+    const Scene s = plateOverFloor();
+    const truth::Reference r = truth::traceReference(s, s.options, {});
+    ASSERT_EQ(r.width, kSize);
+    int shadowed = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec2 p = worldOf(x, y);
+            const bool onPlate = p.x > -2.0f && p.x < 0.0f && std::fabs(p.y) < 1.0f;
+            // The plate spans heights 1.99..2.01 and x -2..0: a ray at 45 degrees from floor
+            // point x meets it when x - h lies in [-2, 0] for some h in [1.99, 2.01], i.e. x
+            // in [-0.01, 2.01]. (No pixel centre lies within 0.05 of either end.)
+            const bool inShadow = p.x > -0.01f && p.x < 2.01f && std::fabs(p.y) < 1.0f;
+            const std::size_t pixel = std::size_t(y) * kSize + std::size_t(x);
+            ASSERT_EQ(r.object[pixel], onPlate ? 1 : 0) << x << ", " << y;
+            ASSERT_TRUE(r.applies[r.at(x, y, 0)]) << x << ", " << y;
+            if (onPlate) continue;
+            EXPECT_EQ(r.hard[r.at(x, y, 0)], inShadow ? 0.0f : 1.0f) << x << ", " << y;
+            shadowed += inShadow;
+        }
+    }
+    EXPECT_GT(shadowed, 200);
+    // Pixel footprint: 8 units over 64 pixels.
+    EXPECT_FLOAT_EQ(r.pixelWorld[0], 0.125f);
+}
+
+TEST(Truth, SoftShadowIsFractionalOnlyAcrossThePenumbra) {
+    Scene s = plateOverFloor();
+    RenderOptions o = s.options;
+    o.shadow.lightAngle = 5.0f;
+    truth::ReferenceOptions ro;
+    ro.softSamples = 256;
+    const truth::Reference r = truth::traceReference(s, o, ro);
+    // The penumbra along x around an edge at distance d (along the ray, 2 sqrt 2) spans
+    // +-d tan(5 deg) across the ray, sqrt 2 times that on the floor: +-0.35.
+    const int row = kSize / 2;
+    for (int x = 0; x < kSize; ++x) {
+        const glm::vec2 p = worldOf(x, row);
+        if (p.x < 0.0f) continue;  // the plate
+        const float v = r.soft[r.at(x, row, 0)];
+        if (p.x > 0.4f && p.x < 1.6f) {
+            EXPECT_EQ(v, 0.0f) << "umbra at x = " << p.x;
+        }
+        if (p.x > 2.4f) {
+            EXPECT_EQ(v, 1.0f) << "lit at x = " << p.x;
+        }
+        if (std::fabs(p.x - 2.0f) < 0.1f) {
+            EXPECT_GT(v, 0.25f) << "penumbra at x = " << p.x;
+            EXPECT_LT(v, 0.75f) << "penumbra at x = " << p.x;
+        }
+    }
+}
+
+TEST(Truth, NonCastersAndNonReceivers) {
+    Scene s = plateOverFloor();
+    s.objects[1].castsShadows = false;
+    truth::Reference r = truth::traceReference(s, s.options, {});
+    for (float h : r.hard)
+        EXPECT_EQ(h, 1.0f);
+    s = plateOverFloor();
+    s.objects[0].receivesShadows = false;
+    r = truth::traceReference(s, s.options, {});
+    EXPECT_FALSE(r.applies[r.at(50, 32, 0)]);  // floor pixel
+    EXPECT_TRUE(r.applies[r.at(16, 32, 0)]);   // plate pixel
+}
+
+TEST(Metrics, DistanceTransformIsExact) {
+    const int w = 37, h = 23;
+    std::mt19937 rng(5);
+    std::vector<std::uint8_t> seeds(std::size_t(w * h), 0);
+    for (int i = 0; i < 12; ++i)
+        seeds[rng() % seeds.size()] = 1;
+    const std::vector<float> d = truth::squaredDistance(seeds, w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            float best = 1e30f;
+            for (int sy = 0; sy < h; ++sy)
+                for (int sx = 0; sx < w; ++sx)
+                    if (seeds[std::size_t(sy * w + sx)])
+                        best = std::min(best, float((x - sx) * (x - sx) + (y - sy) * (y - sy)));
+            ASSERT_EQ(d[std::size_t(y * w + x)], best) << x << ", " << y;
+        }
+    }
+}
+
+TEST(Metrics, PerfectVisibilityScoresZeroAndEachErrorCountsOnce) {
+    const Scene s = plateOverFloor();
+    const truth::Reference r = truth::traceReference(s, s.options, {});
+    std::vector<float> visibility = r.hard;
+    // One map texel = one pixel: the band is max(1 pixel, 2 texels) = 2 pixels.
+    const std::vector<float> texel(r.hard.size(), 0.125f);
+    truth::Scores perfect = truth::scoreVisibility(s, r, visibility, texel, 2.0f, false);
+    ASSERT_EQ(perfect.lights.size(), 1u);
+    EXPECT_EQ(perfect.overall.pixels, long(kSize * kSize));
+    EXPECT_EQ(perfect.overall.misclassified, 0.0);
+    EXPECT_EQ(perfect.overall.meanAbsError, 0.0);
+    EXPECT_GT(perfect.overall.bandPixels, 0);
+
+    // Acne far from any boundary (x = 3.5 on the lit floor), a leak in the middle of the
+    // shadow (x = 1, outside the band), and a leak on the shadow's edge (inside the band).
+    auto column = [](float wx) { return int((wx + 4.0f) / 8.0f * kSize); };
+    visibility[r.at(column(3.5f), 50, 0)] = 0.0f;
+    visibility[r.at(column(1.0f), 32, 0)] = 1.0f;
+    visibility[r.at(column(1.9f), 32, 0)] = 1.0f;
+    const truth::Scores one = truth::scoreVisibility(s, r, visibility, texel, 2.0f, false);
+    const double n = double(kSize * kSize);
+    EXPECT_DOUBLE_EQ(one.overall.falseShadow, 1.0 / n);
+    EXPECT_DOUBLE_EQ(one.overall.falseShadowOutsideBand, 1.0 / n);
+    EXPECT_DOUBLE_EQ(one.overall.leak, 2.0 / n);
+    EXPECT_DOUBLE_EQ(one.overall.leakOutsideBand, 1.0 / n);
+    EXPECT_DOUBLE_EQ(one.overall.misclassified, 3.0 / n);
+    EXPECT_DOUBLE_EQ(one.overall.meanAbsError, 3.0 / n);
+}
+
+}  // namespace
+}  // namespace gnomon
