@@ -10,7 +10,7 @@ packages=(
     libglfw3-dev libimgui-dev libglm-dev libpng-dev libstb-dev libcli11-dev
     libtinygltf-dev nlohmann-json3-dev libembree-dev libassimp-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    xvfb xauth
+    xvfb xauth python3
 )
 
 missing=()

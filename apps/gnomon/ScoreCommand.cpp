@@ -43,8 +43,8 @@ void printRow(const ShadowScore& s) {
 
 int runScore(const ScoreArgs& args, bool verbose) {
     if (args.maxError != -1.0 && !(args.maxError >= 0.0 && args.maxError <= 1.0)) {
-        throw Error(ErrorKind::InvalidInput,
-                    "--max-error must be a fraction in [0, 1], got " + std::to_string(args.maxError));
+        throw Error(ErrorKind::InvalidInput, "--max-error must be a fraction in [0, 1], got " +
+                                                 std::to_string(args.maxError));
     }
     Scene scene = loadScene(args.scene);
     const RenderOptions options = args.flags.resolve(scene);
@@ -65,8 +65,8 @@ int runScore(const ScoreArgs& args, bool verbose) {
 
     std::printf("gnomon score: %s, %dx%d, filter %s, %s; reference: %s shadows, traced in %.2f s\n",
                 scene.name.c_str(), options.width, options.height, toString(options.shadow.filter),
-                toString(options.shadow.depthFormat),
-                r.softReference ? "soft (pcss)" : "hard", r.traceSeconds);
+                toString(options.shadow.depthFormat), r.softReference ? "soft (pcss)" : "hard",
+                r.traceSeconds);
     std::printf("%5s  %-11s %9s  %13s  %12s  %9s  %13s  %9s  %9s\n", "light", "type", "pixels",
                 "misclassified", "false shadow", "leak", "outside band:", "leak", "mean |err|");
     std::printf("%5s  %-11s %9s  %13s  %12s  %9s  %13s  %9s  %9s\n", "", "", "", "", "", "",

@@ -1,11 +1,12 @@
 // gnomon: the command-line tool. Subcommands: `scenes` lists the built-in scenes, `render`
 // draws one frame to a PNG (and optionally each light's shadow map), `score` measures its
-// shadows against a ray-traced reference. Exit codes: 0 success, 1 failure (I/O, OpenGL),
-// 2 bad usage or input, 3 score above --max-error.
+// shadows against a ray-traced reference, `bench` times each pass (and sweeps a parameter). Exit
+// codes: 0 success, 1 failure (I/O, OpenGL), 2 bad usage or input, 3 score above --max-error.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 
+#include "BenchCommand.h"
 #include "RenderOptionsCli.h"
 #include "ScoreCommand.h"
 #include "gnomon/gnomon.h"
@@ -101,6 +102,9 @@ int main(int argc, char** argv) {
     gnomon::cli::ScoreArgs scoreArgs;
     CLI::App* scoreCmd = gnomon::cli::addScoreCommand(app, scoreArgs);
 
+    gnomon::cli::BenchArgs benchArgs;
+    CLI::App* benchCmd = gnomon::cli::addBenchCommand(app, benchArgs);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -115,6 +119,7 @@ int main(int argc, char** argv) {
         if (*scenes) return runScenes(namesOnly);
         if (*renderCmd) return runRender(render, verbose);
         if (*scoreCmd) return gnomon::cli::runScore(scoreArgs, verbose);
+        if (*benchCmd) return gnomon::cli::runBench(benchArgs, verbose);
     } catch (const gnomon::Error& e) {
         std::fprintf(stderr, "gnomon: error: %s\n", e.what());
         return e.kind() == gnomon::ErrorKind::InvalidInput ? 2 : 1;

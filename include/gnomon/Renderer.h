@@ -26,6 +26,17 @@ struct ShadowMapImage {
     Image16 depth;     // stored depth 0..1 scaled to 0..65535
 };
 
+// One pass of a frame, measured with Renderer::setPassTiming (gnomon bench): wall time
+// from the previous glFinish() to this pass's glFinish() (llvmpipe's timer queries read
+// ~0 for fragment-heavy passes), and what the driver counted where it can.
+struct PassTiming {
+    std::string name;  // "shadow light N" (", cascade K"), "main", "read-back"
+    int light = -1;    // scene light of a shadow pass, else -1
+    double milliseconds = 0.0;
+    std::uint64_t triangles = 0;  // submitted (cubes: x 6)
+    std::int64_t fragments = -1;  // fragment shader invocations; -1: the driver cannot count
+};
+
 // What a frame cost (SPEC S25): N shadowed lights cost up to N shadow renderings plus the
 // main one, and N maps of memory; maps whose light and casters did not change are kept.
 struct FrameStats {
@@ -35,6 +46,7 @@ struct FrameStats {
     std::uint64_t shadowTriangles = 0;  // triangles submitted to shadow maps (cubes: x 6)
     std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass
     int castersCulled = 0;              // caster draws skipped as outside a light's volume
+    std::vector<PassTiming> passes;     // with setPassTiming(true): each pass drawn, in order
 };
 
 // Per pixel and light, what the main pass's shadow lookups returned (gnomon score): values at
@@ -62,6 +74,16 @@ public:
     // The shadow maps of the last frame, one per shadowed light.
     std::vector<ShadowMapImage> shadowMaps();
     FrameStats lastFrameStats() const;
+    // Measure each pass (glFinish() between passes, so a little slower overall): fills
+    // FrameStats::passes. Off by default.
+    void setPassTiming(bool on);
+    // Forget every kept shadow map: the next frame renders them all (benchmarks of a frame
+    // whose lights all moved).
+    void invalidateShadowMaps();
+    // Wall time of a bare depth-only draw of every caster into a size x size depth buffer
+    // through the first shadowed light's camera of the last frame (no offsets, culling or
+    // layers): the floor a shadow pass can approach. Milliseconds; -1 without such a light.
+    double measureBareDepthPass(int size);
     // "vendor / renderer / version".
     std::string glInfo() const;
 

@@ -24,10 +24,10 @@ struct ScoreOptions {
 // Fractions are of the pixels where a light's shadow can show (`pixels`): the light reaches
 // the surface the camera sees, and that surface receives shadows.
 struct ShadowScore {
-    int light = -1;        // index into Scene::lights; -1 for every light together
-    std::string type;      // "directional", "spot", "point", "area" or "all"
-    long pixels = 0;       // pixel x light pairs scored
-    long bandPixels = 0;   // of them, inside the aliasing band
+    int light = -1;              // index into Scene::lights; -1 for every light together
+    std::string type;            // "directional", "spot", "point", "area" or "all"
+    long pixels = 0;             // pixel x light pairs scored
+    long bandPixels = 0;         // of them, inside the aliasing band
     double misclassified = 0.0;  // rendered visibility < 0.5 disagrees with the reference
     double falseShadow = 0.0;    // reference lit, rendered shadowed (acne, over-wide filters)
     double leak = 0.0;           // reference shadowed, rendered lit (peter-panning, misses)

@@ -10,6 +10,7 @@
 #include "render/DebugPass.h"
 #include "render/GpuScene.h"
 #include "render/MainPass.h"
+#include "render/PassClock.h"
 #include "render/ShadowPass.h"
 #include "scene/SceneUtil.h"
 
@@ -59,6 +60,8 @@ struct Renderer::Impl {
     std::vector<render::GpuLight> cascadeRecords;  // reused every frame
     shadow::FitScene fit;                          // reused every frame
     FrameStats stats;
+    bool passTiming = false;
+    std::unique_ptr<render::PassClock> clock;  // made when timing is first switched on
 
     explicit Impl(const ContextOptions& o) : context(o.debug || kDebugBuild, o.verbose) {
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF taps may cross cube faces
@@ -262,9 +265,13 @@ struct Renderer::Impl {
                             std::to_string(mainPass.maxLights()));
         }
 
+        std::vector<PassTiming> keep = std::move(stats.passes);
+        keep.clear();
         stats = {};
+        stats.passes = std::move(keep);  // keeps its capacity
+        render::PassClock* timer = passTiming ? clock.get() : nullptr;
         const render::ShadowPassStats passStats =
-            shadowPass.render(scene, shadowed, options.shadow);
+            shadowPass.render(scene, shadowed, options.shadow, timer, &stats.passes);
         stats.shadowPasses = passStats.rendered;
         stats.shadowTriangles = passStats.triangles;
         stats.castersCulled = passStats.culled;
@@ -295,6 +302,7 @@ struct Renderer::Impl {
         }
         in.shadowMaps = any2D ? &shadowPass.maps() : nullptr;
         in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
+        if (timer) timer->start();
         if (options.debugView == DebugView::ShadowMap) {
             const int light = options.lightOnly >= 0 ? options.lightOnly
                               : shadowed.empty()     ? -1
@@ -328,6 +336,8 @@ struct Renderer::Impl {
             }
         }
 
+        if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));
+        if (timer) timer->start();
         Image image(options.width, options.height, 4);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -338,6 +348,7 @@ struct Renderer::Impl {
             std::swap_ranges(image.at(0, y), image.at(0, y) + row,
                              image.at(0, options.height - 1 - y));
         }
+        if (timer) stats.passes.push_back(timer->stop("read-back", -1, 0));
         if (visibility) readVisibility(s, options, *visibility);
         return image;
     }
@@ -366,6 +377,29 @@ std::vector<ShadowMapImage> Renderer::shadowMaps() {
 
 FrameStats Renderer::lastFrameStats() const {
     return mImpl->stats;
+}
+
+void Renderer::setPassTiming(bool on) {
+    mImpl->context.makeCurrent();
+    if (on && !mImpl->clock) mImpl->clock = std::make_unique<render::PassClock>();
+    mImpl->passTiming = on;
+}
+
+void Renderer::invalidateShadowMaps() {
+    mImpl->shadowPass.invalidate();
+}
+
+double Renderer::measureBareDepthPass(int size) {
+    if (size < 1 || size > 16384) {
+        throw Error(ErrorKind::InvalidInput,
+                    "bare depth pass size must be in 1..16384, got " + std::to_string(size));
+    }
+    mImpl->context.makeCurrent();
+    for (const render::ShadowedLight& sl : mImpl->shadowed) {
+        if (sl.frame.kind == shadow::FrameKind::Cube) continue;
+        return mImpl->shadowPass.bareDepthPass(mImpl->scene, sl.frame.clipFromWorld(), size);
+    }
+    return -1.0;
 }
 
 std::string Renderer::glInfo() const {

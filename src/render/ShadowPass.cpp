@@ -2,7 +2,10 @@
 
 #include <algorithm>
 
+#include <chrono>
+
 #include "gl/Program.h"
+#include "render/PassClock.h"
 #include "shadow/DepthPacking.h"
 
 namespace gnomon::render {
@@ -170,8 +173,44 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
     }
 }
 
+void ShadowPass::invalidate() {
+    for (LayerState& l : mLayers)
+        l = LayerState{};
+    for (LayerState& l : mCubeLayers)
+        l = LayerState{};
+}
+
+double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFromWorld, int size) {
+    if (!mBareDepth || mBareDepth.width() != size) {
+        mBareDepth = gl::Texture::plain2D("bare depth pass", GL_DEPTH_COMPONENT32F, size, size);
+        mBareFramebuffer = depthOnlyFramebuffer("bare depth pass");
+        glNamedFramebufferTexture(mBareFramebuffer.id(), GL_DEPTH_ATTACHMENT, mBareDepth.id(), 0);
+        mBareFramebuffer.checkComplete();
+    }
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    glBindFramebuffer(GL_FRAMEBUFFER, mBareFramebuffer.id());
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(mBareFramebuffer.id(), GL_DEPTH, 0, &one);
+    glViewport(0, 0, size, size);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(mProgram.id());
+    glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
+    scene.bind();
+    for (const DrawItem& item : scene.items()) {
+        if (item.casts && item.indexCount > 0) scene.draw(item, 1);
+    }
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
 ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
-                                   const ShadowOptions& options) {
+                                   const ShadowOptions& options, PassClock* clock,
+                                   std::vector<PassTiming>* timings) {
     int size2D = 0, sizeCube = 0, count2D = 0, countCube = 0;
     for (ShadowedLight& l : lights) {
         if (l.frame.kind == shadow::FrameKind::Cube) {
@@ -217,6 +256,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         LayerState& have = (cube ? mCubeLayers : mLayers)[size_t(light.layer)];
         if (have == want) continue;  // nothing changed: keep the map
         have = want;
+        if (clock) clock->start();
         if (!any) {
             scene.bind();
             any = true;
@@ -259,8 +299,16 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
             }
         }
         ++stats.rendered;
+        std::uint64_t triangles = 0;
         for (std::uint32_t index : mVisible) {
-            stats.triangles += std::uint64_t(scene.items()[index].indexCount / 3) * (cube ? 6 : 1);
+            triangles += std::uint64_t(scene.items()[index].indexCount / 3) * (cube ? 6 : 1);
+        }
+        stats.triangles += triangles;
+        if (clock && timings) {
+            timings->push_back(clock->stop(
+                "shadow light " + std::to_string(light.light) +
+                    (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : ""),
+                light.light, triangles));
         }
     }
     if (any) {

@@ -34,14 +34,23 @@ struct ShadowPassStats {
     int culled = 0;               // caster draws skipped as outside a light's volume
 };
 
+class PassClock;
+
 class ShadowPass {
 public:
     // `layeredCubes` false forces six passes per cube (to test the fallback path).
     explicit ShadowPass(bool layeredCubes = true);
     // Renders (or keeps) every light's map. Lights with frame.kind == Cube go to the cube
     // array (layer = cube index), others to the 2D array.
+    // With `clock`, each map drawn is timed into `timings`.
     ShadowPassStats render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
-                           const ShadowOptions& options);
+                           const ShadowOptions& options, PassClock* clock = nullptr,
+                           std::vector<PassTiming>* timings = nullptr);
+    // Every map is drawn again next frame.
+    void invalidate();
+    // A bare depth-only draw of every caster into a size x size buffer through
+    // `clipFromWorld` (no offsets, no culling), timed with glFinish(): milliseconds.
+    double bareDepthPass(const GpuScene& scene, const glm::mat4& clipFromWorld, int size);
     // The 2D maps: a depth texture, or for colour formats an RGBA8 texture of encoded depth.
     const gl::Texture& maps() const { return mMaps; }
     DepthFormat mapFormat() const { return mMapFormat; }
@@ -83,6 +92,8 @@ private:
     std::vector<gl::Framebuffer> mCubeFaceFramebuffers;  // fallback: one per cube face
     std::vector<LayerState> mLayers, mCubeLayers;
     std::vector<std::uint32_t> mVisible;  // reused every frame
+    gl::Texture mBareDepth;               // bareDepthPass's target
+    gl::Framebuffer mBareFramebuffer;
     int mCulled = 0;
 };
 

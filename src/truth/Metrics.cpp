@@ -109,8 +109,7 @@ const char* typeName(LightType t) {
 
 }  // namespace
 
-std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int width,
-                                   int height) {
+std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int width, int height) {
     std::vector<float> grid(seeds.size());
     for (std::size_t i = 0; i < seeds.size(); ++i)
         grid[i] = seeds[i] ? 0.0f : kFar;
@@ -134,9 +133,8 @@ std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int w
     return grid;
 }
 
-Scores scoreVisibility(const Scene& scene, const Reference& r,
-                       const std::vector<float>& visibility, const std::vector<float>& texelWorld,
-                       float bandTexels, bool soft) {
+Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector<float>& visibility,
+                       const std::vector<float>& texelWorld, float bandTexels, bool soft) {
     const std::vector<std::uint8_t> band = bandOf(r, texelWorld, bandTexels, soft);
     struct Counts {
         long pixels = 0, band = 0, falseShadow = 0, leak = 0, falseOut = 0, leakOut = 0;
@@ -205,8 +203,7 @@ Image errorMap(const Reference& r, const std::vector<float>& visibility,
     for (int y = 0; y < r.height; ++y) {
         for (int x = 0; x < r.width; ++x) {
             const std::uint8_t* c = render.at(x, y);
-            const std::uint8_t grey =
-                std::uint8_t((int(c[0]) + int(c[1]) + int(c[2])) / 3 * 2 / 5);
+            const std::uint8_t grey = std::uint8_t((int(c[0]) + int(c[1]) + int(c[2])) / 3 * 2 / 5);
             int kind = 0;  // 1 false shadow in band, 2 leak in band, 3 false, 4 leak
             for (int l = 0; l < r.lights; ++l) {
                 const std::size_t cell = r.at(x, y, l);

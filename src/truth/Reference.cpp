@@ -30,9 +30,8 @@ using EmbreeScene = std::unique_ptr<RTCSceneTy, SceneDeleter>;
 void check(RTCDevice device, const char* what) {
     const RTCError e = rtcGetDeviceError(device);
     if (e != RTC_ERROR_NONE) {
-        throw Error(ErrorKind::InvalidInput,
-                    std::string("ground truth: Embree failed to ") + what + " (error " +
-                        std::to_string(int(e)) + ")");
+        throw Error(ErrorKind::InvalidInput, std::string("ground truth: Embree failed to ") + what +
+                                                 " (error " + std::to_string(int(e)) + ")");
     }
 }
 
@@ -69,8 +68,7 @@ RTCScene buildScene(RTCDevice device, const Scene& scene, const World& world, bo
             v[3 * i + 1] = p[i].y;
             v[3 * i + 2] = p[i].z;
         }
-        std::copy(mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(3 * triangles),
-                  idx);
+        std::copy(mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(3 * triangles), idx);
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(s, g, unsigned(o));
         rtcReleaseGeometry(g);
@@ -168,18 +166,18 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     const glm::vec3 eye = scene.camera.eye;
     const glm::vec3 forward = glm::normalize(scene.camera.centre - scene.camera.eye);
     const bool ortho = scene.camera.projection == Projection::Orthographic;
-    const float pixelAtUnit =
-        ortho ? (scene.camera.top - scene.camera.bottom) / float(options.height)
-              : 2.0f * std::tan(0.5f * glm::radians(scene.camera.fovyDegrees)) /
-                    float(options.height);
+    const float pixelAtUnit = ortho
+                                  ? (scene.camera.top - scene.camera.bottom) / float(options.height)
+                                  : 2.0f * std::tan(0.5f * glm::radians(scene.camera.fovyDegrees)) /
+                                        float(options.height);
     const float epsilon = 2e-5f * world.scale;
     const float tanAngle = std::tan(glm::radians(options.shadow.lightAngle));
     const float radius = options.shadow.lightRadius;
 
     std::vector<bool> on(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-        on[i] = options.shadow.enabled && scene.lights[i].castsShadows &&
-                lightIsOn(scene, options, i);
+        on[i] =
+            options.shadow.enabled && scene.lights[i].castsShadows && lightIsOn(scene, options, i);
     }
 
     auto tracePixel = [&](int x, int y) {
@@ -285,9 +283,8 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                 } else {
                     // A disc of `radius`: around the light facing the point (spot, point), or
                     // in the area light's plane around the point's foot.
-                    const glm::vec3 centre = light.type == LightType::Area
-                                                 ? point - ld * distance
-                                                 : light.position;
+                    const glm::vec3 centre =
+                        light.type == LightType::Area ? point - ld * distance : light.position;
                     basis(light.type == LightType::Area ? ld : toLight, u, v);
                     for (int i = 0; i < samples; ++i) {
                         const glm::vec2 s = discSample(i, samples, turn) * radius;

@@ -17,6 +17,37 @@ skip_without_gl() {
 }
 
 case $case in
+bench)
+    run bench --scene tutorial-room --size 64x64 --frames 2 --warmup 1 --out-dir "$work/b"
+    skip_without_gl
+    expect 0 "shadow light 0"
+    expect 0 "reference: shadows off"
+    python3 - "$work/b/bench.json" <<'PY' || fail "bench.json incomplete"
+import json, sys
+j = json.load(open(sys.argv[1]))
+r = j["runs"][0]
+for k in ["frame_ms", "shadow_ms", "main_ms", "shadows_off_ms", "bare_depth_ms"]:
+    assert set(r[k]) == {"median", "p10", "p90"}, k
+for k in ["map_size", "maps", "shadow_map_bytes", "shadow_triangles", "main_triangles"]:
+    assert k in r, k
+names = [p["name"] for p in r["passes"]]
+assert names == ["shadow light 0", "main", "read-back"], names
+for p in r["passes"]:
+    assert set(p) == {"name", "ms", "triangles", "fragments"}, p
+PY
+    run bench --scene tutorial-room --size 64x64 --frames 1 --warmup 0 --sweep map-size \
+        --values 256,512 --out-dir "$work/s"
+    expect 0 "sweep.svg"
+    [[ $(wc -l <"$work/s/sweep.csv") == 3 ]] || fail "sweep.csv should have a header and 2 rows"
+    head -1 "$work/s/sweep.csv" | grep -q "^value,frame_ms,frame_p10,frame_p90,shadow_ms" ||
+        fail "sweep.csv header"
+    grep -q "<polyline" "$work/s/sweep.svg" || fail "sweep.svg has no lines"
+    run bench --scene tutorial-room --sweep colour
+    expect 2 "--sweep: expected lights, map-size, triangles, cascades or filter"
+    run bench --scene tutorial-room --sweep map-size --values 256,big --frames 1 --warmup 0 \
+        --out-dir "$work/s"
+    expect 2 "'big' is not a number"
+    ;;
 score)
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s"
     skip_without_gl

@@ -84,9 +84,9 @@ TEST(Score, JsonHasEveryField) {
     const nlohmann::json j = nlohmann::json::parse(toJson(r, s.name, o));
     EXPECT_EQ(j["scene"], "mixed-lights");
     EXPECT_EQ(j["lights"].size(), 16u);
-    for (const char* key : {"light", "type", "pixels", "band_pixels", "misclassified",
-                            "false_shadow", "leak", "false_shadow_outside_band",
-                            "leak_outside_band", "mean_abs_error"}) {
+    for (const char* key :
+         {"light", "type", "pixels", "band_pixels", "misclassified", "false_shadow", "leak",
+          "false_shadow_outside_band", "leak_outside_band", "mean_abs_error"}) {
         EXPECT_TRUE(j["overall"].contains(key)) << key;
         EXPECT_TRUE(j["lights"][0].contains(key)) << key;
     }

@@ -1,0 +1,428 @@
+#include "BenchCommand.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "SvgPlot.h"
+#include "gnomon/gnomon.h"
+
+namespace gnomon::cli {
+
+CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "bench", "time each pass of a frame (median and spread over N frames), optionally "
+                 "sweeping one parameter");
+    cmd->add_option("--scene", args.scene,
+                    "built-in scene name (see `gnomon scenes`) or model file")
+        ->required();
+    cmd->add_option("--frames", args.frames,
+                    "frames measured per run, 1..10000 (default " + std::to_string(args.frames) +
+                        ")");
+    cmd->add_option("--warmup", args.warmup,
+                    "frames rendered first and not measured, 0..1000 (default " +
+                        std::to_string(args.warmup) + ")");
+    cmd->add_flag("--static", args.staticMaps,
+                  "keep unchanged shadow maps between frames (default: every frame redraws "
+                  "every map, as when lights move)");
+    cmd->add_option("--sweep", args.sweep,
+                    "vary one parameter: lights (1..64 spot lights), map-size (256..8192), "
+                    "triangles (the scene copied 1..16 times), cascades (1..4), filter");
+    cmd->add_option("--values", args.values,
+                    "comma-separated values for --sweep (default: the ranges above)");
+    cmd->add_option("--out-dir", args.outDir,
+                    "folder for bench.json, and for a sweep sweep.csv and sweep.svg "
+                    "(default bench)");
+    args.flags.add(*cmd);
+    return cmd;
+}
+
+namespace {
+
+struct Spread {
+    double median = 0.0, p10 = 0.0, p90 = 0.0;
+};
+
+Spread spreadOf(std::vector<double> v) {
+    Spread s;
+    if (v.empty()) return s;
+    std::sort(v.begin(), v.end());
+    auto at = [&](double q) {
+        const double i = q * double(v.size() - 1);
+        const std::size_t lo = std::size_t(std::floor(i)), hi = std::size_t(std::ceil(i));
+        return v[lo] + (v[hi] - v[lo]) * (i - double(lo));
+    };
+    s.median = at(0.5);
+    s.p10 = at(0.1);
+    s.p90 = at(0.9);
+    return s;
+}
+
+struct PassResult {
+    std::string name;
+    Spread ms;
+    std::uint64_t triangles = 0;
+    std::int64_t fragments = -1;
+};
+
+struct Run {
+    std::string value;  // the swept value ("" without a sweep)
+    Spread frame, shadow, main, shadowsOff, bareDepth;
+    std::vector<PassResult> passes;  // in frame order
+    std::uint64_t shadowTriangles = 0, mainTriangles = 0;
+    std::size_t shadowBytes = 0;
+    int maps = 0, mapSize = 0;
+};
+
+int mapSizeOf(const Scene& scene, const RenderOptions& o) {
+    if (o.shadow.mapSize > 0) return o.shadow.mapSize;
+    for (const Light& l : scene.lights)
+        if (l.castsShadows) return l.shadowMapSize;
+    return 1024;
+}
+
+Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+            const BenchArgs& args) {
+    Run run;
+    renderer.setPassTiming(true);
+    std::map<std::string, std::vector<double>> perPass;
+    std::vector<double> frame, shadow, main;
+    for (int i = 0; i < args.warmup + args.frames; ++i) {
+        if (!args.staticMaps) renderer.invalidateShadowMaps();
+        const auto start = std::chrono::steady_clock::now();
+        renderer.render(scene, options);
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        if (i < args.warmup) continue;
+        const FrameStats stats = renderer.lastFrameStats();
+        double shadowMs = 0.0, mainMs = 0.0;
+        for (const PassTiming& p : stats.passes) {
+            if (!perPass.count(p.name)) {
+                run.passes.push_back({p.name, {}, p.triangles, p.fragments});
+            }
+            perPass[p.name].push_back(p.milliseconds);
+            if (p.light >= 0) shadowMs += p.milliseconds;
+            if (p.name == "main") mainMs += p.milliseconds;
+        }
+        frame.push_back(ms);
+        shadow.push_back(shadowMs);
+        main.push_back(mainMs);
+        run.shadowTriangles = stats.shadowTriangles;
+        run.mainTriangles = stats.mainTriangles;
+        run.shadowBytes = stats.shadowMapBytes;
+        run.maps = stats.shadowMaps;
+    }
+    for (PassResult& p : run.passes)
+        p.ms = spreadOf(perPass[p.name]);
+    run.frame = spreadOf(frame);
+    run.shadow = spreadOf(shadow);
+    run.main = spreadOf(main);
+    // The reference points, in the same run: a bare depth-only draw of the casters at the
+    // same map size (through the first light's camera), and the frame without shadows.
+    run.mapSize = mapSizeOf(scene, options);
+    std::vector<double> bare;
+    for (int i = 0; i < args.frames; ++i) {
+        const double b = renderer.measureBareDepthPass(run.mapSize);
+        if (b >= 0.0) bare.push_back(b);
+    }
+    run.bareDepth = bare.empty() ? Spread{-1.0, -1.0, -1.0} : spreadOf(bare);
+    renderer.setPassTiming(false);
+    RenderOptions off = options;
+    off.shadow.enabled = false;
+    std::vector<double> offMs;
+    for (int i = 0; i < args.warmup + args.frames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        renderer.render(scene, off);
+        if (i >= args.warmup) {
+            offMs.push_back(std::chrono::duration<double, std::milli>(
+                                std::chrono::steady_clock::now() - start)
+                                .count());
+        }
+    }
+    run.shadowsOff = spreadOf(offMs);
+    return run;
+}
+
+// The world box of `scene`'s vertices at rest (the CLI sees only the public API).
+void sceneBox(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
+    lo = glm::vec3(std::numeric_limits<float>::max());
+    hi = glm::vec3(std::numeric_limits<float>::lowest());
+    for (const Object& o : scene.objects) {
+        for (const glm::vec3& p : scene.meshes[o.mesh].positions) {
+            const glm::vec3 w = glm::vec3(o.worldFromModel * glm::vec4(p, 1.0f));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+        }
+    }
+    if (lo.x > hi.x) lo = hi = glm::vec3(0.0f);
+}
+
+// Scene and options for one value of a sweep.
+void applySweep(const std::string& param, const std::string& value, const Scene& base,
+                const RenderOptions& baseOptions, Scene& scene, RenderOptions& options) {
+    scene = base;
+    options = baseOptions;
+    auto integer = [&](int lo, int hi) {
+        int v = 0;
+        try {
+            std::size_t used = 0;
+            v = std::stoi(value, &used);
+            if (used != value.size()) throw std::invalid_argument(value);
+        } catch (const std::exception&) {
+            throw Error(ErrorKind::InvalidInput, "--values: '" + value + "' is not a number");
+        }
+        if (v < lo || v > hi) {
+            throw Error(ErrorKind::InvalidInput, "--values: " + param + " " + value +
+                                                     " is outside " + std::to_string(lo) + ".." +
+                                                     std::to_string(hi));
+        }
+        return v;
+    };
+    if (param == "map-size") {
+        options.shadow.mapSize = integer(64, 8192);
+    } else if (param == "cascades") {
+        options.shadow.cascades = integer(1, 4);
+    } else if (param == "filter") {
+        const auto f = parseShadowFilter(value);
+        if (!f) throw Error(ErrorKind::InvalidInput, "--values: unknown filter '" + value + "'");
+        options.shadow.filter = *f;
+    } else if (param == "lights") {
+        // N spot lights on a ring over the scene, aimed at its centre.
+        const int n = integer(1, 256);
+        glm::vec3 lo, hi;
+        sceneBox(base, lo, hi);
+        const glm::vec3 centre = 0.5f * (lo + hi);
+        const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+        scene.lights.clear();
+        for (int i = 0; i < n; ++i) {
+            Light l;
+            l.name = "sweep spot " + std::to_string(i);
+            l.type = LightType::Spot;
+            const float a = 6.2831853f * float(i) / float(n);
+            l.position = centre + glm::vec3(0.7f * radius * std::cos(a), 0.8f * radius,
+                                            0.7f * radius * std::sin(a));
+            l.direction = glm::normalize(centre - l.position);
+            l.innerConeDegrees = 35.0f;
+            l.outerConeDegrees = 45.0f;
+            l.intensity = 1.5f / float(n);
+            l.shadowMapSize = mapSizeOf(base, baseOptions);
+            scene.lights.push_back(l);
+        }
+        options.lightOnly = -1;
+    } else if (param == "triangles") {
+        // The scene's objects copied k times on a grid, the camera pulled back to see them.
+        const int k = integer(1, 64);
+        glm::vec3 lo, hi;
+        sceneBox(base, lo, hi);
+        const glm::vec3 size = glm::max(hi - lo, glm::vec3(1e-3f)) * 1.1f;
+        const int side = int(std::ceil(std::sqrt(double(k))));
+        scene.objects.clear();
+        for (int c = 0; c < k; ++c) {
+            const glm::vec3 offset(float(c % side) * size.x, 0.0f, float(c / side) * size.z);
+            for (Object o : base.objects) {
+                o.worldFromModel = glm::translate(glm::mat4(1.0f), offset) * o.worldFromModel;
+                o.spin.pivot += offset;
+                scene.objects.push_back(o);
+            }
+        }
+        const glm::vec3 shift = 0.5f * float(side - 1) * glm::vec3(size.x, 0.0f, size.z);
+        scene.camera.centre += shift;
+        scene.camera.eye = scene.camera.centre + (base.camera.eye - base.camera.centre) * float(side);
+        scene.camera.far *= float(side);
+    } else {
+        throw Error(ErrorKind::InvalidInput,
+                    "--sweep: expected lights, map-size, triangles, cascades or filter, got '" +
+                        param + "'");
+    }
+}
+
+std::vector<std::string> defaultValues(const std::string& param) {
+    if (param == "lights") return {"1", "2", "4", "8", "16", "32", "64"};
+    if (param == "map-size") return {"256", "512", "1024", "2048", "4096", "8192"};
+    if (param == "triangles") return {"1", "2", "4", "8", "16"};
+    if (param == "cascades") return {"1", "2", "3", "4"};
+    if (param == "filter") return {"none", "hw2x2", "pcf", "poisson", "pcss"};
+    return {};
+}
+
+nlohmann::json spreadJson(const Spread& s) {
+    return {{"median", s.median}, {"p10", s.p10}, {"p90", s.p90}};
+}
+
+nlohmann::json runJson(const Run& r) {
+    nlohmann::json passes = nlohmann::json::array();
+    for (const PassResult& p : r.passes) {
+        passes.push_back({{"name", p.name},
+                          {"ms", spreadJson(p.ms)},
+                          {"triangles", p.triangles},
+                          {"fragments", p.fragments}});
+    }
+    return {{"value", r.value},
+            {"frame_ms", spreadJson(r.frame)},
+            {"shadow_ms", spreadJson(r.shadow)},
+            {"main_ms", spreadJson(r.main)},
+            {"shadows_off_ms", spreadJson(r.shadowsOff)},
+            {"bare_depth_ms", spreadJson(r.bareDepth)},
+            {"map_size", r.mapSize},
+            {"maps", r.maps},
+            {"shadow_map_bytes", r.shadowBytes},
+            {"shadow_triangles", r.shadowTriangles},
+            {"main_triangles", r.mainTriangles},
+            {"passes", passes}};
+}
+
+void printRun(const Run& r) {
+    std::printf("%-28s %10s %10s %10s %12s %12s\n", "pass", "median ms", "p10", "p90",
+                "triangles", "fragments");
+    for (const PassResult& p : r.passes) {
+        std::printf("%-28s %10.2f %10.2f %10.2f %12llu %12s\n", p.name.c_str(), p.ms.median,
+                    p.ms.p10, p.ms.p90, (unsigned long long)p.triangles,
+                    p.fragments < 0 ? "-" : std::to_string(p.fragments).c_str());
+    }
+    std::printf("%-28s %10.2f %10.2f %10.2f\n", "frame (wall, render())", r.frame.median,
+                r.frame.p10, r.frame.p90);
+    std::printf("%-28s %10.2f %10.2f %10.2f\n", "  reference: shadows off", r.shadowsOff.median,
+                r.shadowsOff.p10, r.shadowsOff.p90);
+    if (r.bareDepth.median >= 0.0) {
+        std::printf("%-28s %10.2f %10.2f %10.2f   (all casters, %d^2, no offsets)\n",
+                    "  reference: bare depth", r.bareDepth.median, r.bareDepth.p10,
+                    r.bareDepth.p90, r.mapSize);
+    }
+    std::printf("shadow maps: %d, %.1f MiB\n", r.maps, double(r.shadowBytes) / (1024.0 * 1024.0));
+}
+
+}  // namespace
+
+int runBench(const BenchArgs& args, bool verbose) {
+    if (args.frames < 1 || args.frames > 10000) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--frames must be in 1..10000, got " + std::to_string(args.frames));
+    }
+    if (args.warmup < 0 || args.warmup > 1000) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
+    }
+    const Scene base = loadScene(args.scene);
+    const RenderOptions baseOptions = args.flags.resolve(base);
+    std::vector<std::string> values;
+    if (!args.sweep.empty()) {
+        if (defaultValues(args.sweep).empty()) {
+            throw Error(ErrorKind::InvalidInput,
+                        "--sweep: expected lights, map-size, triangles, cascades or filter, got '" +
+                            args.sweep + "'");
+        }
+        if (args.values.empty()) {
+            values = defaultValues(args.sweep);
+        } else {
+            std::stringstream in(args.values);
+            for (std::string v; std::getline(in, v, ',');)
+                if (!v.empty()) values.push_back(v);
+        }
+    } else if (!args.values.empty()) {
+        throw Error(ErrorKind::InvalidInput, "--values needs --sweep");
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(args.outDir, ec);
+    if (ec) {
+        throw Error(ErrorKind::Io,
+                    "--out-dir: cannot create folder '" + args.outDir + "': " + ec.message());
+    }
+    ContextOptions context;
+    context.verbose = verbose;
+    Renderer renderer(context);
+    nlohmann::json out;
+    out["scene"] = base.name;
+    out["width"] = baseOptions.width;
+    out["height"] = baseOptions.height;
+    out["frames"] = args.frames;
+    out["warmup"] = args.warmup;
+    out["static_maps"] = args.staticMaps;
+    out["gl"] = renderer.glInfo();
+    out["timing"] = "wall clock around glFinish() per pass (timer queries are unreliable on "
+                    "llvmpipe)";
+
+    if (values.empty()) {
+        std::fprintf(stderr, "gnomon bench: %s, %d frames after %d warm-up\n", base.name.c_str(),
+                     args.frames, args.warmup);
+        const Run run = measure(renderer, base, baseOptions, args);
+        std::printf("gnomon bench: %s, %dx%d, %d frames (%s maps)\n", base.name.c_str(),
+                    baseOptions.width, baseOptions.height, args.frames,
+                    args.staticMaps ? "kept" : "redrawn");
+        printRun(run);
+        out["runs"] = nlohmann::json::array({runJson(run)});
+        writeTextFile(args.outDir + "/bench.json", out.dump(2) + "\n");
+        std::printf("wrote %s/bench.json\n", args.outDir.c_str());
+        return 0;
+    }
+
+    std::vector<Run> runs;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        Scene scene;
+        RenderOptions options;
+        applySweep(args.sweep, values[i], base, baseOptions, scene, options);
+        std::fprintf(stderr, "gnomon bench: [%zu/%zu] %s %s ...", i + 1, values.size(),
+                     args.sweep.c_str(), values[i].c_str());
+        Run run = measure(renderer, scene, options, args);
+        run.value = values[i];
+        std::fprintf(stderr, " frame %.1f ms (shadow passes %.1f, main %.1f)\n", run.frame.median,
+                     run.shadow.median, run.main.median);
+        runs.push_back(std::move(run));
+    }
+    out["sweep"] = args.sweep;
+    out["runs"] = nlohmann::json::array();
+    std::string csv =
+        "value,frame_ms,frame_p10,frame_p90,shadow_ms,main_ms,shadows_off_ms,bare_depth_ms,"
+        "maps,map_size,shadow_map_bytes,shadow_triangles,main_triangles\n";
+    Plot plot;
+    plot.title = "gnomon bench: " + base.name + ", sweep of " + args.sweep + " (" +
+                 std::to_string(baseOptions.width) + "x" + std::to_string(baseOptions.height) +
+                 ", median of " + std::to_string(args.frames) + " frames)";
+    const bool logAxis = args.sweep == "lights" || args.sweep == "map-size" ||
+                         args.sweep == "triangles";
+    plot.xLabel = args.sweep == "triangles" ? "scene copies (triangles: see CSV)" : args.sweep;
+    plot.yLabel = "milliseconds";
+    plot.series = {{"frame", {}},
+                   {"shadow passes", {}},
+                   {"main pass", {}},
+                   {"shadows off (reference)", {}},
+                   {"bare depth draw (reference)", {}}};
+    std::printf("%-10s %10s %10s %10s %10s %12s %12s\n", args.sweep.c_str(), "frame ms",
+                "shadow ms", "main ms", "off ms", "bare ms", "shadow MiB");
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const Run& r = runs[i];
+        out["runs"].push_back(runJson(r));
+        char line[512];
+        std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%zu,%llu,%llu\n",
+                      r.value.c_str(), r.frame.median, r.frame.p10, r.frame.p90, r.shadow.median,
+                      r.main.median, r.shadowsOff.median, r.bareDepth.median, r.maps, r.mapSize,
+                      r.shadowBytes, (unsigned long long)r.shadowTriangles,
+                      (unsigned long long)r.mainTriangles);
+        csv += line;
+        std::printf("%-10s %10.2f %10.2f %10.2f %10.2f %12.2f %12.1f\n", r.value.c_str(),
+                    r.frame.median, r.shadow.median, r.main.median, r.shadowsOff.median,
+                    r.bareDepth.median, double(r.shadowBytes) / (1024.0 * 1024.0));
+        plot.xTicks.push_back(r.value);
+        plot.x.push_back(logAxis ? std::log2(std::max(1.0, std::stod(r.value))) : double(i));
+        plot.series[0].y.push_back(r.frame.median);
+        plot.series[1].y.push_back(r.shadow.median);
+        plot.series[2].y.push_back(r.main.median);
+        plot.series[3].y.push_back(r.shadowsOff.median);
+        plot.series[4].y.push_back(r.bareDepth.median);
+    }
+    writeTextFile(args.outDir + "/bench.json", out.dump(2) + "\n");
+    writeTextFile(args.outDir + "/sweep.csv", csv);
+    writeTextFile(args.outDir + "/sweep.svg", toSvg(plot));
+    std::printf("wrote %s/bench.json, sweep.csv, sweep.svg\n", args.outDir.c_str());
+    return 0;
+}
+
+}  // namespace gnomon::cli

@@ -1,0 +1,50 @@
+// Times one pass at a time for Renderer::setPassTiming: glFinish() before and after, wall
+// time in between (llvmpipe's timer queries read ~0 for fragment-heavy passes, see
+// PLATFORM.md), and fragment shader invocations from a pipeline statistics query where the
+// driver offers GL_ARB_pipeline_statistics_query.
+#pragma once
+
+#include <chrono>
+#include <string>
+
+#include "gl/Objects.h"
+#include "gnomon/Renderer.h"
+
+namespace gnomon::render {
+
+class PassClock {
+public:
+    PassClock() {
+        if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
+            mQuery = gl::Query("pass fragments", GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+        }
+    }
+    void start() {
+        glFinish();
+        if (mQuery) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mQuery.id());
+        mStart = std::chrono::steady_clock::now();
+    }
+    PassTiming stop(std::string name, int light, std::uint64_t triangles) {
+        glFinish();
+        PassTiming t;
+        t.milliseconds =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mStart)
+                .count();
+        if (mQuery) {
+            glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+            GLint64 fragments = 0;
+            glGetQueryObjecti64v(mQuery.id(), GL_QUERY_RESULT, &fragments);
+            t.fragments = fragments;
+        }
+        t.name = std::move(name);
+        t.light = light;
+        t.triangles = triangles;
+        return t;
+    }
+
+private:
+    gl::Query mQuery;
+    std::chrono::steady_clock::time_point mStart;
+};
+
+}  // namespace gnomon::render
