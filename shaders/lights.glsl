@@ -25,10 +25,14 @@ struct LightData {
                             // w the map's far plane
     vec4 wsPosition;        // xyz world position (cube lookups), w the map's near plane
     vec4 soft;              // PCSS: x emitter radius (world; directional: tan of its angular
-                            // radius), y 1 = angular, z emitter distance at map depth 0
+                            // radius), y 1 = angular, z emitter distance at map depth 0;
+                            // w the light's index in the scene
 };
 
 layout(std140, binding = 1) uniform Lights {
     LightData lights[MAX_LIGHTS];
 };
-layout(location = 6) uniform int uLightCount;
+// Records are ordered by kind: [0, x) unshadowed, [x, y) one map each, [y, z) cubes,
+// [z, w) cascaded (their cascade records follow at w and beyond). Lights that are off have
+// no record.
+layout(location = 6) uniform ivec4 uLightRanges;

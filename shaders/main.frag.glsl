@@ -32,74 +32,134 @@ layout(early_fragment_tests) in;
 layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
 #endif
 
-void main() {
-    bool unlit = vIn.material.z > 0.5;
-    bool receives = vIn.receives > 0.5;
-    vec3 vsN = normalize(vIn.vsNormal);
-    vec3 wsN = normalize(vIn.wsNormal);
-    if (vIn.material.w > 0.5 && !gl_FrontFacing) {  // double-sided: light the side we see
-        vsN = -vsN;
-        wsN = -wsN;
-    }
-    vec3 base = vIn.colour;
-    vec3 vsToEye = normalize(-vIn.vsPosition);
+// Per fragment, shared by every light's shading.
+struct Surface {
+    bool unlit;
+    bool receives;
+    vec3 vsN, wsN, base, vsToEye;
+};
 
-    vec3 lit = unlit ? base : uAmbient * base;
-    float factor = 1.0;
-    for (int i = 0; i < uLightCount; ++i) {
-        LightData light = lights[i];
-        if (light.vsDirection.w < 0.5) continue;
-        int type = int(light.vsPosition.w);
-        vec3 vsToLight;
-        float falloff = 1.0;
-        if (type == kDirectional) {
-            vsToLight = -normalize(light.vsDirection.xyz);
-        } else if (type == kArea) {
-            // Parallel rays; falloff with the distance from the light's plane (Hessian
-            // normal form: n.p + d, with d = -n.p0 for the plane through the light).
-            vec3 n = normalize(light.vsDirection.xyz);
-            vsToLight = -n;
-            float dist = abs(dot(n, vIn.vsPosition - light.vsPosition.xyz));
-            vec3 c = light.attenuation.xyz;
-            falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
-        } else {
-            vec3 d = light.vsPosition.xyz - vIn.vsPosition;
-            float dist = length(d);
-            vsToLight = d / dist;
-            vec3 c = light.attenuation.xyz;
-            falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
-            if (type == kSpot) {
-                float cosAngle = dot(-vsToLight, normalize(light.vsDirection.xyz));
-                falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
-            }
+// Direction to the light (view space) and its falloff at this fragment.
+void lightAt(LightData light, out vec3 vsToLight, out float falloff) {
+    int type = int(light.vsPosition.w);
+    falloff = 1.0;
+    if (type == kDirectional) {
+        vsToLight = -normalize(light.vsDirection.xyz);
+    } else if (type == kArea) {
+        // Parallel rays; falloff with the distance from the light's plane (Hessian normal
+        // form: n.p + d, with d = -n.p0 for the plane through the light).
+        vec3 n = normalize(light.vsDirection.xyz);
+        vsToLight = -n;
+        float dist = abs(dot(n, vIn.vsPosition - light.vsPosition.xyz));
+        vec3 c = light.attenuation.xyz;
+        falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
+    } else {
+        vec3 d = light.vsPosition.xyz - vIn.vsPosition;
+        float dist = length(d);
+        vsToLight = d / dist;
+        vec3 c = light.attenuation.xyz;
+        falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
+        if (type == kSpot) {
+            float cosAngle = dot(-vsToLight, normalize(light.vsDirection.xyz));
+            falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
         }
-        float visibility = 1.0;
-#ifndef SHADOWS_OFF
-        if (receives && light.colour.w >= 0.0) {
-            vec3 wsToLight = mat3(uWorldFromView) * vsToLight;
-            gTexelWorld = 0.0;
-            visibility = shadowVisibility(light, vIn.wsPosition, wsN, wsToLight, -vIn.vsPosition.z);
-#ifdef VISIBILITY_PASS
-            imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), i),
-                       vec4(visibility, gTexelWorld, 0.0, 0.0));
-#endif
-        }
-#endif
-        if (unlit) {
-            factor *= mix(uShadowFactor, 1.0, visibility);
-            continue;
-        }
-        float nDotL = max(dot(vsN, vsToLight), 0.0);
-        vec3 h = normalize(vsToLight + vsToEye);
-        float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(vsN, h), 0.0), vIn.material.y) : 0.0;
-        vec3 contribution = light.colour.rgb * falloff * (nDotL * base + spec);
-#ifdef SHADOWED_FACTOR
-        lit += contribution;
-        factor *= mix(uShadowFactor, 1.0, visibility);
-#else
-        lit += visibility * contribution;
-#endif
     }
+}
+
+// Adds one light's Blinn-Phong term, as visible as `visibility` says.
+void shade(LightData light, Surface s, vec3 vsToLight, float falloff, float visibility,
+           inout vec3 lit, inout float factor) {
+    if (s.unlit) {
+        factor *= mix(uShadowFactor, 1.0, visibility);
+        return;
+    }
+    float nDotL = max(dot(s.vsN, vsToLight), 0.0);
+    vec3 h = normalize(vsToLight + s.vsToEye);
+    float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(s.vsN, h), 0.0), vIn.material.y) : 0.0;
+    vec3 contribution = light.colour.rgb * falloff * (nDotL * s.base + spec);
+#ifdef SHADOWED_FACTOR
+    lit += contribution;
+    factor *= mix(uShadowFactor, 1.0, visibility);
+#else
+    lit += visibility * contribution;
+#endif
+}
+
+#ifdef VISIBILITY_PASS
+void recordVisibility(LightData light, float visibility) {
+    imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)),
+               vec4(visibility, gTexelWorld, 0.0, 0.0));
+}
+#endif
+
+// One loop per kind of light, over its range of records (uLightRanges: ends of the
+// unshadowed, single-map, cube and cascaded ranges). llvmpipe runs both sides of every branch
+// it cannot prove uniform, so a single loop would pay for every kind's lookup on every light;
+// separate loops run each light's own lookup only, and lights that are off are not in any.
+#define SHADOWED_LOOP(first, last, LOOKUP)                                              \
+    for (int i = first; i < last; ++i) {                                                \
+        LightData light = lights[i];                                                    \
+        vec3 vsToLight;                                                                 \
+        float falloff;                                                                  \
+        lightAt(light, vsToLight, falloff);                                             \
+        float visibility = 1.0;                                                         \
+        if (s.receives) {                                                               \
+            vec3 wsToLight = mat3(uWorldFromView) * vsToLight;                           \
+            gTexelWorld = 0.0;                                                          \
+            visibility = LOOKUP(light, vIn.wsPosition, s.wsN, wsToLight, -vIn.vsPosition.z); \
+            RECORD(light, visibility);                                                  \
+        }                                                                               \
+        shade(light, s, vsToLight, falloff, visibility, lit, factor);                   \
+    }
+
+#ifdef VISIBILITY_PASS
+#define RECORD(light, visibility) recordVisibility(light, visibility)
+#else
+#define RECORD(light, visibility)
+#endif
+
+float mapLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
+    return mapVisibility(light, p, n, l);
+}
+float cubeLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
+    return cubeVisibility(light, p, n, l);
+}
+
+void main() {
+    Surface s;
+    s.unlit = vIn.material.z > 0.5;
+    s.receives = vIn.receives > 0.5;
+    s.vsN = normalize(vIn.vsNormal);
+    s.wsN = normalize(vIn.wsNormal);
+    if (vIn.material.w > 0.5 && !gl_FrontFacing) {  // double-sided: light the side we see
+        s.vsN = -s.vsN;
+        s.wsN = -s.wsN;
+    }
+    s.base = vIn.colour;
+    s.vsToEye = normalize(-vIn.vsPosition);
+
+    vec3 lit = s.unlit ? s.base : uAmbient * s.base;
+    float factor = 1.0;
+#ifdef SHADOWS_OFF
+    for (int i = 0; i < uLightRanges.w; ++i) {
+#else
+    for (int i = 0; i < uLightRanges.x; ++i) {
+#endif
+        LightData light = lights[i];
+        vec3 vsToLight;
+        float falloff;
+        lightAt(light, vsToLight, falloff);
+        shade(light, s, vsToLight, falloff, 1.0, lit, factor);
+    }
+#ifndef SHADOWS_OFF
+    SHADOWED_LOOP(uLightRanges.x, uLightRanges.y, mapLookup)
+#ifdef HAS_CUBES
+    SHADOWED_LOOP(uLightRanges.y, uLightRanges.z, cubeLookup)
+#endif
+#ifdef HAS_CASCADES
+    SHADOWED_LOOP(uLightRanges.z, uLightRanges.w, cascadeVisibility)
+#endif
+#endif
     vec3 colour = lit * factor;
 #ifdef DEBUG_CASCADES
     const vec3 kTints[4] = vec3[](vec3(1, 0.3, 0.3), vec3(0.3, 1, 0.3), vec3(0.3, 0.5, 1),

@@ -323,19 +323,3 @@ float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 ws
     }
     return 1.0;
 }
-
-// Visibility of a world point for one light, 0 (shadowed) .. 1 (lit). The cube and cascade
-// paths are compiled in only when a frame has such lights (HAS_CUBES, HAS_CASCADES):
-// llvmpipe runs branches it cannot prove unused, and the cascade path holds two lookups.
-float shadowVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
-                       float vsDepth) {
-#ifdef HAS_CUBES
-    if (light.shadow.z == kFrameCube) return cubeVisibility(light, wsPosition, wsNormal, wsToLight);
-#endif
-#ifdef HAS_CASCADES
-    if (light.shadow.z == kFrameCascaded) {
-        return cascadeVisibility(light, wsPosition, wsNormal, wsToLight, vsDepth);
-    }
-#endif
-    return mapVisibility(light, wsPosition, wsNormal, wsToLight);
-}

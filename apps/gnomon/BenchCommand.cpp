@@ -19,14 +19,15 @@ namespace gnomon::cli {
 
 CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
     CLI::App* cmd = app.add_subcommand(
-        "bench", "time each pass of a frame (median and spread over N frames), optionally "
-                 "sweeping one parameter");
+        "bench",
+        "time each pass of a frame (median and spread over N frames), optionally "
+        "sweeping one parameter");
     cmd->add_option("--scene", args.scene,
                     "built-in scene name (see `gnomon scenes`) or model file")
         ->required();
-    cmd->add_option("--frames", args.frames,
-                    "frames measured per run, 1..10000 (default " + std::to_string(args.frames) +
-                        ")");
+    cmd->add_option(
+        "--frames", args.frames,
+        "frames measured per run, 1..10000 (default " + std::to_string(args.frames) + ")");
     cmd->add_option("--warmup", args.warmup,
                     "frames rendered first and not measured, 0..1000 (default " +
                         std::to_string(args.warmup) + ")");
@@ -143,9 +144,9 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
         const auto start = std::chrono::steady_clock::now();
         renderer.render(scene, off);
         if (i >= args.warmup) {
-            offMs.push_back(std::chrono::duration<double, std::milli>(
-                                std::chrono::steady_clock::now() - start)
-                                .count());
+            offMs.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
         }
     }
     run.shadowsOff = spreadOf(offMs);
@@ -236,7 +237,8 @@ void applySweep(const std::string& param, const std::string& value, const Scene&
         }
         const glm::vec3 shift = 0.5f * float(side - 1) * glm::vec3(size.x, 0.0f, size.z);
         scene.camera.centre += shift;
-        scene.camera.eye = scene.camera.centre + (base.camera.eye - base.camera.centre) * float(side);
+        scene.camera.eye =
+            scene.camera.centre + (base.camera.eye - base.camera.centre) * float(side);
         scene.camera.far *= float(side);
     } else {
         throw Error(ErrorKind::InvalidInput,
@@ -281,8 +283,8 @@ nlohmann::json runJson(const Run& r) {
 }
 
 void printRun(const Run& r) {
-    std::printf("%-28s %10s %10s %10s %12s %12s\n", "pass", "median ms", "p10", "p90",
-                "triangles", "fragments");
+    std::printf("%-28s %10s %10s %10s %12s %12s\n", "pass", "median ms", "p10", "p90", "triangles",
+                "fragments");
     for (const PassResult& p : r.passes) {
         std::printf("%-28s %10.2f %10.2f %10.2f %12llu %12s\n", p.name.c_str(), p.ms.median,
                     p.ms.p10, p.ms.p90, (unsigned long long)p.triangles,
@@ -294,8 +296,8 @@ void printRun(const Run& r) {
                 r.shadowsOff.p10, r.shadowsOff.p90);
     if (r.bareDepth.median >= 0.0) {
         std::printf("%-28s %10.2f %10.2f %10.2f   (all casters, %d^2, no offsets)\n",
-                    "  reference: bare depth", r.bareDepth.median, r.bareDepth.p10,
-                    r.bareDepth.p90, r.mapSize);
+                    "  reference: bare depth", r.bareDepth.median, r.bareDepth.p10, r.bareDepth.p90,
+                    r.mapSize);
     }
     std::printf("shadow maps: %d, %.1f MiB\n", r.maps, double(r.shadowBytes) / (1024.0 * 1024.0));
 }
@@ -347,8 +349,9 @@ int runBench(const BenchArgs& args, bool verbose) {
     out["warmup"] = args.warmup;
     out["static_maps"] = args.staticMaps;
     out["gl"] = renderer.glInfo();
-    out["timing"] = "wall clock around glFinish() per pass (timer queries are unreliable on "
-                    "llvmpipe)";
+    out["timing"] =
+        "wall clock around glFinish() per pass (timer queries are unreliable on "
+        "llvmpipe)";
 
     if (values.empty()) {
         std::fprintf(stderr, "gnomon bench: %s, %d frames after %d warm-up\n", base.name.c_str(),
@@ -386,8 +389,8 @@ int runBench(const BenchArgs& args, bool verbose) {
     plot.title = "gnomon bench: " + base.name + ", sweep of " + args.sweep + " (" +
                  std::to_string(baseOptions.width) + "x" + std::to_string(baseOptions.height) +
                  ", median of " + std::to_string(args.frames) + " frames)";
-    const bool logAxis = args.sweep == "lights" || args.sweep == "map-size" ||
-                         args.sweep == "triangles";
+    const bool logAxis =
+        args.sweep == "lights" || args.sweep == "map-size" || args.sweep == "triangles";
     plot.xLabel = args.sweep == "triangles" ? "scene copies (triangles: see CSV)" : args.sweep;
     plot.yLabel = "milliseconds";
     plot.series = {{"frame", {}},
@@ -401,7 +404,8 @@ int runBench(const BenchArgs& args, bool verbose) {
         const Run& r = runs[i];
         out["runs"].push_back(runJson(r));
         char line[512];
-        std::snprintf(line, sizeof line, "%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%zu,%llu,%llu\n",
+        std::snprintf(line, sizeof line,
+                      "%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%zu,%llu,%llu\n",
                       r.value.c_str(), r.frame.median, r.frame.p10, r.frame.p90, r.shadow.median,
                       r.main.median, r.shadowsOff.median, r.bareDepth.median, r.maps, r.mapSize,
                       r.shadowBytes, (unsigned long long)r.shadowTriangles,

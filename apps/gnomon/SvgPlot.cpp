@@ -15,10 +15,14 @@ std::string num(double v) {
 std::string escape(const std::string& s) {
     std::string out;
     for (char c : s) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
+        if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '&')
+            out += "&amp;";
+        else
+            out += c;
     }
     return out;
 }
@@ -87,9 +91,9 @@ std::string toSvg(const Plot& plot) {
         svg += "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" + std::string(colour) +
                "\" points=\"" + points + "\"/>\n";
         const double ly = top + 14 + 20 * double(s);
-        svg += "<line x1=\"" + num(left + pw + 14) + "\" x2=\"" + num(left + pw + 36) +
-               "\" y1=\"" + num(ly - 4) + "\" y2=\"" + num(ly - 4) + "\" stroke-width=\"2\" stroke=\"" +
-               colour + "\"/>\n";
+        svg += "<line x1=\"" + num(left + pw + 14) + "\" x2=\"" + num(left + pw + 36) + "\" y1=\"" +
+               num(ly - 4) + "\" y2=\"" + num(ly - 4) + "\" stroke-width=\"2\" stroke=\"" + colour +
+               "\"/>\n";
         svg += "<text x=\"" + num(left + pw + 42) + "\" y=\"" + num(ly) + "\">" +
                escape(plot.series[s].name) + "</text>\n";
     }

@@ -167,7 +167,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glUniform3fv(3, 1, &in.ambient[0]);
         glUniform1f(4, options.shading.shadowFactor);
         glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
-        glUniform1i(6, GLint(in.lightCount));
+        glUniform4iv(6, 1, &in.lightRanges[0]);
         glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
                     spacing(cubeFormat));
         bool culling = false;

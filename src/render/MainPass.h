@@ -33,10 +33,10 @@ struct MainPassInputs {
     glm::mat4 clipFromView{1.0f};
     glm::vec3 ambient{0.0f};
     const std::vector<GpuLight>* lights = nullptr;  // the scene's lights, then cascade records
-    int lightCount = 0;                             // the scene's lights
-    bool hasCascades = false;                       // some light is cascaded this frame
-    const gl::Texture* shadowMaps = nullptr;        // 2D array; null when no light has one
-    const gl::Texture* shadowCubes = nullptr;       // cube-map array; null when no light has one
+    glm::ivec4 lightRanges{0};                // ends of the unshadowed, map, cube, cascaded records
+    bool hasCascades = false;                 // some light is cascaded this frame
+    const gl::Texture* shadowMaps = nullptr;  // 2D array; null when no light has one
+    const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
 };
 
 class MainPass {

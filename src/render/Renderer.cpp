@@ -58,6 +58,10 @@ struct Renderer::Impl {
     std::vector<render::ShadowedLight> shadowed;
     std::vector<render::GpuLight> lights;          // scene lights, then cascade records
     std::vector<render::GpuLight> cascadeRecords;  // reused every frame
+    std::vector<render::GpuLight> ordered;         // reused every frame
+    std::vector<int> remap;                        // scene light -> record, reused
+    std::vector<std::uint8_t> hasMap;              // scene light has a map this frame
+    glm::ivec4 ranges{0};                          // ends of the record kinds
     shadow::FitScene fit;                          // reused every frame
     FrameStats stats;
     bool passTiming = false;
@@ -109,6 +113,7 @@ struct Renderer::Impl {
                              light.attenuation.quadratic,
                              std::cos(glm::radians(light.outerConeDegrees))};
             g.shadow.x = std::cos(glm::radians(light.innerConeDegrees));
+            g.soft.w = float(i);  // the scene's index, for the visibility pass
             const int mapSize =
                 options.shadow.mapSize > 0 ? options.shadow.mapSize : light.shadowMapSize;
             const bool shadowing =
@@ -124,6 +129,7 @@ struct Renderer::Impl {
                     shadow::lightCameraFrame(light, s.camera, fit, mapSize);
                 if (frame.valid) {
                     fillShadowRecord(g, frame, light, options.shadow);
+                    g.soft.w = float(i);
                     if (frame.kind == shadow::FrameKind::Cube) {
                         g.wsPosition = glm::vec4(light.position, frame.near);
                     }
@@ -134,8 +140,44 @@ struct Renderer::Impl {
             }
             lights.push_back(g);
         }
-        // Cascade records follow the scene's lights; their light records point at them.
-        lights.insert(lights.end(), cascadeRecords.begin(), cascadeRecords.end());
+        orderLights(s.lights.size());
+    }
+
+    // Orders the records by kind for the main pass's loops (shaders/lights.glsl): lights
+    // that are off are dropped; unshadowed, single-map, cube and cascaded lights follow each
+    // other, then the cascade records. Indices into the records (shadowed lights, cascaded
+    // lights' first cascade) are rewritten to match.
+    void orderLights(std::size_t sceneLights) {
+        ordered.clear();
+        remap.assign(sceneLights, -1);
+        hasMap.assign(sceneLights, 0);
+        for (const render::ShadowedLight& sl : shadowed)
+            hasMap[std::size_t(sl.light)] = 1;
+        // (Map layers are assigned later, by the shadow pass: colour.w says nothing yet.)
+        auto kindOf = [&](std::size_t i) {
+            const render::GpuLight& g = lights[i];
+            if (g.vsDirection.w < 0.5f) return -1;
+            if (!hasMap[i]) return 0;
+            return g.shadow.z == 2.0f ? 2 : g.shadow.z == 3.0f ? 3 : 1;
+        };
+        for (int kind = 0; kind < 4; ++kind) {
+            for (std::size_t i = 0; i < sceneLights; ++i) {
+                if (kindOf(i) != kind) continue;
+                remap[i] = int(ordered.size());
+                ordered.push_back(lights[i]);
+            }
+            ranges[kind] = int(ordered.size());
+        }
+        const int base = int(ordered.size());
+        for (render::GpuLight& g : ordered) {
+            if (g.shadow.z == 3.0f) g.wsPosition.x += float(base) - float(sceneLights);
+        }
+        ordered.insert(ordered.end(), cascadeRecords.begin(), cascadeRecords.end());
+        for (render::ShadowedLight& sl : shadowed) {
+            sl.record = sl.cascade >= 0 ? sl.record - int(sceneLights) + base
+                                        : remap[std::size_t(sl.record)];
+        }
+        lights.swap(ordered);
     }
 
     // The map-related fields of a light record for a single-frustum or cube frame.
@@ -188,6 +230,7 @@ struct Renderer::Impl {
                                      splits[size_t(k) + 1], scene.bounds(), mapSize);
             render::GpuLight c = g;
             fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
+            c.soft.w = float(lightIndex);
             c.attenuation.x = splits[size_t(k) + 1];
             c.wsPosition = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
             cascadeRecords.push_back(c);
@@ -293,7 +336,7 @@ struct Renderer::Impl {
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
         in.ambient = s.ambient;
         in.lights = &lights;
-        in.lightCount = int(s.lights.size());
+        in.lightRanges = ranges;
         in.hasCascades = !cascadeRecords.empty();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
