@@ -301,25 +301,30 @@ int gCascade = -1;
 // Cascaded directional light (SPEC S22): the first cascade whose far split lies beyond the
 // fragment's view depth; within the last `blend` fraction of a cascade, a mix with the next
 // one hides the seam. Beyond the last cascade nothing is shadowed.
+// The cascade is chosen first and looked up after: llvmpipe would run a lookup placed in
+// the selection loop for every cascade.
 float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
                         float vsDepth) {
     int first = int(light.wsPosition.x), count = int(light.wsPosition.y);
     float blend = light.wsPosition.z;
-    float previousSplit = 0.0;
+    int chosen = -1;
+    float t = 0.0, previousSplit = 0.0;
     for (int k = 0; k < count; ++k) {
-        LightData cascade = lights[first + k];
-        float split = cascade.attenuation.x;
-        if (vsDepth <= split) {
-            gCascade = k;
-            float v = mapVisibility(cascade, wsPosition, wsNormal, wsToLight);
+        float split = lights[first + k].attenuation.x;
+        if (chosen < 0 && vsDepth <= split) {
+            chosen = k;
             float bandStart = split - blend * (split - previousSplit);
-            if (k + 1 < count && vsDepth > bandStart) {
-                float t = (vsDepth - bandStart) / max(split - bandStart, 1e-6);
-                v = mix(v, mapVisibility(lights[first + k + 1], wsPosition, wsNormal, wsToLight), t);
-            }
-            return v;
+            t = k + 1 < count && vsDepth > bandStart
+                    ? (vsDepth - bandStart) / max(split - bandStart, 1e-6)
+                    : 0.0;
         }
         previousSplit = split;
     }
-    return 1.0;
+    if (chosen < 0) return 1.0;
+    gCascade = chosen;
+    float v = mapVisibility(lights[first + chosen], wsPosition, wsNormal, wsToLight);
+    if (t > 0.0) {
+        v = mix(v, mapVisibility(lights[first + chosen + 1], wsPosition, wsNormal, wsToLight), t);
+    }
+    return v;
 }
