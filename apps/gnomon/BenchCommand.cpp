@@ -36,7 +36,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
                   "every map, as when lights move)");
     cmd->add_option("--sweep", args.sweep,
                     "vary one parameter: lights (1..64 spot lights), map-size (256..8192), "
-                    "triangles (the scene copied 1..16 times), cascades (1..4), filter");
+                    "triangles (each triangle split into 1..4096), cascades (1..4), filter");
     cmd->add_option("--values", args.values,
                     "comma-separated values for --sweep (default: the ranges above)");
     cmd->add_option("--out-dir", args.outDir,
@@ -167,6 +167,25 @@ void sceneBox(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
     if (lo.x > hi.x) lo = hi = glm::vec3(0.0f);
 }
 
+// Splits every triangle into four by its edge midpoints (normals and colours interpolated).
+void subdivide(Mesh& mesh) {
+    std::vector<std::uint32_t> indices;
+    indices.reserve(mesh.indices.size() * 4);
+    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+        mesh.positions.push_back(0.5f * (mesh.positions[a] + mesh.positions[b]));
+        mesh.normals.push_back(glm::normalize(mesh.normals[a] + mesh.normals[b]));
+        if (!mesh.colours.empty())
+            mesh.colours.push_back(0.5f * (mesh.colours[a] + mesh.colours[b]));
+        return std::uint32_t(mesh.positions.size() - 1);
+    };
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+        const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+        indices.insert(indices.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
+    }
+    mesh.indices = std::move(indices);
+}
+
 // Scene and options for one value of a sweep.
 void applySweep(const std::string& param, const std::string& value, const Scene& base,
                 const RenderOptions& baseOptions, Scene& scene, RenderOptions& options) {
@@ -220,26 +239,21 @@ void applySweep(const std::string& param, const std::string& value, const Scene&
         }
         options.lightOnly = -1;
     } else if (param == "triangles") {
-        // The scene's objects copied k times on a grid, the camera pulled back to see them.
-        const int k = integer(1, 64);
-        glm::vec3 lo, hi;
-        sceneBox(base, lo, hi);
-        const glm::vec3 size = glm::max(hi - lo, glm::vec3(1e-3f)) * 1.1f;
-        const int side = int(std::ceil(std::sqrt(double(k))));
-        scene.objects.clear();
-        for (int c = 0; c < k; ++c) {
-            const glm::vec3 offset(float(c % side) * size.x, 0.0f, float(c / side) * size.z);
-            for (Object o : base.objects) {
-                o.worldFromModel = glm::translate(glm::mat4(1.0f), offset) * o.worldFromModel;
-                o.spin.pivot += offset;
-                scene.objects.push_back(o);
-            }
+        // Every triangle split into 4^k by its edge midpoints (k from the multiplier, a power
+        // of 4): the same picture and draw calls, more triangles. (Copies of the scene would
+        // either move the camera, changing the pixels shaded, or add draw calls.)
+        const int multiplier = integer(1, 65536);
+        int levels = 0;
+        while ((1 << (2 * levels)) < multiplier)
+            ++levels;
+        if ((1 << (2 * levels)) != multiplier) {
+            throw Error(ErrorKind::InvalidInput,
+                        "--values: triangles " + value + " is not a power of 4 (1, 4, 16, ...)");
         }
-        const glm::vec3 shift = 0.5f * float(side - 1) * glm::vec3(size.x, 0.0f, size.z);
-        scene.camera.centre += shift;
-        scene.camera.eye =
-            scene.camera.centre + (base.camera.eye - base.camera.centre) * float(side);
-        scene.camera.far *= float(side);
+        for (Mesh& mesh : scene.meshes) {
+            for (int l = 0; l < levels; ++l)
+                subdivide(mesh);
+        }
     } else {
         throw Error(ErrorKind::InvalidInput,
                     "--sweep: expected lights, map-size, triangles, cascades or filter, got '" +
@@ -250,7 +264,7 @@ void applySweep(const std::string& param, const std::string& value, const Scene&
 std::vector<std::string> defaultValues(const std::string& param) {
     if (param == "lights") return {"1", "2", "4", "8", "16", "32", "64"};
     if (param == "map-size") return {"256", "512", "1024", "2048", "4096", "8192"};
-    if (param == "triangles") return {"1", "2", "4", "8", "16"};
+    if (param == "triangles") return {"1", "4", "16", "64", "256", "1024", "4096"};
     if (param == "cascades") return {"1", "2", "3", "4"};
     if (param == "filter") return {"none", "hw2x2", "pcf", "poisson", "pcss"};
     return {};
@@ -391,7 +405,8 @@ int runBench(const BenchArgs& args, bool verbose) {
                  ", median of " + std::to_string(args.frames) + " frames)";
     const bool logAxis =
         args.sweep == "lights" || args.sweep == "map-size" || args.sweep == "triangles";
-    plot.xLabel = args.sweep == "triangles" ? "scene copies (triangles: see CSV)" : args.sweep;
+    plot.xLabel = args.sweep == "triangles" ? "triangles per original triangle (totals in the CSV)"
+                                            : args.sweep;
     plot.yLabel = "milliseconds";
     plot.series = {{"frame", {}},
                    {"shadow passes", {}},

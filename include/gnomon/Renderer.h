@@ -81,8 +81,9 @@ public:
     // whose lights all moved).
     void invalidateShadowMaps();
     // Wall time of a bare depth-only draw of every caster into a size x size depth buffer
-    // through the first shadowed light's camera of the last frame (no offsets, culling or
-    // layers): the floor a shadow pass can approach. Milliseconds; -1 without such a light.
+    // through the first shadowed light's camera of the last frame (back faces culled; no
+    // offsets, clamp, per-caster culling or layers): the floor a shadow pass can approach.
+    // Milliseconds; -1 without such a light.
     double measureBareDepthPass(int size);
     // "vendor / renderer / version".
     std::string glInfo() const;

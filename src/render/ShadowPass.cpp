@@ -196,7 +196,10 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
+    glEnable(GL_CULL_FACE);  // the cheapest state: back faces culled, no offsets, no clamp
+    glCullFace(GL_BACK);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_CLAMP);
     glUseProgram(mProgram.id());
     glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
     scene.bind();
@@ -204,6 +207,7 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
         if (item.casts && item.indexCount > 0) scene.draw(item, 1);
     }
     glFinish();
+    glDisable(GL_CULL_FACE);
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
 }

@@ -49,7 +49,8 @@ public:
     // Every map is drawn again next frame.
     void invalidate();
     // A bare depth-only draw of every caster into a size x size buffer through
-    // `clipFromWorld` (no offsets, no culling), timed with glFinish(): milliseconds.
+    // `clipFromWorld` (back faces culled, no offsets, no clamp, no per-caster culling),
+    // timed with glFinish(): milliseconds.
     double bareDepthPass(const GpuScene& scene, const glm::mat4& clipFromWorld, int size);
     // The 2D maps: a depth texture, or for colour formats an RGBA8 texture of encoded depth.
     const gl::Texture& maps() const { return mMaps; }
