@@ -412,7 +412,7 @@ int runBench(const BenchArgs& args, bool verbose) {
                    {"shadow passes", {}},
                    {"main pass", {}},
                    {"shadows off (reference)", {}},
-                   {"bare depth draw (reference)", {}}};
+                   {"bare depth draw, 1 map (reference)", {}}};
     std::printf("%-10s %10s %10s %10s %10s %12s %12s\n", args.sweep.c_str(), "frame ms",
                 "shadow ms", "main ms", "off ms", "bare ms", "shadow MiB");
     for (std::size_t i = 0; i < runs.size(); ++i) {

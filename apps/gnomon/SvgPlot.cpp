@@ -38,7 +38,7 @@ double tickStep(double top) {
 }  // namespace
 
 std::string toSvg(const Plot& plot) {
-    const double w = 720, h = 420, left = 70, right = 190, top = 40, bottom = 60;
+    const double w = 760, h = 420, left = 70, right = 230, top = 40, bottom = 60;
     const double pw = w - left - right, ph = h - top - bottom;
     double ymax = 0.0;
     for (const PlotSeries& s : plot.series)
