@@ -72,6 +72,16 @@ Sampler::Sampler(const std::string& label) {
     setLabel(GL_SAMPLER, n, label);
 }
 
+Sampler Sampler::storedDepth(const std::string& label) {
+    Sampler s(label);
+    s.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST)
+        .set(GL_TEXTURE_MAG_FILTER, GL_NEAREST)
+        .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
+        .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE)
+        .set(GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    return s;
+}
+
 Sampler& Sampler::set(GLenum parameter, GLint value) {
     glSamplerParameteri(id(), parameter, value);
     return *this;

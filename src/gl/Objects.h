@@ -84,6 +84,8 @@ public:
     explicit Sampler(const std::string& label);
     Sampler& set(GLenum parameter, GLint value);
     Sampler& setBorder(float r, float g, float b, float a);
+    // NEAREST, clamped to the edge, no comparison: a depth texture's stored values as they are.
+    static Sampler storedDepth(const std::string& label);
 };
 
 class Framebuffer : public Object<FramebufferDeleter> {

@@ -82,14 +82,7 @@ bool DebugPass::drawMaps(const ShadowPass& maps, const std::vector<ShadowedLight
         texture = mCubeView.id();
         format = DepthFormat::Depth32F;  // cubes are always native depth
     }
-    if (!mRawSampler) {
-        mRawSampler = gl::Sampler("debug maps sampler");
-        mRawSampler.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST)
-            .set(GL_TEXTURE_MAG_FILTER, GL_NEAREST)
-            .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
-            .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE)
-            .set(GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    }
+    if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("debug maps sampler");
     if (!mEmpty) mEmpty = gl::VertexArray("fullscreen (no attributes)");
     glUseProgram(mapsProgram(format).id());
     glUniform2i(0, columns, rows);

@@ -138,14 +138,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     glBindSampler(1, mCubeSampler.id());
     const bool pcss = so.filter == ShadowFilter::Pcss;
     if (pcss) {
-        if (!mRawSampler) {
-            mRawSampler = gl::Sampler("shadow depth sampler (pcss)");
-            mRawSampler.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST)
-                .set(GL_TEXTURE_MAG_FILTER, GL_NEAREST)
-                .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
-                .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE)
-                .set(GL_TEXTURE_COMPARE_MODE, GL_NONE);
-        }
+        if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("shadow depth sampler (pcss)");
         glBindTextureUnit(2, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
         glBindTextureUnit(3, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
         glBindSampler(2, mRawSampler.id());
