@@ -14,6 +14,10 @@ namespace {
 bool handCompare(const ShadowOptions& s) {
     return isColourFormat(s.depthFormat) || s.filter == ShadowFilter::None;
 }
+// Filters whose kernel width is pcfSize.
+bool kernelFilter(const ShadowOptions& s) {
+    return s.filter == ShadowFilter::Pcf || s.filter == ShadowFilter::Poisson;
+}
 }  // namespace
 
 static_assert(sizeof(GpuLight) == 192, "GpuLight must match LightData in lights.glsl");
@@ -28,9 +32,22 @@ MainPass::MainPass() {
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
                                      bool visibilityPass) {
+    // Every choice that selects a variant, packed in one number: looking a program up costs
+    // no allocation; the defines are spelled out only to build a new one.
+    const ShadowOptions& so = options.shadow;
+    const std::uint64_t key = std::uint64_t(visibilityPass) | std::uint64_t(so.enabled) << 1 |
+                              std::uint64_t(so.outside) << 2 | std::uint64_t(so.filter) << 4 |
+                              std::uint64_t(kernelFilter(so) ? so.pcfSize : 0) << 8 |
+                              std::uint64_t(so.depthFormat) << 16 |
+                              std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
+                              std::uint64_t(in.shadowCubes != nullptr) << 21 |
+                              std::uint64_t(in.hasCascades) << 22 |
+                              std::uint64_t(options.shading.shadowedRule) << 23;
+    if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
+
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
     if (visibilityPass) defines.push_back("VISIBILITY_PASS");
-    const ShadowOptions& s = options.shadow;
+    const ShadowOptions& s = so;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
     if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
     switch (s.filter) {
@@ -50,7 +67,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
             defines.push_back("FILTER_PCSS");
             break;
     }
-    if (s.filter == ShadowFilter::Pcf || s.filter == ShadowFilter::Poisson) {
+    if (kernelFilter(s)) {
         defines.push_back("PCF_SIZE " + std::to_string(s.pcfSize));
     }
     switch (s.depthFormat) {
@@ -73,19 +90,15 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (options.shading.shadowedRule == ShadowedRule::Factor) {
         defines.push_back("SHADOWED_FACTOR");
     }
-    std::string key;
+    std::string name;
     for (const auto& d : defines)
-        key += d + ";";
-    auto it = mPrograms.find(key);
-    if (it == mPrograms.end()) {
-        it = mPrograms
-                 .emplace(key, gl::buildProgram("main [" + key + "]",
-                                                {{GL_VERTEX_SHADER, "main.vert.glsl"},
-                                                 {GL_FRAGMENT_SHADER, "main.frag.glsl"}},
-                                                defines))
-                 .first;
-    }
-    return it->second;
+        name += d + ";";
+    return mPrograms
+        .emplace(key, gl::buildProgram("main [" + name + "]",
+                                       {{GL_VERTEX_SHADER, "main.vert.glsl"},
+                                        {GL_FRAGMENT_SHADER, "main.frag.glsl"}},
+                                       defines))
+        .first->second;
 }
 
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,

@@ -53,7 +53,7 @@ private:
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
                                bool visibilityPass);
 
-    std::map<std::string, gl::Program> mPrograms;
+    std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
     int mMaxLights = 0;
     gl::Buffer mLights;  // sized for mMaxLights once; the used part is updated on change
     std::vector<GpuLight> mUploaded;
