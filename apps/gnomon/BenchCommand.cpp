@@ -23,7 +23,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
         "time each pass of a frame (median and spread over N frames), optionally "
         "sweeping one parameter");
     cmd->add_option("--scene", args.scene,
-                    "built-in scene name (see `gnomon scenes`) or model file")
+                    "built-in scene name (see `gnomon scenes`) or glTF file (.gltf, .glb)")
         ->required();
     cmd->add_option(
         "--frames", args.frames,
@@ -328,6 +328,7 @@ int runBench(const BenchArgs& args, bool verbose) {
                     "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
     }
     const Scene base = loadScene(args.scene);
+    printWarnings(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     std::vector<std::string> values;
     if (!args.sweep.empty()) {

@@ -3,12 +3,19 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <string>
 
 #include "gnomon/Options.h"
 #include "gnomon/Scene.h"
 
 namespace gnomon::cli {
+
+// A loaded scene's warnings (what the loader ignored or repaired), one line each on stderr.
+inline void printWarnings(const Scene& scene) {
+    for (const std::string& w : scene.warnings)
+        std::fprintf(stderr, "gnomon: warning: %s\n", w.c_str());
+}
 
 struct RenderFlags {
     std::string preset, debugView, size, shadows, outside, cull, filter, shadowed, depthFormat,

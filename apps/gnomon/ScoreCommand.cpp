@@ -11,7 +11,7 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "score", "render one frame and score its shadows against a ray-traced reference");
     cmd->add_option("--scene", args.scene,
-                    "built-in scene name (see `gnomon scenes`) or model file")
+                    "built-in scene name (see `gnomon scenes`) or glTF file (.gltf, .glb)")
         ->required();
     cmd->add_option("--out-dir", args.outDir,
                     "folder for render.png, errors.png (false shadow red, leaks blue, pale "
@@ -47,6 +47,7 @@ int runScore(const ScoreArgs& args, bool verbose) {
                                                  std::to_string(args.maxError));
     }
     Scene scene = loadScene(args.scene);
+    printWarnings(scene);
     const RenderOptions options = args.flags.resolve(scene);
     ContextOptions context;
     context.verbose = verbose;

@@ -31,6 +31,7 @@ struct RenderArgs {
 
 int runRender(const RenderArgs& args, bool verbose) {
     gnomon::Scene scene = gnomon::loadScene(args.scene);
+    gnomon::cli::printWarnings(scene);
     const gnomon::RenderOptions options = args.flags.resolve(scene);
     if (options.lightOnly >= int(scene.lights.size())) {
         throw gnomon::Error(gnomon::ErrorKind::InvalidInput,
@@ -90,7 +91,7 @@ int main(int argc, char** argv) {
     CLI::App* renderCmd = app.add_subcommand("render", "render one frame to a PNG file");
     renderCmd
         ->add_option("--scene", render.scene,
-                     "built-in scene name (see `gnomon scenes`) or model file")
+                     "built-in scene name (see `gnomon scenes`) or glTF file (.gltf, .glb)")
         ->required();
     renderCmd->add_option("--out", render.out, "output PNG path (written atomically)")->required();
     renderCmd->add_option(

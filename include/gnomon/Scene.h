@@ -130,6 +130,9 @@ struct Scene {
     RenderOptions options;    // the options the scene was authored with; callers start here
     // The textbook's own settings for this scene (SPEC section 8), if it comes from one.
     std::optional<RenderOptions> textbookOptions;
+    // What a loader ignored or repaired (unsupported extensions, generated normals, skipped
+    // triangles, added lights or camera), one sentence each.
+    std::vector<std::string> warnings;
 
     // Empty when consistent; otherwise one sentence per problem (index out of range, NaN...).
     std::vector<std::string> validate() const;

@@ -1,9 +1,11 @@
-// Scene lookup by name or path. Model files are not loaded by this version: a path gets a
-// clear error rather than a guess.
+// Scene lookup by name or path: built-in scenes by name, glTF files by path; other formats
+// get a clear error rather than a guess.
+#include <cctype>
 #include <filesystem>
 
 #include "gnomon/Error.h"
 #include "gnomon/Scene.h"
+#include "scene/GltfLoader.h"
 
 namespace gnomon {
 
@@ -17,10 +19,13 @@ Scene loadScene(const std::string& nameOrPath) {
             throw Error(ErrorKind::Io, "cannot load scene '" + nameOrPath +
                                            "': no such file (and no built-in scene by that name)");
         }
-        throw Error(ErrorKind::InvalidInput,
-                    "cannot load scene '" + nameOrPath +
-                        "': loading model files is not supported by this version of gnomon; "
-                        "use a built-in scene (gnomon scenes)");
+        std::string ext = fs::path(nameOrPath).extension().string();
+        for (char& c : ext)
+            c = char(std::tolower(static_cast<unsigned char>(c)));
+        if (ext == ".gltf" || ext == ".glb") return loadGltf(nameOrPath);
+        throw Error(ErrorKind::InvalidInput, "cannot load scene '" + nameOrPath +
+                                                 "': gnomon reads glTF 2.0 (.gltf, .glb); '" + ext +
+                                                 "' files are not supported yet");
     }
     return builtinScene(nameOrPath);
 }

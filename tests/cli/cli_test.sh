@@ -68,6 +68,19 @@ unknown_scene)
     expect 2 "unknown scene 'no-such-scene'"
     expect 2 "book-triangle"  # the message lists the known scenes
     ;;
+gltf)
+    corpus=$(dirname "$0")/../data/gltf
+    run render --scene "$corpus/triangle.gltf" --size 32x32 --out "$work/t.png"
+    skip_without_gl
+    expect 0 "warning: meshes[0].primitives[0] has no normals: flat ones generated"
+    [[ -s "$work/t.png" ]] || fail "no t.png"
+    run render --scene "$corpus/index_out_of_range.gltf" --out "$work/b.png"
+    expect 2 "index_out_of_range.gltf: accessors[1] holds index 7"
+    [[ -e "$work/b.png" ]] && fail "an image was written for a broken scene"
+    printf 'v 0 0 0\n' >"$work/model.obj"
+    run render --scene "$work/model.obj" --out "$work/o.png"
+    expect 2 "'.obj' files are not supported yet"
+    ;;
 missing_file)
     run render --scene "$work/nothing.gltf" --out "$work/a.png"
     expect 1 "cannot load scene '$work/nothing.gltf': no such file"

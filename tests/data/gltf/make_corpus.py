@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""Writes the small glTF files of this folder: one valid triangle and broken variants, each
+breaking one rule the loader must report (file, element, what is wrong). Run it from
+anywhere; the files are committed, so tests need no Python."""
+import base64
+import json
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def data_uri(raw):
+    return "data:application/octet-stream;base64," + base64.b64encode(raw).decode()
+
+
+def triangle(positions=None, indices=(0, 1, 2)):
+    """A triangle with indices: 3 float3 positions then 3 uint16 indices (padded)."""
+    positions = positions or [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)]
+    pos = b"".join(struct.pack("<3f", *p) for p in positions)
+    idx = b"".join(struct.pack("<H", i) for i in indices) + b"\0\0"
+    raw = pos + idx
+    return {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": len(raw), "uri": data_uri(raw)}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(pos)},
+                        {"buffer": 0, "byteOffset": len(pos), "byteLength": len(idx)}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": len(positions), "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5123, "count": len(indices), "type": "SCALAR"},
+        ],
+    }
+
+
+def write(name, doc):
+    with open(os.path.join(HERE, name), "w") as f:
+        f.write(doc if isinstance(doc, str) else json.dumps(doc, indent=1))
+
+
+def main():
+    write("triangle.gltf", triangle())
+    write("bad_json.gltf", '{"asset": {"version": "2.0"}, "nodes": [')
+    d = triangle()
+    d["buffers"][0]["uri"] = "nothere.bin"
+    write("missing_buffer.gltf", d)
+    d = triangle()
+    d["buffers"][0]["uri"] = "../secret.bin"
+    write("escape_uri.gltf", d)
+    d = triangle()
+    d["buffers"][0]["uri"] = "/etc/hostname"
+    write("absolute_uri.gltf", d)
+    write("index_out_of_range.gltf", triangle(indices=(0, 1, 7)))
+    d = triangle()
+    d["accessors"][0]["count"] = 40  # 480 bytes from a 36-byte view
+    write("accessor_overrun.gltf", d)
+    write("nan_position.gltf",
+          triangle(positions=[(0.0, 0.0, 0.0), (float("nan"), 0.0, 0.0), (0.0, 1.0, 0.0)]))
+    d = triangle()
+    d["extensionsUsed"] = d["extensionsRequired"] = ["KHR_draco_mesh_compression"]
+    write("required_extension.gltf", d)
+    d = triangle()
+    d["nodes"] = [{"mesh": 0, "children": [1]}, {"children": [0]}]
+    write("cycle.gltf", d)
+    d = triangle()
+    d["scenes"] = [{"nodes": []}]
+    write("empty_scene.gltf", d)
+    write("zero_area.gltf",
+          triangle(positions=[(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (2.0, 0.0, 0.0)]))
+    d = triangle()
+    d["meshes"][0]["primitives"][0]["mode"] = 1  # lines
+    write("lines_only.gltf", d)
+    with open(os.path.join(HERE, "truncated.glb"), "wb") as f:
+        f.write(b"glTF" + struct.pack("<II", 2, 1000) + b"\x10\0\0\0JSON{")
+
+
+if __name__ == "__main__":
+    main()

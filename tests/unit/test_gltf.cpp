@@ -1,0 +1,173 @@
+// glTF loading (issue 5): the shared test scenes load into the scene model as their files
+// say (triangles, lights, instances, mirrored winding, double-sided materials), and broken
+// files are refused with the file, the element and what is wrong. Tests that need
+// ../shared/scenes skip with a message where it is absent.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "gnomon/Error.h"
+#include "scene/GltfLoader.h"
+
+namespace gnomon {
+namespace {
+
+std::string shared(const std::string& file) {
+    return std::string(GNOMON_SHARED_SCENES) + "/" + file;
+}
+std::string corpus(const std::string& file) {
+    return std::string(GNOMON_GLTF_CORPUS) + "/" + file;
+}
+
+#define NEED_SHARED(file)                                                                 \
+    if (!std::filesystem::exists(shared(file))) {                                         \
+        GTEST_SKIP() << shared(file) << " is absent (the shared test scenes are not here)"; \
+    }
+
+std::size_t triangles(const Scene& s) {
+    std::size_t n = 0;
+    for (const Object& o : s.objects)
+        n += s.meshes[o.mesh].indices.size() / 3;
+    return n;
+}
+
+TEST(Gltf, BoxLoadsWithADefaultSunAndCamera) {
+    NEED_SHARED("Box/Box.glb");
+    const Scene s = loadGltf(shared("Box/Box.glb"));
+    EXPECT_TRUE(s.validate().empty());
+    EXPECT_EQ(triangles(s), 12u);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Directional);
+    bool warnedSun = false, warnedCamera = false;
+    for (const std::string& w : s.warnings) {
+        warnedSun |= w.find("default sun") != std::string::npos;
+        warnedCamera |= w.find("no camera") != std::string::npos;
+    }
+    EXPECT_TRUE(warnedSun);
+    EXPECT_TRUE(warnedCamera);
+    // The camera frames the box: its centre straight ahead.
+    EXPECT_GT(glm::length(s.camera.eye - s.camera.centre), 1.0f);
+}
+
+TEST(Gltf, LampHasItsFivePointLights) {
+    NEED_SHARED("LightsPunctualLamp/LightsPunctualLamp.gltf");
+    const Scene s = loadGltf(shared("LightsPunctualLamp/LightsPunctualLamp.gltf"));
+    EXPECT_TRUE(s.validate().empty());
+    ASSERT_EQ(s.lights.size(), 5u);
+    for (const Light& l : s.lights) {
+        EXPECT_EQ(l.type, LightType::Point);
+        EXPECT_TRUE(l.castsShadows);
+        EXPECT_EQ(l.attenuation.quadratic, 1.0f);  // 1/d^2
+    }
+    // Intensities keep the file's ratios (15, 1.5, 80, 80, 180 candela), scaled for display.
+    EXPECT_NEAR(s.lights[4].intensity / s.lights[0].intensity, 12.0f, 1e-3f);
+    EXPECT_NEAR(s.lights[1].intensity / s.lights[0].intensity, 0.1f, 1e-4f);
+}
+
+TEST(Gltf, InstancingMakesOneObjectPerInstance) {
+    NEED_SHARED("SimpleInstancing/SimpleInstancing.glb");
+    const Scene s = loadGltf(shared("SimpleInstancing/SimpleInstancing.glb"));
+    EXPECT_TRUE(s.validate().empty());
+    EXPECT_EQ(s.objects.size(), 125u);
+    EXPECT_EQ(triangles(s), 1500u);
+}
+
+TEST(Gltf, TwoSidedPlaneIsDoubleSided) {
+    NEED_SHARED("TwoSidedPlane/TwoSidedPlane.gltf");
+    const Scene s = loadGltf(shared("TwoSidedPlane/TwoSidedPlane.gltf"));
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_TRUE(s.materials[s.objects[0].material].doubleSided);
+    EXPECT_EQ(triangles(s), 2u);
+}
+
+// Mirrored nodes flip winding: in world space every triangle's winding normal (what GL
+// culls by) points the way its vertex normals do, mirrored or not.
+TEST(Gltf, MirroredNodesKeepFrontFacesFront) {
+    NEED_SHARED("NegativeScaleTest/NegativeScaleTest.glb");
+    const Scene s = loadGltf(shared("NegativeScaleTest/NegativeScaleTest.glb"));
+    int mirrored = 0;
+    std::size_t checked = 0, agree = 0;
+    for (const Object& o : s.objects) {
+        const glm::mat3 m(o.worldFromModel);
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(m));
+        mirrored += glm::determinant(m) < 0.0f;
+        const Mesh& mesh = s.meshes[o.mesh];
+        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+            const glm::vec3 a = m * mesh.positions[mesh.indices[i]];
+            const glm::vec3 b = m * mesh.positions[mesh.indices[i + 1]];
+            const glm::vec3 c = m * mesh.positions[mesh.indices[i + 2]];
+            const glm::vec3 winding = glm::cross(b - a, c - a);
+            const glm::vec3 n = normalMatrix * (mesh.normals[mesh.indices[i]] +
+                                                mesh.normals[mesh.indices[i + 1]] +
+                                                mesh.normals[mesh.indices[i + 2]]);
+            if (glm::length(winding) < 1e-9f || glm::length(n) < 1e-6f) continue;
+            ++checked;
+            agree += glm::dot(winding, n) > 0.0f;
+        }
+    }
+    EXPECT_GT(mirrored, 0) << "the test scene has mirrored nodes";
+    ASSERT_GT(checked, 1000u);
+    EXPECT_GT(double(agree) / double(checked), 0.99);
+}
+
+TEST(Gltf, OurTriangleLoads) {
+    const Scene s = loadGltf(corpus("triangle.gltf"));
+    EXPECT_TRUE(s.validate().empty());
+    EXPECT_EQ(triangles(s), 1u);
+    bool flat = false;
+    for (const std::string& w : s.warnings)
+        flat |= w.find("flat ones generated") != std::string::npos;
+    EXPECT_TRUE(flat);
+    EXPECT_EQ(s.meshes[0].normals[0], glm::vec3(0, 0, 1));  // CCW in the xy plane
+}
+
+struct Broken {
+    const char* file;
+    const char* says;  // a part of the message
+    ErrorKind kind;
+};
+void PrintTo(const Broken& b, std::ostream* os) {
+    *os << b.file;
+}
+class BrokenFiles : public testing::TestWithParam<Broken> {};
+
+TEST_P(BrokenFiles, AreRefusedWithWhereAndWhat) {
+    try {
+        loadGltf(corpus(GetParam().file));
+        FAIL() << "loaded";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_EQ(e.kind(), GetParam().kind) << m;
+        EXPECT_NE(m.find(GetParam().file), std::string::npos) << "no file name: " << m;
+        EXPECT_NE(m.find(GetParam().says), std::string::npos) << m;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Corpus, BrokenFiles,
+    testing::Values(
+        Broken{"bad_json.gltf", "parse error", ErrorKind::InvalidInput},
+        Broken{"missing_buffer.gltf", "nothere.bin", ErrorKind::InvalidInput},
+        Broken{"escape_uri.gltf", "inside the scene's folder only", ErrorKind::InvalidInput},
+        Broken{"absolute_uri.gltf", "inside the scene's folder only", ErrorKind::InvalidInput},
+        Broken{"index_out_of_range.gltf", "accessors[1] holds index 7", ErrorKind::InvalidInput},
+        Broken{"accessor_overrun.gltf", "accessors[0] (40 elements from byte 0) overruns",
+               ErrorKind::InvalidInput},
+        Broken{"nan_position.gltf", "accessors[0] (POSITION) holds NaN", ErrorKind::InvalidInput},
+        Broken{"required_extension.gltf", "requires extension KHR_draco_mesh_compression",
+               ErrorKind::InvalidInput},
+        Broken{"cycle.gltf", "nodes[0] is its own ancestor", ErrorKind::InvalidInput},
+        Broken{"empty_scene.gltf", "no triangles", ErrorKind::InvalidInput},
+        Broken{"zero_area.gltf", "no triangles", ErrorKind::InvalidInput},
+        Broken{"lines_only.gltf", "no triangles", ErrorKind::InvalidInput},
+        Broken{"truncated.glb", "Invalid glTF binary", ErrorKind::InvalidInput},
+        Broken{"no_such_file.gltf", "no such file", ErrorKind::Io}),
+    [](const auto& info) {
+        std::string n = info.param.file;
+        for (char& c : n)
+            c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+        return n;
+    });
+
+}  // namespace
+}  // namespace gnomon
