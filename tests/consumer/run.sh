@@ -73,13 +73,6 @@ if command -v ldd >/dev/null; then
 fi
 
 status=0
-# Sanitizer builds: LeakSanitizer's thread tracer crashes reading the thread-local storage
-# that libgnomon's dependencies (Embree's TBB) set up when the whole library is loaded as
-# one shared object; leaks are still checked, without TLS as roots. (The instrumented test
-# executables, which link the parts statically, keep the full check.)
-if [[ -n "${LSAN_OPTIONS:-}" ]]; then
-    export LSAN_OPTIONS="$LSAN_OPTIONS:use_tls=0"
-fi
 "$exe" "$work/book-triangle.png" || status=$?
 if [[ $status -eq 77 ]]; then
     exit 77
