@@ -16,10 +16,10 @@
 #include <map>
 #include <set>
 
+#include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <tiny_gltf.h>
 
 #include "gnomon/Error.h"
 
@@ -30,7 +30,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(2) << 30;  // 2 GiB per file
-constexpr int kMaxDepth = 256;                                      // node nesting
+constexpr int kMaxDepth = 256;                                     // node nesting
 
 // The scene's folder: external URIs must resolve inside it.
 struct Folder {
@@ -64,8 +64,8 @@ bool readFile(std::vector<unsigned char>* out, std::string* err, const std::stri
     Folder& folder = *static_cast<Folder*>(user);
     fs::path resolved;
     if (!inside(folder, path, resolved)) {
-        folder.error = "'" + path + "' lies outside the scene's folder '" +
-                       folder.root.string() + "' (no absolute paths or .. escapes)";
+        folder.error = "'" + path + "' lies outside the scene's folder '" + folder.root.string() +
+                       "' (no absolute paths or .. escapes)";
         if (err) *err = folder.error;
         return false;
     }
@@ -153,7 +153,8 @@ public:
                         break;
                     }
                     default:
-                        fail(name(index) + " (" + role + ") has a component type gnomon cannot read");
+                        fail(name(index) + " (" + role +
+                             ") has a component type gnomon cannot read");
                 }
                 out[i * std::size_t(components) + std::size_t(c)] = v;
             }
@@ -211,7 +212,8 @@ private:
         const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
         const std::string vname = "bufferViews[" + std::to_string(a.bufferView) + "]";
         if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size()) {
-            fail(vname + " refers to buffers[" + std::to_string(v.buffer) + "], which does not exist");
+            fail(vname + " refers to buffers[" + std::to_string(v.buffer) +
+                 "], which does not exist");
         }
         const tinygltf::Buffer& b = m.buffers[std::size_t(v.buffer)];
         if (v.byteOffset > b.data.size() || v.byteLength > b.data.size() - v.byteOffset) {
@@ -291,23 +293,26 @@ Scene loadGltf(const std::string& path) {
                            : loader.LoadASCIIFromFile(&model, &err, &warn, path);
     if (!ok) {
         std::string why = !folder.error.empty() ? folder.error : err;
-        while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
+        while (!why.empty() && (why.back() == '\n' || why.back() == ' '))
+            why.pop_back();
         if (why.find("File not found") != std::string::npos) {
-            why += " (external files are looked for inside the scene's folder only: no absolute "
-                   "paths or .. escapes)";
+            why +=
+                " (external files are looked for inside the scene's folder only: no absolute "
+                "paths or .. escapes)";
         }
         throw Error(ErrorKind::InvalidInput, path + ": " + (why.empty() ? "not valid glTF" : why));
     }
     const Reader read(model, path);
 
     static const std::set<std::string> kSupported = {
-        "KHR_lights_punctual", "EXT_mesh_gpu_instancing", "KHR_materials_emissive_strength",
-        "KHR_texture_transform", "KHR_materials_ior", "KHR_materials_specular"};
+        "KHR_lights_punctual",   "EXT_mesh_gpu_instancing", "KHR_materials_emissive_strength",
+        "KHR_texture_transform", "KHR_materials_ior",       "KHR_materials_specular"};
     Scene scene;
     scene.name = fs::path(path).stem().string();
     scene.description = "glTF file " + path;
     for (const std::string& e : model.extensionsRequired) {
-        if (!kSupported.count(e)) read.fail("requires extension " + e + ", which gnomon does not support");
+        if (!kSupported.count(e))
+            read.fail("requires extension " + e + ", which gnomon does not support");
     }
     for (const std::string& e : model.extensionsUsed) {
         if (!kSupported.count(e)) scene.warnings.push_back("extension " + e + " is ignored");
@@ -360,7 +365,8 @@ Scene loadGltf(const std::string& path) {
         const std::vector<float> pos = read.floats(attr->second, 3, "POSITION");
         const std::size_t vertices = pos.size() / 3;
         for (float v : pos) {
-            if (!std::isfinite(v)) read.fail(read.name(attr->second) + " (POSITION) holds NaN or infinity");
+            if (!std::isfinite(v))
+                read.fail(read.name(attr->second) + " (POSITION) holds NaN or infinity");
         }
         std::vector<std::uint32_t> order;
         if (p.indices >= 0) {
@@ -399,10 +405,14 @@ Scene loadGltf(const std::string& path) {
         auto normalAttr = p.attributes.find("NORMAL");
         auto colourAttr = p.attributes.find("COLOR_0");
         std::vector<float> normals, colours;
-        if (normalAttr != p.attributes.end()) normals = read.floats(normalAttr->second, 3, "NORMAL");
-        if (colourAttr != p.attributes.end()) colours = read.floats(colourAttr->second, 4, "COLOR_0");
-        if (!normals.empty() && normals.size() != pos.size()) read.fail(where + " has a NORMAL count unlike POSITION's");
-        if (!colours.empty() && colours.size() / 4 != vertices) read.fail(where + " has a COLOR_0 count unlike POSITION's");
+        if (normalAttr != p.attributes.end())
+            normals = read.floats(normalAttr->second, 3, "NORMAL");
+        if (colourAttr != p.attributes.end())
+            colours = read.floats(colourAttr->second, 4, "COLOR_0");
+        if (!normals.empty() && normals.size() != pos.size())
+            read.fail(where + " has a NORMAL count unlike POSITION's");
+        if (!colours.empty() && colours.size() / 4 != vertices)
+            read.fail(where + " has a COLOR_0 count unlike POSITION's");
         // Without normals: flat ones, one per triangle (its vertices are split); with them,
         // the vertices are kept and shared.
         const bool flat = normals.empty();
@@ -419,7 +429,8 @@ Scene loadGltf(const std::string& path) {
             if (!colours.empty()) {
                 mesh.colours.resize(vertices);
                 for (std::uint32_t k = 0; k < vertices; ++k)
-                    mesh.colours[k] = glm::vec3(colours[4 * k], colours[4 * k + 1], colours[4 * k + 2]);
+                    mesh.colours[k] =
+                        glm::vec3(colours[4 * k], colours[4 * k + 1], colours[4 * k + 2]);
             }
         }
         for (std::size_t t = 0; t + 2 < tri.size(); t += 3) {
@@ -439,7 +450,8 @@ Scene loadGltf(const std::string& path) {
                 mesh.positions.push_back(position(k));
                 mesh.normals.push_back(glm::normalize(n));
                 if (!colours.empty()) {
-                    mesh.colours.push_back(glm::vec3(colours[4 * k], colours[4 * k + 1], colours[4 * k + 2]));
+                    mesh.colours.push_back(
+                        glm::vec3(colours[4 * k], colours[4 * k + 1], colours[4 * k + 2]));
                 }
                 mesh.indices.push_back(std::uint32_t(mesh.indices.size()));
             }
@@ -460,10 +472,12 @@ Scene loadGltf(const std::string& path) {
     std::vector<int> stack;  // the path from the root, to catch cycles
     std::function<void(int, const glm::mat4&)> walk = [&](int n, const glm::mat4& parent) {
         if (n < 0 || std::size_t(n) >= model.nodes.size()) {
-            read.fail("a scene or node refers to nodes[" + std::to_string(n) + "], which does not exist");
+            read.fail("a scene or node refers to nodes[" + std::to_string(n) +
+                      "], which does not exist");
         }
         if (std::find(stack.begin(), stack.end(), n) != stack.end()) {
-            read.fail("nodes[" + std::to_string(n) + "] is its own ancestor (the node graph has a cycle)");
+            read.fail("nodes[" + std::to_string(n) +
+                      "] is its own ancestor (the node graph has a cycle)");
         }
         if (stack.size() >= std::size_t(kMaxDepth)) read.fail("nodes nest deeper than 256 levels");
         stack.push_back(n);
@@ -471,8 +485,8 @@ Scene loadGltf(const std::string& path) {
         const glm::mat4 world = parent * localMatrix(node);
         // Instances: EXT_mesh_gpu_instancing gives one transform per instance.
         std::vector<glm::mat4> instances = {world};
-        if (auto it = node.extensions.find("EXT_mesh_gpu_instancing"); it != node.extensions.end() &&
-                                                                        node.mesh >= 0) {
+        if (auto it = node.extensions.find("EXT_mesh_gpu_instancing");
+            it != node.extensions.end() && node.mesh >= 0) {
             const tinygltf::Value& attrs = it->second.Get("attributes");
             auto column = [&](const char* key, int comps) {
                 std::vector<float> v;
@@ -488,11 +502,14 @@ Scene loadGltf(const std::string& path) {
                 instances.clear();
                 for (std::size_t i = 0; i < count; ++i) {
                     glm::mat4 m(1.0f);
-                    if (i < t.size() / 3) m = glm::translate(m, glm::vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]));
+                    if (i < t.size() / 3)
+                        m = glm::translate(m, glm::vec3(t[3 * i], t[3 * i + 1], t[3 * i + 2]));
                     if (i < r.size() / 4) {
-                        m *= glm::mat4_cast(glm::normalize(glm::quat(r[4 * i + 3], r[4 * i], r[4 * i + 1], r[4 * i + 2])));
+                        m *= glm::mat4_cast(glm::normalize(
+                            glm::quat(r[4 * i + 3], r[4 * i], r[4 * i + 1], r[4 * i + 2])));
                     }
-                    if (i < s.size() / 3) m = glm::scale(m, glm::vec3(s[3 * i], s[3 * i + 1], s[3 * i + 2]));
+                    if (i < s.size() / 3)
+                        m = glm::scale(m, glm::vec3(s[3 * i], s[3 * i + 1], s[3 * i + 2]));
                     instances.push_back(world * m);
                 }
             }
@@ -532,7 +549,8 @@ Scene loadGltf(const std::string& path) {
     };
     if (!model.scenes.empty()) {
         const int s = model.defaultScene >= 0 ? model.defaultScene : 0;
-        if (std::size_t(s) >= model.scenes.size()) read.fail("scene " + std::to_string(s) + " does not exist");
+        if (std::size_t(s) >= model.scenes.size())
+            read.fail("scene " + std::to_string(s) + " does not exist");
         for (int n : model.scenes[std::size_t(s)].nodes)
             walk(n, glm::mat4(1.0f));
     } else {
@@ -544,7 +562,8 @@ Scene loadGltf(const std::string& path) {
         for (std::size_t n = 0; n < model.nodes.size(); ++n)
             if (!child[n]) walk(int(n), glm::mat4(1.0f));
     }
-    if (zeroArea > 0) scene.warnings.push_back(std::to_string(zeroArea) + " zero-area triangles skipped");
+    if (zeroArea > 0)
+        scene.warnings.push_back(std::to_string(zeroArea) + " zero-area triangles skipped");
     if (scene.objects.empty()) read.fail("the scene has no triangles to draw");
 
     // World bounds of what is drawn.
@@ -569,7 +588,8 @@ Scene loadGltf(const std::string& path) {
         const tinygltf::Light& src = model.lights[std::size_t(pl.index)];
         Light l;
         l.name = src.name;
-        if (src.color.size() >= 3) l.colour = glm::vec3(float(src.color[0]), float(src.color[1]), float(src.color[2]));
+        if (src.color.size() >= 3)
+            l.colour = glm::vec3(float(src.color[0]), float(src.color[1]), float(src.color[2]));
         l.intensity = float(src.intensity);
         l.position = glm::vec3(pl.world[3]);
         l.direction = glm::normalize(glm::mat3(pl.world) * glm::vec3(0, 0, -1));
@@ -580,11 +600,13 @@ Scene loadGltf(const std::string& path) {
             l.attenuation = {0.0f, 0.0f, 1.0f};
             if (l.type == LightType::Spot) {
                 l.innerConeDegrees = float(glm::degrees(src.spot.innerConeAngle));
-                l.outerConeDegrees = std::clamp(float(glm::degrees(src.spot.outerConeAngle)), 0.1f, 89.0f);
+                l.outerConeDegrees =
+                    std::clamp(float(glm::degrees(src.spot.outerConeAngle)), 0.1f, 89.0f);
                 l.innerConeDegrees = std::clamp(l.innerConeDegrees, 0.0f, l.outerConeDegrees);
             }
         } else {
-            scene.warnings.push_back("light '" + src.name + "' has unknown type '" + src.type + "': ignored");
+            scene.warnings.push_back("light '" + src.name + "' has unknown type '" + src.type +
+                                     "': ignored");
             continue;
         }
         if (src.range > 0.0) scene.warnings.push_back("light '" + src.name + "': range is ignored");
@@ -639,7 +661,7 @@ Scene loadGltf(const std::string& path) {
             cam.aspect = float(c.perspective.aspectRatio);
             cam.near = float(c.perspective.znear);
             cam.far = c.perspective.zfar > 0.0 ? float(c.perspective.zfar)
-                                                : glm::length(cam.eye - centre) + 4.0f * radius;
+                                               : glm::length(cam.eye - centre) + 4.0f * radius;
         }
         if (!(cam.near > 0.0f && cam.far > cam.near)) {
             cam.near = radius * 1e-3f;

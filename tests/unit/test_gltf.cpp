@@ -19,8 +19,8 @@ std::string corpus(const std::string& file) {
     return std::string(GNOMON_GLTF_CORPUS) + "/" + file;
 }
 
-#define NEED_SHARED(file)                                                                 \
-    if (!std::filesystem::exists(shared(file))) {                                         \
+#define NEED_SHARED(file)                                                                   \
+    if (!std::filesystem::exists(shared(file))) {                                           \
         GTEST_SKIP() << shared(file) << " is absent (the shared test scenes are not here)"; \
     }
 
@@ -97,9 +97,9 @@ TEST(Gltf, MirroredNodesKeepFrontFacesFront) {
             const glm::vec3 b = m * mesh.positions[mesh.indices[i + 1]];
             const glm::vec3 c = m * mesh.positions[mesh.indices[i + 2]];
             const glm::vec3 winding = glm::cross(b - a, c - a);
-            const glm::vec3 n = normalMatrix * (mesh.normals[mesh.indices[i]] +
-                                                mesh.normals[mesh.indices[i + 1]] +
-                                                mesh.normals[mesh.indices[i + 2]]);
+            const glm::vec3 n =
+                normalMatrix * (mesh.normals[mesh.indices[i]] + mesh.normals[mesh.indices[i + 1]] +
+                                mesh.normals[mesh.indices[i + 2]]);
             if (glm::length(winding) < 1e-9f || glm::length(n) < 1e-6f) continue;
             ++checked;
             agree += glm::dot(winding, n) > 0.0f;
