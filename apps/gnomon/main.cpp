@@ -3,6 +3,7 @@
 // shadows against a ray-traced reference, `bench` times each pass (and sweeps a parameter). Exit
 // codes: 0 success, 1 failure (I/O, OpenGL), 2 bad usage or input, 3 score above --max-error.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -30,8 +31,20 @@ struct RenderArgs {
 };
 
 int runRender(const RenderArgs& args, bool verbose) {
+    const auto loadStart = std::chrono::steady_clock::now();
     gnomon::Scene scene = gnomon::loadScene(args.scene);
+    const double loadMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart)
+            .count();
     gnomon::cli::printWarnings(scene);
+    if (verbose) {
+        std::size_t triangles = 0;
+        for (const gnomon::Object& o : scene.objects)
+            triangles += scene.meshes[o.mesh].indices.size() / 3;
+        std::fprintf(
+            stderr, "gnomon: loaded '%s' in %.0f ms: %zu triangles, %zu objects, %zu lights\n",
+            scene.name.c_str(), loadMs, triangles, scene.objects.size(), scene.lights.size());
+    }
     const gnomon::RenderOptions options = args.flags.resolve(scene);
     if (options.lightOnly >= int(scene.lights.size())) {
         throw gnomon::Error(gnomon::ErrorKind::InvalidInput,
@@ -42,7 +55,14 @@ int runRender(const RenderArgs& args, bool verbose) {
     gnomon::ContextOptions context;
     context.verbose = verbose;
     gnomon::Renderer renderer(context);
+    const auto renderStart = std::chrono::steady_clock::now();
     const gnomon::Image image = renderer.render(scene, options);
+    if (verbose) {
+        std::fprintf(stderr, "gnomon: first frame (uploads, shadow maps, main pass) in %.0f ms\n",
+                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                               renderStart)
+                         .count());
+    }
     gnomon::writePng(args.out, image);
     if (!args.shadowMaps.empty()) {
         std::error_code ec;
