@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages gnomon builds and runs with, only those that are missing.
-# As root it calls apt-get; otherwise sudo (non-interactive); when neither is possible it
-# prints the exact command to run and fails.
+# Installs the Debian 12 packages gnomon builds and runs with, only those that are missing,
+# plus any named as arguments (scripts/fuzz.sh adds clang). As root it calls apt-get;
+# otherwise sudo (non-interactive); when neither is possible it prints the exact command to
+# run and fails.
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,7 @@ packages=(
     libtinygltf-dev nlohmann-json3-dev libembree-dev libassimp-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth python3
+    "$@"
 )
 
 missing=()

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -277,20 +278,33 @@ Scene loadGltf(const std::string& path) {
     if (fs::file_size(path, ec) > kMaxFileBytes) {
         throw Error(ErrorKind::InvalidInput, path + ": larger than 2 GiB");
     }
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) throw Error(ErrorKind::Io, "cannot read '" + path + "'");
+    return loadGltf(bytes, path, fs::absolute(path).parent_path().string());
+}
+
+Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
+               const std::string& folderPath) {
+    std::error_code ec;
     Folder folder;
-    folder.root = fs::weakly_canonical(fs::absolute(path).parent_path(), ec);
+    folder.root = fs::weakly_canonical(fs::absolute(folderPath), ec);
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks callbacks{&fileExists, &expandPath, &readFile, &noWrite, &folder};
     loader.SetFsCallbacks(callbacks);
     loader.SetImageLoader(&skipImage, nullptr);
     tinygltf::Model model;
     std::string err, warn;
-    std::ifstream probe(path, std::ios::binary);
-    char magic[4] = {};
-    probe.read(magic, 4);
-    const bool binary = std::memcmp(magic, "glTF", 4) == 0;
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (bytes.size() > kMaxFileBytes)
+        throw Error(ErrorKind::InvalidInput, path + ": larger than 2 GiB");
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const std::string base = folder.root.string();
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                         unsigned(bytes.size()), base)
+                           : loader.LoadASCIIFromString(&model, &err, &warn,
+                                                        reinterpret_cast<const char*>(bytes.data()),
+                                                        unsigned(bytes.size()), base);
     if (!ok) {
         std::string why = !folder.error.empty() ? folder.error : err;
         while (!why.empty() && (why.back() == '\n' || why.back() == ' '))
