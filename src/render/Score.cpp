@@ -37,13 +37,15 @@ ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& o
     const truth::Reference reference = truth::traceReference(scene, options, ro);
     result.traceSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // One aliasing band for the numbers and the map.
+    const std::vector<std::uint8_t> band = truth::aliasingBand(
+        reference, visibility.texelWorld, scoreOptions.bandTexels, result.softReference);
     const truth::Scores scores =
-        truth::scoreVisibility(scene, reference, visibility.visibility, visibility.texelWorld,
-                               scoreOptions.bandTexels, result.softReference);
+        truth::scoreVisibility(scene, reference, visibility.visibility, band, result.softReference);
     result.lights = scores.lights;
     result.overall = scores.overall;
-    result.errors = truth::errorMap(reference, visibility.visibility, visibility.texelWorld,
-                                    scoreOptions.bandTexels, result.softReference, result.render);
+    result.errors = truth::errorMap(reference, visibility.visibility, band, result.softReference,
+                                    result.render);
     return result;
 }
 

@@ -53,10 +53,10 @@ bool occludedRef(const Reference& r, std::size_t cell, bool soft) {
     return soft ? r.soft[cell] < 0.5f : r.hard[cell] < 0.5f;
 }
 
-// Per pixel x light: inside the aliasing band (within bandTexels map texels of a reference
-// shadow boundary of that light, and never less than a pixel).
-std::vector<std::uint8_t> bandOf(const Reference& r, const std::vector<float>& texelWorld,
-                                 float bandTexels, bool soft) {
+}  // namespace
+
+std::vector<std::uint8_t> aliasingBand(const Reference& r, const std::vector<float>& texelWorld,
+                                       float bandTexels, bool soft) {
     const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
     std::vector<std::uint8_t> band(pixels * std::size_t(r.lights), 0);
     std::vector<std::uint8_t> seeds(pixels);
@@ -92,6 +92,8 @@ std::vector<std::uint8_t> bandOf(const Reference& r, const std::vector<float>& t
     }
     return band;
 }
+
+namespace {
 
 const char* typeName(LightType t) {
     switch (t) {
@@ -134,8 +136,7 @@ std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int w
 }
 
 Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector<float>& visibility,
-                       const std::vector<float>& texelWorld, float bandTexels, bool soft) {
-    const std::vector<std::uint8_t> band = bandOf(r, texelWorld, bandTexels, soft);
+                       const std::vector<std::uint8_t>& band, bool soft) {
     struct Counts {
         long pixels = 0, band = 0, falseShadow = 0, leak = 0, falseOut = 0, leakOut = 0;
         double absError = 0.0;
@@ -196,9 +197,7 @@ Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector
 }
 
 Image errorMap(const Reference& r, const std::vector<float>& visibility,
-               const std::vector<float>& texelWorld, float bandTexels, bool soft,
-               const Image& render) {
-    const std::vector<std::uint8_t> band = bandOf(r, texelWorld, bandTexels, soft);
+               const std::vector<std::uint8_t>& band, bool soft, const Image& render) {
     Image out(r.width, r.height, 3);
     for (int y = 0; y < r.height; ++y) {
         for (int x = 0; x < r.width; ++x) {

@@ -13,23 +13,28 @@
 
 namespace gnomon::truth {
 
-// `visibility` and `texelWorld` hold one value per pixel x light ([pixel * lights + light],
-// rows top first): the renderer's visibility (0 shadowed .. 1 lit) and the world size of
-// the map texel its lookup used (0: none). Hard metrics threshold visibility at 0.5; with
-// `soft`, the reference is the soft one (and is thresholded at 0.5 for the hard metrics).
+// Per pixel x light ([pixel * lights + light], rows top first): 1 inside the aliasing band,
+// within `bandTexels` map texels of a reference shadow boundary of that light (never less
+// than a pixel). `texelWorld` holds the world size of the map texel each lookup used.
+std::vector<std::uint8_t> aliasingBand(const Reference& reference,
+                                       const std::vector<float>& texelWorld, float bandTexels,
+                                       bool soft);
+
+// `visibility` holds the renderer's visibility per pixel x light (0 shadowed .. 1 lit). Hard
+// metrics threshold it at 0.5; with `soft`, the reference is the soft one (thresholded at
+// 0.5 for the hard metrics).
 struct Scores {
     std::vector<ShadowScore> lights;  // lights with scored pixels, in scene order
     ShadowScore overall;
 };
 Scores scoreVisibility(const Scene& scene, const Reference& reference,
-                       const std::vector<float>& visibility, const std::vector<float>& texelWorld,
-                       float bandTexels, bool soft);
+                       const std::vector<float>& visibility, const std::vector<std::uint8_t>& band,
+                       bool soft);
 
 // Per pixel: false shadow red, light leak blue (pale inside the aliasing band), elsewhere
 // the render in dim grey.
 Image errorMap(const Reference& reference, const std::vector<float>& visibility,
-               const std::vector<float>& texelWorld, float bandTexels, bool soft,
-               const Image& render);
+               const std::vector<std::uint8_t>& band, bool soft, const Image& render);
 
 // Squared Euclidean distance (in pixels) from every pixel to the nearest `seed` pixel
 // (Felzenszwalb and Huttenlocher 2012); huge where there is no seed.

@@ -140,7 +140,8 @@ TEST(Metrics, PerfectVisibilityScoresZeroAndEachErrorCountsOnce) {
     std::vector<float> visibility = r.hard;
     // One map texel = one pixel: the band is max(1 pixel, 2 texels) = 2 pixels.
     const std::vector<float> texel(r.hard.size(), 0.125f);
-    truth::Scores perfect = truth::scoreVisibility(s, r, visibility, texel, 2.0f, false);
+    const std::vector<std::uint8_t> band = truth::aliasingBand(r, texel, 2.0f, false);
+    truth::Scores perfect = truth::scoreVisibility(s, r, visibility, band, false);
     ASSERT_EQ(perfect.lights.size(), 1u);
     EXPECT_EQ(perfect.overall.pixels, long(kSize * kSize));
     EXPECT_EQ(perfect.overall.misclassified, 0.0);
@@ -153,7 +154,7 @@ TEST(Metrics, PerfectVisibilityScoresZeroAndEachErrorCountsOnce) {
     visibility[r.at(column(3.5f), 50, 0)] = 0.0f;
     visibility[r.at(column(1.0f), 32, 0)] = 1.0f;
     visibility[r.at(column(1.9f), 32, 0)] = 1.0f;
-    const truth::Scores one = truth::scoreVisibility(s, r, visibility, texel, 2.0f, false);
+    const truth::Scores one = truth::scoreVisibility(s, r, visibility, band, false);
     const double n = double(kSize * kSize);
     EXPECT_DOUBLE_EQ(one.overall.falseShadow, 1.0 / n);
     EXPECT_DOUBLE_EQ(one.overall.falseShadowOutsideBand, 1.0 / n);
