@@ -23,6 +23,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gnomon/Error.h"
+#include "scene/SceneUtil.h"
 
 namespace gnomon {
 
@@ -580,17 +581,10 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
         scene.warnings.push_back(std::to_string(zeroArea) + " zero-area triangles skipped");
     if (scene.objects.empty()) read.fail("the scene has no triangles to draw");
 
-    // World bounds of what is drawn.
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (const Object& o : scene.objects) {
-        for (const glm::vec3& p : scene.meshes[o.mesh].positions) {
-            const glm::vec3 w = glm::vec3(o.worldFromModel * glm::vec4(p, 1.0f));
-            lo = glm::min(lo, w);
-            hi = glm::max(hi, w);
-        }
-    }
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+    // World bounds of what is drawn (as the renderer's fitting sees them).
+    const Aabb bounds = worldBounds(scene, meshBounds(scene), 0.0, false);
+    const glm::vec3 centre = bounds.centre();
+    const float radius = std::max(bounds.radius(), 1e-6f);
 
     // Lights (KHR_lights_punctual): intensities in the spec's units (candela, lux) used as
     // gnomon's intensity, point and spot falling off as 1/d^2.
