@@ -97,6 +97,9 @@ void RenderFlags::add(CLI::App& a) {
     a.add_option("--map-filter", mapFilter,
                  "nearest|linear: filtering of the stored depth before a comparison by hand "
                  "(colour formats, and --filter none) (default nearest)");
+    a.add_option("--blend-shadows", blendShadows,
+                 "opaque|none|dithered: shadows of alpha-blended materials: full, none, or "
+                 "covering alpha of the map's texels (default dithered)");
     a.add_option("--shadowed", shadowed,
                  "ambient|factor: a shadowed fragment keeps ambient only, or is multiplied by "
                  "--shadow-factor (default: scene's; ambient)");
@@ -162,6 +165,10 @@ void RenderFlags::apply(RenderOptions& o) const {
     if (given("--map-filter")) {
         o.shadow.mapFilter =
             parseEnum("--map-filter", mapFilter, parseMapFilter, "nearest, linear");
+    }
+    if (given("--blend-shadows")) {
+        o.shadow.blendShadows = parseEnum("--blend-shadows", blendShadows, parseBlendShadows,
+                                          "opaque, none, dithered");
     }
     if (given("--shadowed"))
         o.shading.shadowedRule =

@@ -51,6 +51,14 @@ enum class DepthFormat {
 // colour format, and --filter none on native depth (the course text's LINEAR lookups).
 enum class MapFilter { Nearest, Linear };
 
+// What shadow a blended (AlphaMode::Blend) material casts.
+enum class BlendShadows {
+    Opaque,    // as if opaque: full shadow whatever its alpha (three.js's default)
+    None,      // no shadow at all
+    Dithered,  // a share of alpha of the map's texels is covered (hashed per texel), so
+               // filtered lookups see partial shadow; the reference transmits 1 - alpha
+};
+
 // Where a render's options start (CLI --preset); flags given after it override.
 enum class Preset {
     Default,   // gnomon's best: the scene's authored options with gnomon's bias defaults
@@ -77,6 +85,7 @@ struct ShadowOptions {
     float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
+    BlendShadows blendShadows = BlendShadows::Dithered;  // shadows of blended materials
 };
 
 // Diagnostic renderings (DESIGN: debug views are features).
@@ -116,6 +125,7 @@ const char* toString(DepthFormat v);
 const char* toString(MapFilter v);
 const char* toString(Preset v);
 const char* toString(DebugView v);
+const char* toString(BlendShadows v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
 std::optional<CullMode> parseCullMode(const std::string& s);
@@ -124,6 +134,7 @@ std::optional<DepthFormat> parseDepthFormat(const std::string& s);
 std::optional<MapFilter> parseMapFilter(const std::string& s);
 std::optional<Preset> parsePreset(const std::string& s);
 std::optional<DebugView> parseDebugView(const std::string& s);
+std::optional<BlendShadows> parseBlendShadows(const std::string& s);
 // True for the formats stored in colour channels (r8 and the RGBA8 packings).
 bool isColourFormat(DepthFormat v);
 

@@ -19,7 +19,30 @@ struct Mesh {
     std::vector<glm::vec3> positions;    // model space
     std::vector<glm::vec3> normals;      // model space, unit length, one per position
     std::vector<glm::vec3> colours;      // optional per-vertex colour (empty: material colour)
+    std::vector<glm::vec2> uvs;          // optional texture coordinates (empty: none)
     std::vector<std::uint32_t> indices;  // triangle list; 3 per triangle
+};
+
+// How a texture repeats outside [0,1] (glTF sampler wrap modes).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// A decoded image with its sampling rules. Texel rows run top-down, as in image files; the
+// colour channels are sRGB-encoded, alpha is linear.
+struct Texture {
+    std::string name;
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
+    TextureWrap wrapS = TextureWrap::Repeat;
+    TextureWrap wrapT = TextureWrap::Repeat;
+    bool nearest = false;  // magnify and minify without filtering (pixel art); else trilinear
+};
+
+// How a material's alpha (base colour alpha times the texture's) is used (glTF alphaMode).
+enum class AlphaMode {
+    Opaque,  // alpha ignored
+    Mask,    // fragments with alpha < alphaCutoff are cut away, in every pass
+    Blend,   // blended over what is behind; shadows cast by ShadowOptions::blendShadows
 };
 
 struct Material {
@@ -29,6 +52,12 @@ struct Material {
     float shininess = 30.0f;     // Blinn-Phong exponent, > 0
     bool unlit = false;          // colour is output as is (times shadow factor), no lighting
     bool doubleSided = false;    // open surface: never culled, lit from either side
+    float alpha = 1.0f;          // base colour alpha factor, 0..1
+    int baseColourTexture = -1;  // index into Scene::textures; -1: none (needs Mesh::uvs)
+    // Texture coordinates used = uvTransform * (u, v, 1) (KHR_texture_transform).
+    glm::mat3 uvTransform{1.0f};
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;  // Mask: cut below this alpha
 };
 
 // A constant rotation over time about an axis through `pivot` (SPEC S27).
@@ -123,6 +152,7 @@ struct Scene {
     std::string description;  // one line
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
+    std::vector<Texture> textures;
     std::vector<Object> objects;
     std::vector<Light> lights;
     Camera camera;

@@ -53,6 +53,9 @@ const std::pair<const char*, DebugView> kDebugViews[] = {{"none", DebugView::Non
                                                          {"shadow-map", DebugView::ShadowMap},
                                                          {"light-frusta", DebugView::LightFrusta}};
 
+const std::pair<const char*, BlendShadows> kBlendShadows[] = {
+    {"opaque", BlendShadows::Opaque}, {"none", BlendShadows::None}, {"dithered", BlendShadows::Dithered}};
+
 bool finite(float v) {
     return std::isfinite(v);
 }
@@ -106,6 +109,12 @@ const char* toString(DebugView v) {
 }
 std::optional<DebugView> parseDebugView(const std::string& s) {
     return lookup(s, kDebugViews);
+}
+const char* toString(BlendShadows v) {
+    return nameOf(v, kBlendShadows);
+}
+std::optional<BlendShadows> parseBlendShadows(const std::string& s) {
+    return lookup(s, kBlendShadows);
 }
 bool isColourFormat(DepthFormat v) {
     return v == DepthFormat::R8 || v == DepthFormat::Rgba8Packed256 ||

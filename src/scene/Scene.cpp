@@ -38,6 +38,10 @@ std::vector<std::string> Scene::validate() const {
             add(where + " has " + std::to_string(mesh.colours.size()) + " colours for " +
                 std::to_string(mesh.positions.size()) + " positions");
         }
+        if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) {
+            add(where + " has " + std::to_string(mesh.uvs.size()) + " texture coordinates for " +
+                std::to_string(mesh.positions.size()) + " positions");
+        }
         if (mesh.indices.size() % 3 != 0) add(where + " index count is not a multiple of 3");
         for (size_t i = 0; i < mesh.indices.size(); ++i) {
             if (mesh.indices[i] >= mesh.positions.size()) {
@@ -54,10 +58,35 @@ std::vector<std::string> Scene::validate() const {
             }
         }
     }
+    for (size_t t = 0; t < textures.size(); ++t) {
+        const Texture& tex = textures[t];
+        if (tex.width <= 0 || tex.height <= 0 ||
+            tex.rgba.size() != std::size_t(tex.width) * std::size_t(tex.height) * 4) {
+            add("textures[" + std::to_string(t) + "] ('" + tex.name + "') holds " +
+                std::to_string(tex.rgba.size()) + " bytes for " + std::to_string(tex.width) + "x" +
+                std::to_string(tex.height) + " RGBA texels");
+        }
+    }
+    for (size_t m = 0; m < materials.size(); ++m) {
+        const Material& mat = materials[m];
+        const std::string where = "materials[" + std::to_string(m) + "] ('" + mat.name + "')";
+        if (mat.baseColourTexture >= int(textures.size()) || mat.baseColourTexture < -1) {
+            add(where + " refers to a missing texture");
+        }
+        if (!(mat.alpha >= 0.0f && mat.alpha <= 1.0f) ||
+            !(mat.alphaCutoff >= 0.0f && mat.alphaCutoff <= 1.0f)) {
+            add(where + " alpha and alpha cutoff must be within 0..1");
+        }
+    }
     for (size_t o = 0; o < objects.size(); ++o) {
         const std::string where = "objects[" + std::to_string(o) + "] ('" + objects[o].name + "')";
         if (objects[o].mesh >= meshes.size()) add(where + " refers to a missing mesh");
         if (objects[o].material >= materials.size()) add(where + " refers to a missing material");
+        if (objects[o].mesh < meshes.size() && objects[o].material < materials.size() &&
+            materials[objects[o].material].baseColourTexture >= 0 &&
+            meshes[objects[o].mesh].uvs.empty()) {
+            add(where + " has a textured material but its mesh has no texture coordinates");
+        }
         const Spin& spin = objects[o].spin;
         if (!std::isfinite(spin.degreesPerSecond) ||
             (spin.degreesPerSecond != 0.0f && !(glm::length(spin.axis) > 1e-6f))) {
