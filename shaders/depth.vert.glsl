@@ -1,10 +1,26 @@
 #version 450 core
 // Shadow pass (SPEC S1): scene casters seen from the light camera; only depth is written.
+// ALPHA_TEST: also the texture coordinates and alpha rule of masked and blended casters.
 #include "scene_data.glsl"
 
 layout(location = 0) in vec3 msPosition;
 layout(location = 1) uniform mat4 uClipFromWorld;  // the light camera
 
+#ifdef ALPHA_TEST
+layout(location = 3) in vec2 msUv;
+out AlphaOut {
+    vec2 uv;
+    flat float alpha;
+    flat float cutoff;
+} vAlpha;
+#endif
+
 void main() {
-    gl_Position = uClipFromWorld * (objects[uObject].worldFromModel * vec4(msPosition, 1.0));
+    ObjectData o = objects[uObject];
+    gl_Position = uClipFromWorld * (o.worldFromModel * vec4(msPosition, 1.0));
+#ifdef ALPHA_TEST
+    vAlpha.uv = materialUv(o, msUv);
+    vAlpha.alpha = o.baseColour.a;
+    vAlpha.cutoff = o.flags.y == 1.0 ? o.flags.z : -1.0;
+#endif
 }

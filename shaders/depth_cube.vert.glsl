@@ -9,8 +9,23 @@ layout(location = 0) in vec3 msPosition;
 layout(location = 1) uniform mat4 uFaceClipFromWorld[6];
 layout(location = 7) uniform int uBaseLayer;
 
+#ifdef ALPHA_TEST
+layout(location = 3) in vec2 msUv;
+out AlphaOut {
+    vec2 uv;
+    flat float alpha;
+    flat float cutoff;
+} vAlpha;
+#endif
+
 void main() {
-    vec4 wsPosition = objects[uObject].worldFromModel * vec4(msPosition, 1.0);
+    ObjectData o = objects[uObject];
+    vec4 wsPosition = o.worldFromModel * vec4(msPosition, 1.0);
+#ifdef ALPHA_TEST
+    vAlpha.uv = materialUv(o, msUv);
+    vAlpha.alpha = o.baseColour.a;
+    vAlpha.cutoff = o.flags.y == 1.0 ? o.flags.z : -1.0;
+#endif
     gl_Position = uFaceClipFromWorld[gl_InstanceID] * wsPosition;
     gl_Layer = uBaseLayer + gl_InstanceID;
 }

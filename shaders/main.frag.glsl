@@ -8,6 +8,8 @@
 // VISIBILITY_PASS (gnomon score): after the main pass, the visible surfaces are drawn again
 // (depth test LEQUAL, no writes) and each light's visibility and the world size of the map
 // texel it came from are stored per pixel, one image layer per light.
+// MATERIAL_PATH (textured, masked or blended materials): the base colour texture, masked
+// fragments discarded below their cutoff, blended ones written with their alpha.
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 
@@ -19,7 +21,15 @@ in VertexOut {
     vec3 colour;
     flat vec4 material;
     flat float receives;
+#ifdef MATERIAL_PATH
+    vec2 uv;
+    flat vec3 alpha;
+#endif
 } vIn;
+
+#ifdef MATERIAL_PATH
+layout(binding = 4) uniform sampler2D uBaseColourTexture;  // 1x1 white when untextured
+#endif
 
 layout(location = 3) uniform vec3 uAmbient;
 layout(location = 4) uniform float uShadowFactor;
@@ -136,6 +146,15 @@ void main() {
         s.wsN = -s.wsN;
     }
     s.base = vIn.colour;
+    float alpha = 1.0;
+#ifdef MATERIAL_PATH
+    // The base colour texture (sRGB, decoded by the sampler) and the material's alpha rule.
+    vec4 texel = texture(uBaseColourTexture, vIn.uv);
+    s.base *= texel.rgb;
+    alpha = vIn.alpha.x * texel.a;
+    if (vIn.alpha.y == 1.0 && alpha < vIn.alpha.z) discard;
+    if (vIn.alpha.y != 2.0) alpha = 1.0;
+#endif
     s.vsToEye = normalize(-vIn.vsPosition);
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
@@ -166,5 +185,5 @@ void main() {
                                   vec3(1, 1, 0.3));
     if (gCascade >= 0) colour = mix(colour, kTints[gCascade], 0.35);
 #endif
-    fragColour = vec4(colour, 1.0);
+    fragColour = vec4(colour, alpha);
 }

@@ -6,6 +6,9 @@
 layout(location = 0) in vec3 msPosition;
 layout(location = 1) in vec3 msNormal;
 layout(location = 2) in vec3 vertexColour;
+#ifdef MATERIAL_PATH
+layout(location = 3) in vec2 msUv;
+#endif
 
 layout(location = 1) uniform mat4 uViewFromWorld;
 layout(location = 2) uniform mat4 uClipFromView;
@@ -22,6 +25,10 @@ out VertexOut {
     vec3 colour;
     flat vec4 material;  // specular, shininess, unlit, double-sided (ObjectData.material)
     flat float receives;
+#ifdef MATERIAL_PATH
+    vec2 uv;
+    flat vec3 alpha;  // alpha factor, alpha mode (0 opaque, 1 mask, 2 blend), cutoff
+#endif
 } vOut;
 
 void main() {
@@ -37,5 +44,9 @@ void main() {
     // Per-object values travel as flat varyings: cheaper than a storage read per fragment.
     vOut.material = o.material;
     vOut.receives = o.flags.x;
+#ifdef MATERIAL_PATH
+    vOut.uv = materialUv(o, msUv);
+    vOut.alpha = vec3(o.baseColour.a, o.flags.y, o.flags.z);
+#endif
     gl_Position = uClipFromView * vsPosition;
 }

@@ -1,5 +1,7 @@
 #include "gl/Objects.h"
 
+#include <algorithm>
+
 #include "gnomon/Error.h"
 
 namespace gnomon::gl {
@@ -63,6 +65,28 @@ Texture Texture::plain2D(const std::string& label, GLenum internalFormat, int wi
     glTextureStorage2D(n, 1, internalFormat, width, height);
     setLabel(GL_TEXTURE, n, label);
     return Texture(n, internalFormat, width, height, 1);
+}
+
+Texture Texture::image2D(const std::string& label, int width, int height, const void* rgba,
+                         GLint wrapS, GLint wrapT, bool nearest) {
+    int levels = 1;
+    while ((std::max(width, height) >> levels) > 0)
+        ++levels;
+    GLuint n = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &n);
+    Texture t(n, GL_SRGB8_ALPHA8, width, height, 1);  // owns n from here on
+    glTextureStorage2D(n, levels, GL_SRGB8_ALPHA8, width, height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(n, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateTextureMipmap(n);
+    glTextureParameteri(n, GL_TEXTURE_WRAP_S, wrapS);
+    glTextureParameteri(n, GL_TEXTURE_WRAP_T, wrapT);
+    glTextureParameteri(n, GL_TEXTURE_MIN_FILTER,
+                        nearest ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(n, GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
+    setLabel(GL_TEXTURE, n, label);
+    return t;
 }
 
 Sampler::Sampler(const std::string& label) {

@@ -63,6 +63,10 @@ public:
     static Texture cubeArray(const std::string& label, GLenum internalFormat, int size, int cubes);
     // 2D texture, one mip level.
     static Texture plain2D(const std::string& label, GLenum internalFormat, int width, int height);
+    // 2D sRGB colour image (RGBA8 rows from `rgba`, first row at t = 0) with a full mip chain,
+    // wrap modes and filters set on the texture itself.
+    static Texture image2D(const std::string& label, int width, int height, const void* rgba,
+                           GLint wrapS, GLint wrapT, bool nearest);
     // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
     // storage.
     static Texture layersView(const std::string& label, const Texture& source);

@@ -1,5 +1,6 @@
 #include "render/GpuScene.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string_view>
 
@@ -12,6 +13,7 @@ struct GpuVertex {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec3 colour;
+    glm::vec2 uv;
 };
 
 template <typename T>
@@ -26,9 +28,26 @@ std::uint64_t hashGeometry(const Scene& scene) {
         hashBytes(h, m.positions);
         hashBytes(h, m.normals);
         hashBytes(h, m.colours);
+        hashBytes(h, m.uvs);
         hashBytes(h, m.indices);
     }
     return h;
+}
+
+std::uint64_t hashTextures(const Scene& scene) {
+    std::uint64_t h = 0x84222325cbf29ce4ull ^ scene.textures.size();
+    for (const Texture& t : scene.textures) {
+        hashBytes(h, t.rgba);
+        h = h * 0x100000001b3ull ^ (std::uint64_t(t.width) << 32 | std::uint64_t(t.height));
+        h = h * 0x100000001b3ull ^ (int(t.wrapS) * 9 + int(t.wrapT) * 3 + int(t.nearest));
+    }
+    return h;
+}
+
+GLint glWrap(TextureWrap w) {
+    return w == TextureWrap::ClampToEdge      ? GL_CLAMP_TO_EDGE
+           : w == TextureWrap::MirroredRepeat ? GL_MIRRORED_REPEAT
+                                              : GL_REPEAT;
 }
 
 }  // namespace
@@ -40,8 +59,9 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     for (const Mesh& m : scene.meshes) {
         mMeshRanges.emplace_back(indices.size() * sizeof(std::uint32_t), GLint(vertices.size()));
         for (size_t i = 0; i < m.positions.size(); ++i) {
-            vertices.push_back(
-                {m.positions[i], m.normals[i], m.colours.empty() ? glm::vec3(1.0f) : m.colours[i]});
+            vertices.push_back({m.positions[i], m.normals[i],
+                                m.colours.empty() ? glm::vec3(1.0f) : m.colours[i],
+                                m.uvs.empty() ? glm::vec2(0.0f) : m.uvs[i]});
         }
         indices.insert(indices.end(), m.indices.begin(), m.indices.end());
     }
@@ -52,16 +72,30 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     mVao = gl::VertexArray("scene");
     glVertexArrayVertexBuffer(mVao.id(), 0, mVertices.id(), 0, sizeof(GpuVertex));
     glVertexArrayElementBuffer(mVao.id(), mIndices.id());
-    const GLuint offsets[3] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
-                               offsetof(GpuVertex, colour)};
-    for (GLuint a = 0; a < 3; ++a) {
+    const GLuint offsets[4] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
+                               offsetof(GpuVertex, colour), offsetof(GpuVertex, uv)};
+    for (GLuint a = 0; a < 4; ++a) {
         glEnableVertexArrayAttrib(mVao.id(), a);
-        glVertexArrayAttribFormat(mVao.id(), a, 3, GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribFormat(mVao.id(), a, a == 3 ? 2 : 3, GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(mVao.id(), a, 0);
     }
     mMeshBounds = meshBounds(scene);
     mObjectData.clear();  // forces the object upload below
     mHaveGeometry = true;
+}
+
+void GpuScene::uploadTextures(const Scene& scene) {
+    mTextures.clear();
+    if (!mWhite) {
+        const std::uint8_t white[4] = {255, 255, 255, 255};
+        mWhite = gl::Texture::image2D("white", 1, 1, white, GL_REPEAT, GL_REPEAT, true);
+    }
+    for (const Texture& t : scene.textures) {
+        mTextures.push_back(gl::Texture::image2D("texture '" + t.name + "'", t.width, t.height,
+                                                 t.rgba.data(), glWrap(t.wrapS), glWrap(t.wrapT),
+                                                 t.nearest));
+    }
+    mHaveTextures = true;
 }
 
 bool GpuScene::sync(const Scene& scene, double seconds) {
@@ -70,6 +104,13 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
     if (!mHaveGeometry || hash != mGeometryHash) {
         uploadGeometry(scene);
         mGeometryHash = hash;
+        changed = true;
+    }
+    const std::uint64_t textureHash = hashTextures(scene);
+    if (!mHaveTextures || textureHash != mTextureHash) {
+        uploadTextures(scene);
+        mTextureHash = textureHash;
+        mObjectData.clear();  // items hold texture names: rebuild them
         changed = true;
     }
 
@@ -88,10 +129,14 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         g.worldFromModel = o.worldFromModelAt(seconds);
         g.worldFromModelNormal =
             glm::mat4(glm::transpose(glm::inverse(glm::mat3(g.worldFromModel))));
-        g.baseColour = glm::vec4(mat.baseColour, 1.0f);
+        g.baseColour = glm::vec4(mat.baseColour, mat.alpha);
         g.material = {mat.specular, mat.shininess, mat.unlit ? 1.0f : 0.0f,
                       mat.doubleSided ? 1.0f : 0.0f};
-        g.flags = {o.receivesShadows ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f};
+        g.flags = {o.receivesShadows ? 1.0f : 0.0f, float(int(mat.alphaMode)), mat.alphaCutoff,
+                   0.0f};
+        const glm::mat3& uv = mat.uvTransform;
+        g.uvRow0 = {uv[0][0], uv[1][0], uv[2][0], 0.0f};
+        g.uvRow1 = {uv[0][1], uv[1][1], uv[2][1], 0.0f};
         if (resized || std::memcmp(&g, &mObjectData[i], sizeof g) != 0) {
             mObjectData[i] = g;
             dataChanged = true;
@@ -102,16 +147,25 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         const Mesh& mesh = scene.meshes[o.mesh];
         const std::string_view record(reinterpret_cast<const char*>(&mObjectData[i]),
                                       sizeof(GpuObject));
-        mItems[i] = {std::uint32_t(i),
-                     GLsizei(mesh.indices.size()),
-                     mMeshRanges[o.mesh].first,
-                     mMeshRanges[o.mesh].second,
-                     mat.doubleSided,
-                     o.castsShadows,
-                     o.receivesShadows,
-                     box,
-                     std::hash<std::string_view>{}(record)};
+        mItems[i] = {
+            std::uint32_t(i),
+            GLsizei(mesh.indices.size()),
+            mMeshRanges[o.mesh].first,
+            mMeshRanges[o.mesh].second,
+            mat.doubleSided,
+            o.castsShadows,
+            o.receivesShadows,
+            box,
+            std::hash<std::string_view>{}(record),
+            mat.alphaMode,
+            mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
+            mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};
     }
+    // Opaque first, then masked, then blended; by texture within each (binds once each).
+    std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {
+        return std::make_pair(int(a.alphaMode), a.texture) <
+               std::make_pair(int(b.alphaMode), b.texture);
+    });
     if (dataChanged) {
         if (mObjects.size() != n * sizeof(GpuObject) || !mObjects) {
             mObjects = gl::Buffer("scene objects", n * sizeof(GpuObject), mObjectData.data(),

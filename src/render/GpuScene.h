@@ -1,6 +1,8 @@
 // The GPU copy of a Scene: all meshes in one vertex and one index buffer (uploaded once per
-// distinct geometry), and one std430 record per object (re-uploaded only when transforms or
-// materials change, e.g. animation). Passes draw through draw().
+// distinct geometry), the textures (uploaded once per distinct set), and one std430 record
+// per object (re-uploaded only when transforms or materials change, e.g. animation). Items
+// are ordered opaque, then masked, then blended, and by texture within each, so passes bind
+// each texture once. Passes draw through draw().
 #pragma once
 
 #include <cstdint>
@@ -17,7 +19,9 @@ struct GpuObject {
     glm::mat4 worldFromModelNormal;
     glm::vec4 baseColour;
     glm::vec4 material;  // specular, shininess, unlit, double-sided
-    glm::vec4 flags;     // receives shadows
+    glm::vec4 flags;     // receives shadows, alpha mode (0 opaque, 1 mask, 2 blend), cutoff
+    glm::vec4 uvRow0;    // texture coordinates used: (dot(uvRow0.xyz, (u, v, 1)),
+    glm::vec4 uvRow1;    //                            dot(uvRow1.xyz, (u, v, 1)))
 };
 
 struct DrawItem {
@@ -30,7 +34,21 @@ struct DrawItem {
     bool receives = true;
     Aabb bounds;                 // world space, at the synced time
     std::uint64_t dataHash = 0;  // of the object's GPU record: changes when it moves
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    GLuint texture = 0;         // base colour texture, 0 = none
+    bool materialPath = false;  // textured or not opaque: needs the material shader variants
 };
+
+// Does `item` draw into shadow maps with these options (blended casters may not)?
+inline bool castsShadow(const DrawItem& item, const ShadowOptions& options) {
+    return item.casts && item.indexCount > 0 &&
+           !(item.alphaMode == AlphaMode::Blend && options.blendShadows == BlendShadows::None);
+}
+// Does it need the alpha-tested depth programs (masked, or blended and dithered)?
+inline bool alphaTestedCaster(const DrawItem& item, const ShadowOptions& options) {
+    return item.alphaMode == AlphaMode::Mask ||
+           (item.alphaMode == AlphaMode::Blend && options.blendShadows == BlendShadows::Dithered);
+}
 
 class GpuScene {
 public:
@@ -41,6 +59,10 @@ public:
     // Issues one draw (`instances` copies); uniform location 0 receives the object index.
     void draw(const DrawItem& item, GLsizei instances = 1) const;
     const std::vector<DrawItem>& items() const { return mItems; }
+    // The item's base colour texture, or a 1x1 white one (alpha 1) when it has none.
+    GLuint textureOf(const DrawItem& item) const {
+        return item.texture ? item.texture : mWhite.id();
+    }
     // World bounds of all objects (or casters only) at the synced time.
     const Aabb& bounds() const { return mBounds; }
     const Aabb& casterBounds() const { return mCasterBounds; }
@@ -51,8 +73,12 @@ public:
 
 private:
     void uploadGeometry(const Scene& scene);
+    void uploadTextures(const Scene& scene);
 
-    std::uint64_t mGeometryHash = 0;
+    std::uint64_t mGeometryHash = 0, mTextureHash = 0;
+    bool mHaveTextures = false;
+    std::vector<gl::Texture> mTextures;  // Scene::textures order
+    gl::Texture mWhite;
     bool mHaveGeometry = false;
     gl::Buffer mVertices, mIndices, mObjects;
     gl::VertexArray mVao;

@@ -31,22 +31,23 @@ MainPass::MainPass() {
 }
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
-                                     bool visibilityPass) {
+                                     bool visibilityPass, bool material) {
     // Every choice that selects a variant, packed in one number: looking a program up costs
     // no allocation; the defines are spelled out only to build a new one.
     const ShadowOptions& so = options.shadow;
-    const std::uint64_t key = std::uint64_t(visibilityPass) | std::uint64_t(so.enabled) << 1 |
-                              std::uint64_t(so.outside) << 2 | std::uint64_t(so.filter) << 4 |
-                              std::uint64_t(kernelFilter(so) ? so.pcfSize : 0) << 8 |
-                              std::uint64_t(so.depthFormat) << 16 |
-                              std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
-                              std::uint64_t(in.shadowCubes != nullptr) << 21 |
-                              std::uint64_t(in.hasCascades) << 22 |
-                              std::uint64_t(options.shading.shadowedRule) << 23;
+    const std::uint64_t key =
+        std::uint64_t(visibilityPass) | std::uint64_t(so.enabled) << 1 |
+        std::uint64_t(so.outside) << 2 | std::uint64_t(so.filter) << 4 |
+        std::uint64_t(kernelFilter(so) ? so.pcfSize : 0) << 8 |
+        std::uint64_t(so.depthFormat) << 16 |
+        std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
+        std::uint64_t(in.shadowCubes != nullptr) << 21 | std::uint64_t(in.hasCascades) << 22 |
+        std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
     if (visibilityPass) defines.push_back("VISIBILITY_PASS");
+    if (material) defines.push_back("MATERIAL_PATH");
     const ShadowOptions& s = so;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
     if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
@@ -103,8 +104,6 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
 
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
                       const gl::Texture* visibility) {
-    const gl::Program& prog = program(options, in, false);
-
     // Lights: upload only when they differ from what the GPU holds.
     const std::vector<GpuLight>& lights = *in.lights;
     const size_t bytes = lights.size() * sizeof(GpuLight);
@@ -166,7 +165,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     const DepthFormat cubeFormat = isColourFormat(options.shadow.depthFormat)
                                        ? DepthFormat::Depth32F
                                        : options.shadow.depthFormat;
-    auto draw = [&](const gl::Program& p) {
+    auto use = [&](const gl::Program& p) {
         glUseProgram(p.id());
         glUniformMatrix4fv(1, 1, GL_FALSE, &in.viewFromWorld[0][0]);
         glUniformMatrix4fv(2, 1, GL_FALSE, &in.clipFromView[0][0]);
@@ -176,14 +175,50 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glUniform4iv(6, 1, &in.lightRanges[0]);
         glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
                     spacing(cubeFormat));
-        bool culling = false;
+    };
+    // Opaque and masked items in their order (the fast program, then the material one where
+    // needed, each texture bound once); blended ones after, farthest first, over them.
+    auto draw = [&](bool visibilityPass) {
+        bool culling = false, material = false;
         glDisable(GL_CULL_FACE);
-        for (const DrawItem& item : scene.items()) {
+        use(program(options, in, visibilityPass, false));
+        GLuint texture = ~0u;
+        auto drawItem = [&](const DrawItem& item) {
+            if (item.materialPath != material) {
+                material = item.materialPath;
+                use(program(options, in, visibilityPass, material));
+            }
+            if (material && scene.textureOf(item) != texture) {
+                texture = scene.textureOf(item);
+                glBindTextureUnit(4, texture);
+            }
             if (item.doubleSided == culling) {
                 culling = !item.doubleSided;
                 culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
             }
             scene.draw(item);
+        };
+        mBlended.clear();
+        const std::vector<DrawItem>& items = scene.items();
+        for (std::uint32_t i = 0; i < items.size(); ++i) {
+            if (items[i].alphaMode != AlphaMode::Blend) {
+                drawItem(items[i]);
+            } else if (!visibilityPass) {  // scored: the surfaces behind (as the reference)
+                const glm::vec3 c = items[i].bounds.centre();
+                mBlended.emplace_back(
+                    -glm::length(glm::vec3(in.viewFromWorld * glm::vec4(c, 1.0f))), i);
+            }
+        }
+        if (!mBlended.empty()) {
+            std::sort(mBlended.begin(), mBlended.end());
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
+                                GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(GL_FALSE);
+            for (const auto& [distance, i] : mBlended)
+                drawItem(items[i]);
+            glDepthMask(GL_TRUE);
+            glDisable(GL_BLEND);
         }
         glDisable(GL_CULL_FACE);
     };
@@ -193,14 +228,14 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glCullFace(GL_BACK);
-    draw(prog);
+    draw(false);
     if (visibility) {
         // The surfaces that won the depth test, again: each light's visibility per pixel.
         glBindImageTexture(0, visibility->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        draw(program(options, in, true));
+        draw(true);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);

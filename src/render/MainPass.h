@@ -50,8 +50,9 @@ public:
     int maxLights() const { return mMaxLights; }
 
 private:
+    // `material`: the MATERIAL_PATH variant (textures, masks, blending).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
-                               bool visibilityPass);
+                               bool visibilityPass, bool material);
 
     std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
     int mMaxLights = 0;
@@ -62,7 +63,8 @@ private:
     gl::Sampler mMapSampler, mCubeSampler;
     gl::Sampler mRawSampler;  // PCSS blocker search: stored depth, NEAREST, no comparison
     std::string mMapSamplerKey, mCubeSamplerKey;
-    gl::Texture mDummyMaps, mDummyCubes;  // bound when a kind of map is absent
+    gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
+    std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame
 };
 
 }  // namespace gnomon::render

@@ -93,7 +93,7 @@ struct Renderer::Impl {
         fit.receivers.clear();
         for (const render::DrawItem& item : scene.items()) {
             if (item.indexCount == 0) continue;
-            if (item.casts) fit.casters.push_back(item.bounds);
+            if (render::castsShadow(item, options.shadow)) fit.casters.push_back(item.bounds);
             if (item.receives) fit.receivers.push_back(item.bounds);
         }
         fit.viewKnown = true;

@@ -11,14 +11,30 @@
 namespace gnomon::render {
 
 ShadowPass::ShadowPass(bool layeredCubes)
-    : mLayered(layeredCubes && epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array")),
-      mProgram(gl::buildProgram("shadow depth", {{GL_VERTEX_SHADER, "depth.vert.glsl"},
-                                                 {GL_FRAGMENT_SHADER, "depth.frag.glsl"}})) {
-    if (mLayered) {
-        mCubeProgram = gl::buildProgram(
-            "shadow depth cube",
-            {{GL_VERTEX_SHADER, "depth_cube.vert.glsl"}, {GL_FRAGMENT_SHADER, "depth.frag.glsl"}});
+    : mLayered(layeredCubes && epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array")) {
+    program(kPlain, false);  // the one every shadow needs: shader errors show up front
+}
+
+const gl::Program& ShadowPass::program(int variant, bool alphaTested) {
+    gl::Program& p = mPrograms[variant][alphaTested ? 1 : 0];
+    if (p) return p;
+    static const char* const kPacking[3] = {"PACK_R8", "PACK_256", "PACK_255"};
+    std::vector<std::string> defines;
+    if (alphaTested) defines.push_back("ALPHA_TEST");
+    std::string name = variant == kPlain  ? "shadow depth"
+                       : variant == kCube ? "shadow depth cube"
+                                          : "shadow depth ";
+    if (variant >= kColour) {
+        defines.push_back(kPacking[variant - kColour]);
+        name += kPacking[variant - kColour];
     }
+    if (alphaTested) name += " (alpha-tested)";
+    p = gl::buildProgram(
+        name,
+        {{GL_VERTEX_SHADER, variant == kCube ? "depth_cube.vert.glsl" : "depth.vert.glsl"},
+         {GL_FRAGMENT_SHADER, variant >= kColour ? "depth_colour.frag.glsl" : "depth.frag.glsl"}},
+        defines);
+    return p;
 }
 
 namespace {
@@ -97,18 +113,6 @@ void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
     mCubeLayers.assign(size_t(cubes), LayerState{});
 }
 
-const gl::Program& ShadowPass::colourProgram(DepthFormat format) {
-    const int index = format == DepthFormat::R8 ? 0 : format == DepthFormat::Rgba8Packed256 ? 1 : 2;
-    static const char* const kDefines[3] = {"PACK_R8", "PACK_256", "PACK_255"};
-    if (!mColourPrograms[index]) {
-        mColourPrograms[index] = gl::buildProgram(
-            std::string("shadow depth ") + toString(format),
-            {{GL_VERTEX_SHADER, "depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "depth_colour.frag.glsl"}},
-            {kDefines[index]});
-    }
-    return mColourPrograms[index];
-}
-
 namespace {
 std::size_t texelBytes(GLenum format) {
     return format == GL_DEPTH_COMPONENT16 ? 2 : 4;  // 24-bit depth is stored in 32 bits
@@ -136,7 +140,8 @@ void ShadowPass::setDepthState(const ShadowOptions& options, bool depthClamp) co
     depthClamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
 }
 
-std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLight& light) {
+std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLight& light,
+                                         const ShadowOptions& options) {
     mVisible.clear();
     const bool cube = light.frame.kind == shadow::FrameKind::Cube;
     const glm::mat4 clipFromWorld = cube ? glm::mat4(1.0f) : light.frame.clipFromWorld();
@@ -144,7 +149,7 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
     const std::vector<DrawItem>& items = scene.items();
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         const DrawItem& item = items[i];
-        if (!item.casts || item.indexCount == 0) continue;
+        if (!castsShadow(item, options)) continue;
         const bool outside =
             cube ? shadow::outsideCube(item.bounds, light.frame)
                  : shadow::outsideClipVolume(item.bounds, clipFromWorld, light.depthClamp);
@@ -158,12 +163,26 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
     return hash;
 }
 
-void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options,
-                             GLsizei instances) const {
+template <typename SetUniforms>
+void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options, int variant,
+                             GLsizei instances, const SetUniforms& setUniforms) {
     bool culling = false;
     glDisable(GL_CULL_FACE);
+    bool alpha = false;
+    GLuint texture = ~0u;
+    glUseProgram(program(variant, false).id());
+    setUniforms();
     for (std::uint32_t index : mVisible) {
         const DrawItem& item = scene.items()[index];
+        if (alphaTestedCaster(item, options) != alpha) {
+            alpha = !alpha;
+            glUseProgram(program(variant, alpha).id());
+            setUniforms();
+        }
+        if (alpha && scene.textureOf(item) != texture) {
+            texture = scene.textureOf(item);
+            glBindTextureUnit(4, texture);
+        }
         const bool wantCull = options.cull != CullMode::None && !item.doubleSided;
         if (wantCull != culling) {
             wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
@@ -200,7 +219,7 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
     glCullFace(GL_BACK);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
-    glUseProgram(mProgram.id());
+    glUseProgram(program(kPlain, false).id());
     glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
     scene.bind();
     for (const DrawItem& item : scene.items()) {
@@ -244,12 +263,13 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
         LayerState want{{},
                         light.mapSize,
-                        collectCasters(scene, light),
+                        collectCasters(scene, light, options),
                         options.cull,
                         options.biasSlope,
                         options.biasUnits,
                         light.depthClamp,
-                        format};
+                        format,
+                        options.blendShadows};
         if (cube) {
             for (int face = 0; face < 6; ++face) {
                 want.clipFromWorld[size_t(face)] = light.frame.faceClipFromWorld(face);
@@ -270,7 +290,10 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         const std::array<glm::mat4, 6>& m = have.clipFromWorld;
         if (!cube) {
             const bool colour = isColourFormat(format);
-            glUseProgram(colour ? colourProgram(format).id() : mProgram.id());
+            const int variant = !colour                                 ? kPlain
+                                : format == DepthFormat::R8             ? kColour
+                                : format == DepthFormat::Rgba8Packed256 ? kColour + 1
+                                                                        : kColour + 2;
             const GLuint fb = mFramebuffers[size_t(light.layer)].id();
             glBindFramebuffer(GL_FRAMEBUFFER, fb);
             // Clear the whole layer (clears ignore the viewport): no stale depth is ever read.
@@ -280,25 +303,25 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
                 const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
                 glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
             }
-            glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]);
-            drawCasters(scene, options, 1);
+            drawCasters(scene, options, variant, 1,
+                        [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]); });
         } else {
             // Only this light's six faces are cleared; other cubes keep their maps.
             glClearTexSubImage(mCubes.id(), 0, 0, 0, 6 * light.layer, mCubes.width(),
                                mCubes.height(), 6, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
             if (mLayered) {
-                glUseProgram(mCubeProgram.id());
                 glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());
-                glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
-                glUniform1i(7, 6 * light.layer);
-                drawCasters(scene, options, 6);
+                drawCasters(scene, options, kCube, 6, [&] {
+                    glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
+                    glUniform1i(7, 6 * light.layer);
+                });
             } else {
-                glUseProgram(mProgram.id());
                 for (int face = 0; face < 6; ++face) {
                     glBindFramebuffer(GL_FRAMEBUFFER,
                                       mCubeFaceFramebuffers[size_t(6 * light.layer + face)].id());
-                    glUniformMatrix4fv(1, 1, GL_FALSE, &m[size_t(face)][0][0]);
-                    drawCasters(scene, options, 1);
+                    drawCasters(scene, options, kPlain, 1, [&] {
+                        glUniformMatrix4fv(1, 1, GL_FALSE, &m[size_t(face)][0][0]);
+                    });
                 }
             }
         }

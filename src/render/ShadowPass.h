@@ -71,20 +71,30 @@ private:
         float slope = -1.0f, units = -1.0f;
         bool depthClamp = false;
         DepthFormat format = DepthFormat::Depth32F;
+        BlendShadows blend = BlendShadows::Dithered;
         bool operator==(const LayerState&) const = default;
     };
     void allocate2D(int size, int layers, DepthFormat format);
     void allocateCubes(int size, int cubes, DepthFormat format);
-    const gl::Program& colourProgram(DepthFormat format);
+    // Depth programs: kPlain (2D maps, native depth), kCube (six faces at once), kColour +
+    // 0..2 (r8, packed-256, packed-255 encoders); `alphaTested` adds the ALPHA_TEST variant.
+    // Built on first use.
+    static constexpr int kPlain = 0, kCube = 1, kColour = 2;
+    const gl::Program& program(int variant, bool alphaTested);
     void setDepthState(const ShadowOptions& options, bool depthClamp) const;
     // The casters of `light` that can reach its map (indices into scene.items()), and a hash
     // of them; fills mVisible.
-    std::uint64_t collectCasters(const GpuScene& scene, const ShadowedLight& light);
-    void drawCasters(const GpuScene& scene, const ShadowOptions& options, GLsizei instances) const;
+    std::uint64_t collectCasters(const GpuScene& scene, const ShadowedLight& light,
+                                 const ShadowOptions& options);
+    // Draws mVisible with program `variant`, switching to its alpha-tested twin for masked
+    // and dithered casters (their textures on unit 4); `setUniforms()` runs after each
+    // program change.
+    template <typename SetUniforms>
+    void drawCasters(const GpuScene& scene, const ShadowOptions& options, int variant,
+                     GLsizei instances, const SetUniforms& setUniforms);
 
     bool mLayered;
-    gl::Program mProgram, mCubeProgram;
-    gl::Program mColourPrograms[3];  // r8, packed-256, packed-255 encoders, built on first use
+    gl::Program mPrograms[5][2];
     gl::Texture mMaps, mCubes;
     gl::Texture mColourDepth;  // depth test for colour formats
     DepthFormat mMapFormat = DepthFormat::Depth32F;

@@ -1,8 +1,10 @@
 // glTF 2.0 (.gltf, .glb) into the scene model, through tinygltf. What it reads: the default
 // scene's node hierarchy (matrix or TRS), triangle primitives (lists, strips and fans,
-// indexed or not) with positions, normals (flat ones made where missing) and COLOR_0,
-// materials' base colour factor, roughness, metalness and double-sidedness, mirrored nodes
-// (winding flipped), EXT_mesh_gpu_instancing, KHR_lights_punctual and cameras. Skins and
+// indexed or not) with positions, normals (flat ones made where missing), COLOR_0 and the
+// base colour texture's TEXCOORD_n; materials' base colour factor and texture (with its
+// sampler and KHR_texture_transform), alpha mode and cutoff, roughness, metalness and
+// double-sidedness; mirrored nodes (winding flipped), EXT_mesh_gpu_instancing,
+// KHR_lights_punctual and cameras. Skins and
 // animations are left at the rest pose. Errors name the file, the element (`accessors[3]`)
 // and what is wrong; external files are read only from inside the scene's folder.
 #include "scene/GltfLoader.h"
@@ -24,6 +26,7 @@
 
 #include "gnomon/Error.h"
 #include "scene/SceneUtil.h"
+#include "scene/TextureDecode.h"
 
 namespace gnomon {
 
@@ -96,10 +99,13 @@ bool noWrite(std::string* err, const std::string&, const std::vector<unsigned ch
     return false;
 }
 
-// Images are not used yet (base colour textures come with texture support): accept them
-// without decoding.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-               const unsigned char*, int, void*) {
+// Images: tinygltf hands over their encoded bytes, kept as they are; only the ones a
+// material's base colour uses are decoded afterwards (stb_image, size-limited), so normal
+// and other maps cost no decoding.
+bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                 const unsigned char* bytes, int size, void*) {
+    image->image.assign(bytes, bytes + std::max(size, 0));
+    image->as_is = true;
     return true;
 }
 
@@ -294,7 +300,7 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks callbacks{&fileExists, &expandPath, &readFile, &noWrite, &folder};
     loader.SetFsCallbacks(callbacks);
-    loader.SetImageLoader(&skipImage, nullptr);
+    loader.SetImageLoader(&keepEncoded, nullptr);
     tinygltf::Model model;
     std::string err, warn;
     if (bytes.size() > kMaxFileBytes)
@@ -335,14 +341,106 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
     if (!model.animations.empty()) scene.warnings.push_back("animations are ignored: rest pose");
     if (!model.skins.empty()) scene.warnings.push_back("skins are ignored: rest pose");
 
-    // Materials: the base colour factor (linear), Blinn-Phong from roughness and metalness.
-    for (const tinygltf::Material& mat : model.materials) {
+    // Textures: a glTF texture (image + sampler) becomes one gnomon texture on first use.
+    std::map<int, int> textureOf;
+    auto texture = [&](int index, const std::string& where) -> int {
+        if (auto it = textureOf.find(index); it != textureOf.end()) return it->second;
+        if (index < 0 || std::size_t(index) >= model.textures.size()) {
+            read.fail(where + " refers to textures[" + std::to_string(index) +
+                      "], which does not exist");
+        }
+        const tinygltf::Texture& t = model.textures[std::size_t(index)];
+        const std::string tname = "textures[" + std::to_string(index) + "]";
+        if (t.source < 0 || std::size_t(t.source) >= model.images.size()) {
+            read.fail(tname + " has no image gnomon can read (source " + std::to_string(t.source) +
+                      ")");
+        }
+        const tinygltf::Image& image = model.images[std::size_t(t.source)];
+        const std::string iname =
+            "images[" + std::to_string(t.source) + "]" +
+            (image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "" : " ('" + image.uri + "')");
+        Texture g;
+        g.name = image.name.empty() ? iname : image.name;
+        if (!image.as_is) read.fail(iname + " holds no encoded image data");
+        if (const std::string why = decodeTexture(image.image.data(), image.image.size(), g);
+            !why.empty()) {
+            read.fail(iname + ": " + why);
+        }
+        if (t.sampler >= 0 && std::size_t(t.sampler) < model.samplers.size()) {
+            const tinygltf::Sampler& sm = model.samplers[std::size_t(t.sampler)];
+            auto wrap = [](int w) {
+                return w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::ClampToEdge
+                       : w == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::MirroredRepeat
+                                                                    : TextureWrap::Repeat;
+            };
+            g.wrapS = wrap(sm.wrapS);
+            g.wrapT = wrap(sm.wrapT);
+            g.nearest = sm.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+        }
+        scene.textures.push_back(std::move(g));
+        textureOf[index] = int(scene.textures.size() - 1);
+        return textureOf[index];
+    };
+
+    // Materials: the base colour factor (linear) and texture, alpha, Blinn-Phong from
+    // roughness and metalness. texCoordOf: the TEXCOORD_n set each material's texture reads.
+    std::vector<int> texCoordOf;
+    for (std::size_t mi = 0; mi < model.materials.size(); ++mi) {
+        const tinygltf::Material& mat = model.materials[mi];
+        const std::string where = "materials[" + std::to_string(mi) + "]";
         Material g;
         g.name = mat.name;
         const auto& pbr = mat.pbrMetallicRoughness;
         if (pbr.baseColorFactor.size() >= 3) {
             g.baseColour = glm::vec3(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
                                      float(pbr.baseColorFactor[2]));
+        }
+        if (pbr.baseColorFactor.size() == 4)
+            g.alpha = std::clamp(float(pbr.baseColorFactor[3]), 0.0f, 1.0f);
+        int texCoord = -1;
+        if (pbr.baseColorTexture.index >= 0) {
+            g.baseColourTexture = texture(pbr.baseColorTexture.index, where);
+            texCoord = pbr.baseColorTexture.texCoord;
+            const tinygltf::ExtensionMap& ext = pbr.baseColorTexture.extensions;
+            if (auto it = ext.find("KHR_texture_transform");
+                it != ext.end() && it->second.IsObject()) {
+                const tinygltf::Value& x = it->second;
+                auto pair = [&](const char* key, glm::vec2 fallback) {
+                    if (!x.Has(key) || !x.Get(key).IsArray() || x.Get(key).ArrayLen() != 2)
+                        return fallback;
+                    return glm::vec2(float(x.Get(key).Get(0).GetNumberAsDouble()),
+                                     float(x.Get(key).Get(1).GetNumberAsDouble()));
+                };
+                const glm::vec2 offset = pair("offset", glm::vec2(0.0f));
+                const glm::vec2 scale = pair("scale", glm::vec2(1.0f));
+                const float r =
+                    x.Has("rotation") ? float(x.Get("rotation").GetNumberAsDouble()) : 0.0f;
+                // uv' = T R S uv, rotating counter-clockwise in uv space (the extension's
+                // example: offset (0, 1), rotation pi/2, scale 0.5 picks the lower-left
+                // quadrant turned clockwise).
+                const float c = std::cos(r), sn = std::sin(r);
+                const glm::mat3 T(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+                const glm::mat3 R(c, -sn, 0, sn, c, 0, 0, 0, 1);
+                const glm::mat3 S(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+                g.uvTransform = T * R * S;
+                if (x.Has("texCoord")) texCoord = x.Get("texCoord").GetNumberAsInt();
+                bool finiteTransform = true;
+                for (int col = 0; col < 3; ++col)
+                    for (int row = 0; row < 3; ++row)
+                        finiteTransform = finiteTransform && std::isfinite(g.uvTransform[col][row]);
+                if (!finiteTransform)
+                    read.fail(where + " has a KHR_texture_transform that is not finite");
+            }
+        }
+        texCoordOf.push_back(texCoord);
+        if (mat.alphaMode == "MASK") {
+            g.alphaMode = AlphaMode::Mask;
+            g.alphaCutoff = std::clamp(float(mat.alphaCutoff), 0.0f, 1.0f);
+        } else if (mat.alphaMode == "BLEND") {
+            g.alphaMode = AlphaMode::Blend;
+        } else if (!mat.alphaMode.empty() && mat.alphaMode != "OPAQUE") {
+            read.fail(where + " has alphaMode '" + mat.alphaMode +
+                      "' (expected OPAQUE, MASK or BLEND)");
         }
         const float roughness = std::clamp(float(pbr.roughnessFactor), 0.02f, 1.0f);
         g.shininess = std::clamp(2.0f / (roughness * roughness * roughness * roughness) - 2.0f,
@@ -359,6 +457,17 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
         m.shininess = 1.0f;
         scene.materials.push_back(m);
     }
+
+    // A textured material's copy without its texture, for primitives with no coordinates.
+    std::map<std::uint32_t, std::uint32_t> untexturedOf;
+    auto untextured = [&](std::uint32_t material) {
+        if (auto it = untexturedOf.find(material); it != untexturedOf.end()) return it->second;
+        Material copy = scene.materials[material];
+        copy.baseColourTexture = -1;
+        copy.name += " (untextured)";
+        scene.materials.push_back(copy);
+        return untexturedOf[material] = std::uint32_t(scene.materials.size() - 1);
+    };
 
     // One gnomon mesh per primitive (and per winding, for mirrored nodes).
     std::map<std::tuple<int, int, bool>, std::uint32_t> meshOf;
@@ -419,7 +528,27 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
         };
         auto normalAttr = p.attributes.find("NORMAL");
         auto colourAttr = p.attributes.find("COLOR_0");
-        std::vector<float> normals, colours;
+        std::vector<float> normals, colours, uvs;
+        const int texCoord = p.material >= 0 && std::size_t(p.material) < texCoordOf.size()
+                                 ? texCoordOf[std::size_t(p.material)]
+                                 : -1;
+        if (texCoord >= 0) {
+            const std::string set = "TEXCOORD_" + std::to_string(texCoord);
+            auto uvAttr = p.attributes.find(set);
+            if (uvAttr == p.attributes.end()) {
+                scene.warnings.push_back(where + " has a textured material but no " + set +
+                                         ": drawn untextured");
+            } else {
+                uvs = read.floats(uvAttr->second, 2, set.c_str());
+                if (uvs.size() / 2 != vertices)
+                    read.fail(where + " has a " + set + " count unlike POSITION's");
+                for (float v : uvs) {
+                    if (!std::isfinite(v))
+                        read.fail(read.name(uvAttr->second) + " (" + set +
+                                  ") holds NaN or infinity");
+                }
+            }
+        }
         if (normalAttr != p.attributes.end())
             normals = read.floats(normalAttr->second, 3, "NORMAL");
         if (colourAttr != p.attributes.end())
@@ -447,6 +576,11 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
                     mesh.colours[k] =
                         glm::vec3(colours[4 * k], colours[4 * k + 1], colours[4 * k + 2]);
             }
+            if (!uvs.empty()) {
+                mesh.uvs.resize(vertices);
+                for (std::uint32_t k = 0; k < vertices; ++k)
+                    mesh.uvs[k] = glm::vec2(uvs[2 * k], uvs[2 * k + 1]);
+            }
         }
         for (std::size_t t = 0; t + 2 < tri.size(); t += 3) {
             std::uint32_t v[3] = {tri[t], tri[t + 1], tri[t + 2]};
@@ -468,6 +602,7 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
                     mesh.colours.push_back(
                         glm::vec3(colours[4 * k], colours[4 * k + 1], colours[4 * k + 2]));
                 }
+                if (!uvs.empty()) mesh.uvs.push_back(glm::vec2(uvs[2 * k], uvs[2 * k + 1]));
                 mesh.indices.push_back(std::uint32_t(mesh.indices.size()));
             }
         }
@@ -549,6 +684,10 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
                     o.name = node.name.empty() ? "nodes[" + std::to_string(n) + "]" : node.name;
                     o.mesh = std::uint32_t(gm);
                     o.material = mat >= 0 ? std::uint32_t(mat) : defaultMaterial;
+                    if (scene.materials[o.material].baseColourTexture >= 0 &&
+                        scene.meshes[o.mesh].uvs.empty()) {
+                        o.material = untextured(o.material);  // warned: no TEXCOORD
+                    }
                     o.worldFromModel = m;
                     scene.objects.push_back(o);
                 }
@@ -638,15 +777,7 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
                                  std::to_string(pointScale) + ", directional x" +
                                  std::to_string(sunScale) + ")");
     }
-    if (scene.lights.empty()) {
-        Light sun;
-        sun.name = "default sun";
-        sun.type = LightType::Directional;
-        sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
-        sun.intensity = 1.0f;
-        scene.lights.push_back(sun);
-        scene.warnings.push_back("no lights: a default sun was added");
-    }
+    addDefaultSun(scene);
 
     // The camera: the first one placed, else one framing the bounds.
     Camera& cam = scene.camera;
@@ -676,12 +807,7 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
             cam.far = glm::length(cam.eye - centre) + 4.0f * radius;
         }
     } else {
-        cam.centre = centre;
-        cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.5f, 1.0f)) * (2.6f * radius);
-        cam.fovyDegrees = 45.0f;
-        cam.near = radius * 0.02f;
-        cam.far = radius * 6.0f;
-        scene.warnings.push_back("no camera: one framing the scene was added");
+        frameWithCamera(scene, bounds);
     }
     scene.ambient = glm::vec3(0.1f);
     scene.options.width = scene.options.height = 512;

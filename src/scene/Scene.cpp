@@ -1,5 +1,6 @@
 // Scene model behaviour: animated transforms, consistency checks with readable messages,
 // bounds for shadow fitting.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -171,6 +172,29 @@ RenderOptions presetOptions(const Scene& scene, Preset preset) {
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
     if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
     return scene.lights[index].enabled;
+}
+
+void addDefaultSun(Scene& scene) {
+    if (!scene.lights.empty()) return;
+    Light sun;
+    sun.name = "default sun";
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+    sun.intensity = 1.0f;
+    scene.lights.push_back(sun);
+    scene.warnings.push_back("no lights: a default sun was added");
+}
+
+void frameWithCamera(Scene& scene, const Aabb& bounds) {
+    const glm::vec3 centre = bounds.centre();
+    const float radius = std::max(bounds.radius(), 1e-6f);
+    Camera& cam = scene.camera;
+    cam.centre = centre;
+    cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.5f, 1.0f)) * (2.6f * radius);
+    cam.fovyDegrees = 45.0f;
+    cam.near = radius * 0.02f;
+    cam.far = radius * 6.0f;
+    scene.warnings.push_back("no camera: one framing the scene was added");
 }
 
 }  // namespace gnomon

@@ -42,7 +42,98 @@ struct World {
     float scale = 1.0f;  // the scene's size, for ray offsets
 };
 
-RTCScene buildScene(RTCDevice device, const Scene& scene, const World& world, bool castersOnly) {
+// What a masked or blended object's hits need: its alpha at the hit point.
+struct AlphaSurface {
+    const Mesh* mesh = nullptr;
+    const Material* material = nullptr;
+    const Texture* texture = nullptr;  // null: the material's alpha factor alone
+};
+
+int wrapTexel(int i, int n, TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::ClampToEdge:
+            return std::clamp(i, 0, n - 1);
+        case TextureWrap::MirroredRepeat: {
+            const int period = 2 * n;
+            int m = ((i % period) + period) % period;
+            return m < n ? m : period - 1 - m;
+        }
+        case TextureWrap::Repeat:
+            break;
+    }
+    return ((i % n) + n) % n;
+}
+
+// The material's alpha at barycentric (u, v) of triangle `prim`: the factor times the base
+// colour texture's alpha, bilinear on the full-size image (the renderer's mip levels can
+// differ where the texture is minified).
+float alphaAt(const AlphaSurface& a, unsigned prim, float u, float v) {
+    float alpha = a.material->alpha;
+    if (!a.texture || a.mesh->uvs.empty()) return alpha;
+    const std::uint32_t* t = &a.mesh->indices[3 * std::size_t(prim)];
+    const glm::vec2 uv0 = a.mesh->uvs[t[0]], uv1 = a.mesh->uvs[t[1]], uv2 = a.mesh->uvs[t[2]];
+    const glm::vec2 uv =
+        a.material->uvTransform * glm::vec3((1.0f - u - v) * uv0 + u * uv1 + v * uv2, 1.0f);
+    const Texture& tex = *a.texture;
+    const float x = uv.x * float(tex.width) - 0.5f, y = uv.y * float(tex.height) - 0.5f;
+    if (!std::isfinite(x) || !std::isfinite(y)) return alpha;
+    const float fx = std::floor(x), fy = std::floor(y);
+    const int x0 = int(std::fmod(fx, 1048576.0f)), y0 = int(std::fmod(fy, 1048576.0f));
+    auto texel = [&](int i, int j) {
+        i = wrapTexel(i, tex.width, tex.wrapS);
+        j = wrapTexel(j, tex.height, tex.wrapT);
+        return float(tex.rgba[(std::size_t(j) * std::size_t(tex.width) + std::size_t(i)) * 4 + 3]) /
+               255.0f;
+    };
+    if (tex.nearest) return alpha * texel(int(std::floor(x + 0.5f)), int(std::floor(y + 0.5f)));
+    const float wx = x - fx, wy = y - fy;
+    const float top = (1.0f - wx) * texel(x0, y0) + wx * texel(x0 + 1, y0);
+    const float bottom = (1.0f - wx) * texel(x0, y0 + 1) + wx * texel(x0 + 1, y0 + 1);
+    return alpha * ((1.0f - wy) * top + wy * bottom);
+}
+
+// Rays carry this context so filters know what they trace: view rays look through cut-away
+// and blended surfaces; shadow rays through cut-away ones, and through blended ones by the
+// --blend-shadows rule, accumulating 1 - alpha for dithered ones.
+struct AlphaContext {
+    RTCIntersectContext base;  // first: Embree hands filters a pointer to it
+    bool viewRay = false;
+    BlendShadows blend = BlendShadows::Dithered;
+    float transmission = 1.0f;
+    // Hits already counted (a primitive can be reported again); a short ring suffices.
+    std::uint64_t seen[8] = {};
+    int seenCount = 0;
+};
+
+void alphaFilter(const RTCFilterFunctionNArguments* args) {
+    const auto& surface = *static_cast<const AlphaSurface*>(args->geometryUserPtr);
+    auto& ctx = *reinterpret_cast<AlphaContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
+        const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+        const Material& m = *surface.material;
+        if (m.alphaMode == AlphaMode::Mask) {
+            if (alphaAt(surface, prim, u, v) < m.alphaCutoff) args->valid[i] = 0;
+            continue;
+        }
+        // Blended.
+        if (ctx.viewRay || ctx.blend == BlendShadows::None) {
+            args->valid[i] = 0;
+        } else if (ctx.blend == BlendShadows::Dithered) {
+            args->valid[i] = 0;
+            const std::uint64_t key =
+                std::uint64_t(RTCHitN_geomID(args->hit, args->N, i)) << 32 | prim;
+            const int n = std::min(ctx.seenCount, 8);
+            if (std::find(ctx.seen, ctx.seen + n, key) != ctx.seen + n) continue;
+            ctx.seen[ctx.seenCount++ % 8] = key;
+            ctx.transmission *= 1.0f - std::clamp(alphaAt(surface, prim, u, v), 0.0f, 1.0f);
+        }
+    }
+}
+
+RTCScene buildScene(RTCDevice device, const Scene& scene, const World& world,
+                    const std::vector<AlphaSurface>& alpha, bool castersOnly) {
     RTCScene s = rtcNewScene(device);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const Object& obj = scene.objects[o];
@@ -69,6 +160,11 @@ RTCScene buildScene(RTCDevice device, const Scene& scene, const World& world, bo
             v[3 * i + 2] = p[i].z;
         }
         std::copy(mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(3 * triangles), idx);
+        if (alpha[o].material) {  // masked or blended: every hit asks its alpha
+            rtcSetGeometryUserData(g, const_cast<AlphaSurface*>(&alpha[o]));
+            rtcSetGeometryIntersectFilterFunction(g, &alphaFilter);
+            rtcSetGeometryOccludedFilterFunction(g, &alphaFilter);
+        }
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(s, g, unsigned(o));
         rtcReleaseGeometry(g);
@@ -102,9 +198,13 @@ float pixelTurn(int x, int y) {
     return float(h & 0xffffu) / 65536.0f * 6.2831853f;
 }
 
-bool occluded(RTCScene scene, const glm::vec3& origin, const glm::vec3& dir, float far) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+// The share of light that arrives along the ray: 0 when something opaque is in the way, the
+// product of dithered blended surfaces' 1 - alpha otherwise.
+float transmitted(RTCScene scene, BlendShadows blend, const glm::vec3& origin, const glm::vec3& dir,
+                  float far) {
+    AlphaContext context;
+    rtcInitIntersectContext(&context.base);
+    context.blend = blend;
     RTCRay ray{};
     ray.org_x = origin.x;
     ray.org_y = origin.y;
@@ -115,8 +215,8 @@ bool occluded(RTCScene scene, const glm::vec3& origin, const glm::vec3& dir, flo
     ray.tnear = 0.0f;
     ray.tfar = far;
     ray.mask = 0xffffffffu;
-    rtcOccluded1(scene, &context, &ray);
-    return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+    rtcOccluded1(scene, &context.base, &ray);
+    return ray.tfar < 0.0f ? 0.0f : context.transmission;  // Embree sets tfar to -inf on a hit
 }
 
 }  // namespace
@@ -140,11 +240,20 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
         world.meshes.push_back(&mesh);
     }
     world.scale = bounds.empty() ? 1.0f : std::max(bounds.radius(), 1e-6f);
+    std::vector<AlphaSurface> alpha(scene.objects.size());
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const Material& m = scene.materials[scene.objects[o].material];
+        if (m.alphaMode == AlphaMode::Opaque) continue;
+        alpha[o] = {
+            world.meshes[o], &m,
+            m.baseColourTexture >= 0 ? &scene.textures[std::size_t(m.baseColourTexture)] : nullptr};
+    }
+    const BlendShadows blend = options.shadow.blendShadows;
 
     Device device(rtcNewDevice(nullptr));
     if (!device) throw Error(ErrorKind::InvalidInput, "ground truth: Embree found no device");
-    const EmbreeScene all(buildScene(device.get(), scene, world, false));
-    const EmbreeScene casters(buildScene(device.get(), scene, world, true));
+    const EmbreeScene all(buildScene(device.get(), scene, world, alpha, false));
+    const EmbreeScene casters(buildScene(device.get(), scene, world, alpha, true));
 
     Reference ref;
     ref.width = options.width;
@@ -189,8 +298,9 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
         const glm::vec3 dir = glm::normalize(to - from);
         float tnear = 0.0f;
         const float tfar = glm::length(to - from);
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
+        AlphaContext context;
+        rtcInitIntersectContext(&context.base);
+        context.viewRay = true;
         // Single-sided surfaces seen from behind are culled by the main pass: look past them.
         for (int attempt = 0; attempt < 64; ++attempt) {
             RTCRayHit rh{};
@@ -204,7 +314,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             rh.ray.tfar = tfar;
             rh.ray.mask = 0xffffffffu;
             rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(all.get(), &context, &rh);
+            rtcIntersect1(all.get(), &context.base, &rh);
             if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return;
             const int o = int(rh.hit.geomID);
             const Mesh& mesh = *world.meshes[std::size_t(o)];
@@ -269,16 +379,16 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                 if (!mat.unlit && !(glm::dot(n, toLight) > 0.0f)) continue;  // faces away
                 const std::size_t cell = pixel * std::size_t(ref.lights) + l;
                 ref.applies[cell] = 1;
-                ref.hard[cell] = occluded(casters.get(), origin, toLight, distance) ? 0.0f : 1.0f;
+                ref.hard[cell] = transmitted(casters.get(), blend, origin, toLight, distance);
                 if (samples == 0) continue;
-                int visible = 0;
+                float visible = 0.0f;
                 glm::vec3 u, v;
                 if (light.type == LightType::Directional) {
                     basis(toLight, u, v);
                     for (int i = 0; i < samples; ++i) {
                         const glm::vec2 s = discSample(i, samples, turn) * tanAngle;
                         const glm::vec3 d = glm::normalize(toLight + s.x * u + s.y * v);
-                        visible += !occluded(casters.get(), origin, d, distance);
+                        visible += transmitted(casters.get(), blend, origin, d, distance);
                     }
                 } else {
                     // A disc of `radius`: around the light facing the point (spot, point), or
@@ -291,11 +401,12 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                         const glm::vec3 q = centre + s.x * u + s.y * v;
                         const glm::vec3 d = q - origin;
                         const float len = glm::length(d);
-                        visible +=
-                            len > 0.0f && !occluded(casters.get(), origin, d / len, len * 0.99999f);
+                        if (len > 0.0f)
+                            visible +=
+                                transmitted(casters.get(), blend, origin, d / len, len * 0.99999f);
                     }
                 }
-                ref.soft[cell] = float(visible) / float(samples);
+                ref.soft[cell] = visible / float(samples);
             }
             return;
         }

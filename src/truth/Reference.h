@@ -30,7 +30,9 @@ struct Reference {
     // receives them, and the light reaches the surface (in front of it, inside a spot's
     // cone, on the lit side of an area light's plane).
     std::vector<std::uint8_t> applies;
-    std::vector<float> hard;  // 1 lit, 0 occluded (where applies)
+    // 1 lit, 0 occluded (where applies); between where light passes dithered blended
+    // casters (1 - alpha each, --blend-shadows dithered).
+    std::vector<float> hard;
     std::vector<float> soft;  // fraction of the light's surface visible (softSamples > 0)
 
     std::size_t at(int x, int y, int light) const {

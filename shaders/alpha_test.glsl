@@ -1,0 +1,24 @@
+// Alpha-tested shadow casters (ALPHA_TEST variants of the depth passes): masked materials
+// cut away below their cutoff; blended ones (--blend-shadows dithered) keep a share alpha of
+// the map's texels, chosen by a hash of the texel so that filtered lookups see partial shadow.
+layout(binding = 4) uniform sampler2D uBaseColourTexture;  // 1x1 white when untextured
+
+in AlphaOut {
+    vec2 uv;
+    flat float alpha;   // base colour alpha factor
+    flat float cutoff;  // masked: the cutoff; blended: -1 (dithered)
+} vAlpha;
+
+// Uniform in [0, 1) per texel, no visible pattern (integer hash, PCG-style).
+float texelHash(uvec2 p) {
+    uint h = p.x * 747796405u + p.y * 2891336453u + 277803737u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    return float(h >> 8) * (1.0 / 16777216.0);
+}
+
+void alphaTest() {
+    float alpha = vAlpha.alpha * texture(uBaseColourTexture, vAlpha.uv).a;
+    float threshold = vAlpha.cutoff >= 0.0 ? vAlpha.cutoff : texelHash(uvec2(gl_FragCoord.xy));
+    if (alpha < threshold || alpha <= 0.0) discard;
+}
