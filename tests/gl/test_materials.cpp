@@ -114,6 +114,28 @@ TEST(Materials, MaskedCasterCutsHolesInItsShadow) {
     EXPECT_LT(lum(all, 3.5f), lit / 3);
 }
 
+TEST(Materials, MaskedCastersCutHolesInEveryKindOfMap) {
+    // The alpha-tested depth programs: 2D maps of colour and native formats, and cubes.
+    for (bool point : {false, true}) {
+        for (DepthFormat f : {DepthFormat::R8, DepthFormat::Depth16, DepthFormat::Depth32F}) {
+            Scene s = texturedPlate(AlphaMode::Mask);
+            if (point) {
+                // From (-6, 8, 0) the left half shadows x in [-2, 2], the right [2, 6].
+                s.lights[0].type = LightType::Point;
+                s.lights[0].position = {-6.0f, 8.0f, 0.0f};
+            }
+            RenderOptions o = s.options;
+            o.shadow.depthFormat = f;
+            const Image image = sharedRenderer().render(s, o);
+            o.shadow.enabled = false;
+            const Image unshadowed = sharedRenderer().render(s, o);
+            SCOPED_TRACE(std::string(point ? "point light, " : "sun, ") + toString(f));
+            EXPECT_LT(lum(image, 1.0f), lum(unshadowed, 1.0f) / 2) << "under the opaque half";
+            EXPECT_GT(lum(image, 3.5f), lum(unshadowed, 3.5f) * 9 / 10) << "under the cut half";
+        }
+    }
+}
+
 TEST(Materials, TextureTransformMovesTheCut) {
     Scene s = texturedPlate(AlphaMode::Mask);
     // KHR_texture_transform offset (0.5, 0): the left half now reads the clear texel.

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "gnomon/Error.h"
 #include "scene/GltfLoader.h"
@@ -121,6 +123,75 @@ TEST(Gltf, OurTriangleLoads) {
     EXPECT_EQ(s.meshes[0].normals[0], glm::vec3(0, 0, 1));  // CCW in the xy plane
 }
 
+TEST(Gltf, TexturedMaskedQuadKeepsItsTextureAlphaAndTransform) {
+    const Scene s = loadGltf(corpus("textured_quad.gltf"));
+    EXPECT_TRUE(s.validate().empty());
+    ASSERT_EQ(s.textures.size(), 1u);
+    const Texture& t = s.textures[0];
+    EXPECT_EQ(t.width, 2);
+    EXPECT_EQ(t.height, 1);
+    EXPECT_EQ(t.rgba, (std::vector<std::uint8_t>{255, 0, 0, 255, 0, 255, 0, 0}));
+    EXPECT_EQ(t.wrapS, TextureWrap::ClampToEdge);
+    EXPECT_TRUE(t.nearest);
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Material& m = s.materials[s.objects[0].material];
+    EXPECT_EQ(m.baseColourTexture, 0);
+    EXPECT_EQ(m.alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(m.alphaCutoff, 0.4f);
+    EXPECT_FLOAT_EQ(m.alpha, 0.9f);
+    EXPECT_TRUE(m.doubleSided);
+    // KHR_texture_transform offset (0.25, 0): uv (0.5, 0.5) is read at (0.75, 0.5).
+    const glm::vec3 moved = m.uvTransform * glm::vec3(0.5f, 0.5f, 1.0f);
+    EXPECT_FLOAT_EQ(moved.x, 0.75f);
+    EXPECT_FLOAT_EQ(moved.y, 0.5f);
+    const Mesh& mesh = s.meshes[s.objects[0].mesh];
+    ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        // The file's uv: u = x, v = 1 - y.
+        EXPECT_FLOAT_EQ(mesh.uvs[i].x, mesh.positions[i].x);
+        EXPECT_FLOAT_EQ(mesh.uvs[i].y, 1.0f - mesh.positions[i].y);
+    }
+}
+
+TEST(Gltf, KhrTextureTransformRotatesAsItsSpecExampleSays) {
+    // The extension's example: offset (0, 1), rotation pi/2, scale 0.5 shows the lower-left
+    // quadrant of the image turned: uv (0, 0) reads (0, 1), uv (1, 0) reads (0, 0.5).
+    // Checked through the loader on a copy of the textured quad.
+    std::ifstream in(corpus("textured_quad.gltf"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("\"KHR_texture_transform\": {");
+    ASSERT_NE(at, std::string::npos);
+    const auto open = text.find('{', at), close = text.find('}', at);
+    text.replace(open, close - open + 1,
+                 "{\"offset\": [0, 1], \"rotation\": 1.5707963268, \"scale\": [0.5, 0.5]}");
+    const Scene s = loadGltf(std::vector<unsigned char>(text.begin(), text.end()), "rotated.gltf",
+                             GNOMON_GLTF_CORPUS);
+    const glm::mat3& m = s.materials[s.objects[0].material].uvTransform;
+    const glm::vec3 a = m * glm::vec3(0, 0, 1), b = m * glm::vec3(1, 0, 1);
+    EXPECT_NEAR(a.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(a.y, 1.0f, 1e-6f);
+    EXPECT_NEAR(b.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(b.y, 0.5f, 1e-6f);
+}
+
+TEST(Gltf, AlphaBlendModeTestHasMaskedAndBlendedTexturedMaterials) {
+    NEED_SHARED("AlphaBlendModeTest/AlphaBlendModeTest.glb");
+    const Scene s = loadGltf(shared("AlphaBlendModeTest/AlphaBlendModeTest.glb"));
+    EXPECT_TRUE(s.validate().empty());
+    int mask = 0, blend = 0, textured = 0;
+    for (const Object& o : s.objects) {
+        const Material& m = s.materials[o.material];
+        mask += m.alphaMode == AlphaMode::Mask;
+        blend += m.alphaMode == AlphaMode::Blend;
+        textured += m.baseColourTexture >= 0;
+    }
+    EXPECT_GE(mask, 3);
+    EXPECT_GE(blend, 1);
+    EXPECT_EQ(textured, int(s.objects.size()));
+    for (const Texture& t : s.textures)
+        EXPECT_EQ(t.rgba.size(), std::size_t(t.width) * std::size_t(t.height) * 4);
+}
+
 struct Broken {
     const char* file;
     const char* says;  // a part of the message
@@ -161,6 +232,7 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"zero_area.gltf", "no triangles", ErrorKind::InvalidInput},
         Broken{"lines_only.gltf", "no triangles", ErrorKind::InvalidInput},
         Broken{"truncated.glb", "Invalid glTF binary", ErrorKind::InvalidInput},
+        Broken{"bad_image.gltf", "images[0]: the image cannot be decoded", ErrorKind::InvalidInput},
         Broken{"no_such_file.gltf", "no such file", ErrorKind::Io}),
     [](const auto& info) {
         std::string n = info.param.file;

@@ -37,6 +37,65 @@ def triangle(positions=None, indices=(0, 1, 2)):
     }
 
 
+def png(width, height, rgba_rows):
+    """A minimal RGBA8 PNG (stdlib only): rows of width * 4 bytes, top row first."""
+    import zlib
+
+    def chunk(kind, data):
+        body = kind + data
+        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body))
+
+    raw = b"".join(b"\0" + row for row in rgba_rows)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def textured_quad(image_bytes):
+    """A unit quad in the xy plane with normals and TEXCOORD_0, its material masked with a
+    2x1 texture (left texel opaque red, right clear green), sampled NEAREST and clamped,
+    and a KHR_texture_transform offset of (0.25, 0)."""
+    pos = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+    nrm = [(0, 0, 1)] * 4
+    uv = [(0, 1), (1, 1), (1, 0), (0, 0)]
+    idx = (0, 1, 2, 0, 2, 3)
+    blobs = [b"".join(struct.pack("<3f", *p) for p in pos),
+             b"".join(struct.pack("<3f", *n) for n in nrm),
+             b"".join(struct.pack("<2f", *t) for t in uv),
+             b"".join(struct.pack("<H", i) for i in idx)]
+    raw, views, offset = b"", [], 0
+    for b in blobs:
+        views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(b)})
+        raw += b
+        offset += len(b)
+    return {
+        "asset": {"version": "2.0"},
+        "extensionsUsed": ["KHR_texture_transform"],
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2},
+                                    "indices": 3, "material": 0}]}],
+        "materials": [{"name": "cut", "alphaMode": "MASK", "alphaCutoff": 0.4,
+                       "doubleSided": True,
+                       "pbrMetallicRoughness": {
+                           "baseColorFactor": [1, 1, 1, 0.9],
+                           "baseColorTexture": {"index": 0, "extensions": {
+                               "KHR_texture_transform": {"offset": [0.25, 0]}}}}}],
+        "textures": [{"source": 0, "sampler": 0}],
+        "samplers": [{"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33071}],
+        "images": [{"uri": "data:image/png;base64," + base64.b64encode(image_bytes).decode()}],
+        "buffers": [{"byteLength": len(raw), "uri": data_uri(raw)}],
+        "bufferViews": views,
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+            {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+            {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"},
+        ],
+    }
+
+
 def write(name, doc):
     with open(os.path.join(HERE, name), "w") as f:
         f.write(doc if isinstance(doc, str) else json.dumps(doc, indent=1))
@@ -74,6 +133,9 @@ def main():
     d = triangle()
     d["meshes"][0]["primitives"][0]["mode"] = 1  # lines
     write("lines_only.gltf", d)
+    write("textured_quad.gltf",
+          textured_quad(png(2, 1, [bytes([255, 0, 0, 255, 0, 255, 0, 0])])))
+    write("bad_image.gltf", textured_quad(b"\x89PNG\r\n\x1a\nnot really a png"))
     with open(os.path.join(HERE, "truncated.glb"), "wb") as f:
         f.write(b"glTF" + struct.pack("<II", 2, 1000) + b"\x10\0\0\0JSON{")
 
