@@ -22,8 +22,10 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
         "bench",
         "time each pass of a frame (median and spread over N frames), optionally "
         "sweeping one parameter");
-    cmd->add_option("--scene", args.scene,
-                    "built-in scene name (see `gnomon scenes`) or glTF file (.gltf, .glb)")
+    cmd->add_option(
+           "--scene", args.scene,
+           "built-in scene name (see `gnomon scenes`), scene file (.json), glTF file (.gltf, "
+           ".glb) or other model file (assimp: .obj, .ply, .fbx...)")
         ->required();
     cmd->add_option(
         "--frames", args.frames,
@@ -327,8 +329,9 @@ int runBench(const BenchArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput,
                     "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
     }
-    const Scene base = loadScene(args.scene);
+    Scene base = loadScene(args.scene);
     printWarnings(base);
+    args.flags.editScene(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     std::vector<std::string> values;
     if (!args.sweep.empty()) {

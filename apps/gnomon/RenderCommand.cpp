@@ -100,6 +100,13 @@ void RenderFlags::add(CLI::App& a) {
     a.add_option("--blend-shadows", blendShadows,
                  "opaque|none|dithered: shadows of alpha-blended materials: full, none, or "
                  "covering alpha of the map's texels (default dithered)");
+    a.add_flag("--ground", ground,
+               "add a grey ground under the scene (receives shadows, casts none), for models "
+               "without a floor");
+    a.add_option("--output-encoding", outputEncoding,
+                 "linear|srgb: image colours as computed (the textbooks) or sRGB-encoded for "
+                 "display (glTF viewers) (default: scene's; built-in scenes linear, model files "
+                 "srgb)");
     a.add_option("--shadowed", shadowed,
                  "ambient|factor: a shadowed fragment keeps ambient only, or is multiplied by "
                  "--shadow-factor (default: scene's; ambient)");
@@ -167,8 +174,12 @@ void RenderFlags::apply(RenderOptions& o) const {
             parseEnum("--map-filter", mapFilter, parseMapFilter, "nearest, linear");
     }
     if (given("--blend-shadows")) {
-        o.shadow.blendShadows = parseEnum("--blend-shadows", blendShadows, parseBlendShadows,
-                                          "opaque, none, dithered");
+        o.shadow.blendShadows =
+            parseEnum("--blend-shadows", blendShadows, parseBlendShadows, "opaque, none, dithered");
+    }
+    if (given("--output-encoding")) {
+        o.shading.output =
+            parseEnum("--output-encoding", outputEncoding, parseOutputEncoding, "linear, srgb");
     }
     if (given("--shadowed"))
         o.shading.shadowedRule =

@@ -19,12 +19,13 @@ inline void printWarnings(const Scene& scene) {
 
 struct RenderFlags {
     std::string preset, debugView, size, shadows, outside, cull, filter, shadowed, depthFormat,
-        mapFilter, blendShadows;
+        mapFilter, blendShadows, outputEncoding;
     int lightOnly = -1, mapSize = 0, pcfSize = 3, cascades = 1;
     double time = 0.0;
     float cascadeLambda = 0, cascadeBlend = 0, lightRadius = 0, lightAngle = 0;
     float biasConstant = 0, biasDepthAware = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0,
           shadowFactor = 0;
+    bool ground = false;
     CLI::App* app = nullptr;
 
     // Declares the flags on `app`.
@@ -32,6 +33,10 @@ struct RenderFlags {
     // The options for `scene`: the --preset's (default: the scene's own), then every flag
     // given applied over them. Throws gnomon::Error for bad values.
     RenderOptions resolve(const Scene& scene) const;
+    // Scene edits the flags ask for (--ground).
+    void editScene(Scene& scene) const {
+        if (ground) addGround(scene);
+    }
     // Applies the given flags over `options`; throws gnomon::Error for bad values.
     void apply(RenderOptions& options) const;
 };

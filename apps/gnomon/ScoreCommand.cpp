@@ -10,8 +10,10 @@ namespace gnomon::cli {
 CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "score", "render one frame and score its shadows against a ray-traced reference");
-    cmd->add_option("--scene", args.scene,
-                    "built-in scene name (see `gnomon scenes`) or glTF file (.gltf, .glb)")
+    cmd->add_option(
+           "--scene", args.scene,
+           "built-in scene name (see `gnomon scenes`), scene file (.json), glTF file (.gltf, "
+           ".glb) or other model file (assimp: .obj, .ply, .fbx...)")
         ->required();
     cmd->add_option("--out-dir", args.outDir,
                     "folder for render.png, errors.png (false shadow red, leaks blue, pale "
@@ -48,6 +50,7 @@ int runScore(const ScoreArgs& args, bool verbose) {
     }
     Scene scene = loadScene(args.scene);
     printWarnings(scene);
+    args.flags.editScene(scene);
     const RenderOptions options = args.flags.resolve(scene);
     ContextOptions context;
     context.verbose = verbose;

@@ -37,6 +37,7 @@ int runRender(const RenderArgs& args, bool verbose) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart)
             .count();
     gnomon::cli::printWarnings(scene);
+    args.flags.editScene(scene);
     if (verbose) {
         std::size_t triangles = 0;
         for (const gnomon::Object& o : scene.objects)
@@ -110,8 +111,10 @@ int main(int argc, char** argv) {
     RenderArgs render;
     CLI::App* renderCmd = app.add_subcommand("render", "render one frame to a PNG file");
     renderCmd
-        ->add_option("--scene", render.scene,
-                     "built-in scene name (see `gnomon scenes`) or glTF file (.gltf, .glb)")
+        ->add_option(
+            "--scene", render.scene,
+            "built-in scene name (see `gnomon scenes`), scene file (.json), glTF file (.gltf, "
+            ".glb) or other model file (assimp: .obj, .ply, .fbx...)")
         ->required();
     renderCmd->add_option("--out", render.out, "output PNG path (written atomically)")->required();
     renderCmd->add_option(

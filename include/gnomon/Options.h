@@ -98,9 +98,16 @@ enum class DebugView {
                   // light
 };
 
+// How computed colours are stored in the output image.
+enum class OutputEncoding {
+    Linear,  // as computed, no transfer function: the textbooks' programs (built-in scenes)
+    Srgb,    // sRGB-encoded for display, as glTF viewers do (loaded model files)
+};
+
 struct ShadingOptions {
     ShadowedRule shadowedRule = ShadowedRule::AmbientOnly;  // what a shadowed fragment keeps
     float shadowFactor = 0.7f;  // colour multiplier for ShadowedRule::Factor, 0..1
+    OutputEncoding output = OutputEncoding::Linear;  // colours as computed, or sRGB-encoded
 };
 
 struct RenderOptions {
@@ -126,6 +133,7 @@ const char* toString(MapFilter v);
 const char* toString(Preset v);
 const char* toString(DebugView v);
 const char* toString(BlendShadows v);
+const char* toString(OutputEncoding v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
 std::optional<CullMode> parseCullMode(const std::string& s);
@@ -135,6 +143,7 @@ std::optional<MapFilter> parseMapFilter(const std::string& s);
 std::optional<Preset> parsePreset(const std::string& s);
 std::optional<DebugView> parseDebugView(const std::string& s);
 std::optional<BlendShadows> parseBlendShadows(const std::string& s);
+std::optional<OutputEncoding> parseOutputEncoding(const std::string& s);
 // True for the formats stored in colour channels (r8 and the RGBA8 packings).
 bool isColourFormat(DepthFormat v);
 

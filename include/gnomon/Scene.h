@@ -185,5 +185,9 @@ std::vector<SceneInfo> builtinScenes();
 Scene builtinScene(const std::string& name);
 // A built-in scene name or a path to a model file; throws gnomon::Error.
 Scene loadScene(const std::string& nameOrPath);
+// Adds a grey ground under the scene (a receiver that casts nothing) so models without a
+// floor show their shadows: a square ten times the scene's radius wide, facing +y (glTF's
+// up) just below the lowest point at options.time 0. Does nothing to an empty scene.
+void addGround(Scene& scene);
 
 }  // namespace gnomon

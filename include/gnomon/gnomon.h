@@ -6,6 +6,7 @@
 #include "gnomon/Options.h"
 #include "gnomon/Renderer.h"
 #include "gnomon/Scene.h"
+#include "gnomon/SceneFile.h"
 #include "gnomon/Score.h"
 
 namespace gnomon {

@@ -53,8 +53,12 @@ const std::pair<const char*, DebugView> kDebugViews[] = {{"none", DebugView::Non
                                                          {"shadow-map", DebugView::ShadowMap},
                                                          {"light-frusta", DebugView::LightFrusta}};
 
-const std::pair<const char*, BlendShadows> kBlendShadows[] = {
-    {"opaque", BlendShadows::Opaque}, {"none", BlendShadows::None}, {"dithered", BlendShadows::Dithered}};
+const std::pair<const char*, BlendShadows> kBlendShadows[] = {{"opaque", BlendShadows::Opaque},
+                                                              {"none", BlendShadows::None},
+                                                              {"dithered", BlendShadows::Dithered}};
+
+const std::pair<const char*, OutputEncoding> kOutputs[] = {{"linear", OutputEncoding::Linear},
+                                                           {"srgb", OutputEncoding::Srgb}};
 
 bool finite(float v) {
     return std::isfinite(v);
@@ -115,6 +119,12 @@ const char* toString(BlendShadows v) {
 }
 std::optional<BlendShadows> parseBlendShadows(const std::string& s) {
     return lookup(s, kBlendShadows);
+}
+const char* toString(OutputEncoding v) {
+    return nameOf(v, kOutputs);
+}
+std::optional<OutputEncoding> parseOutputEncoding(const std::string& s) {
+    return lookup(s, kOutputs);
 }
 bool isColourFormat(DepthFormat v) {
     return v == DepthFormat::R8 || v == DepthFormat::Rgba8Packed256 ||

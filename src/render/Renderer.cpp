@@ -71,9 +71,13 @@ struct Renderer::Impl {
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF taps may cross cube faces
     }
 
-    void ensureTarget(int width, int height) {
-        if (target && colour.width() == width && colour.height() == height) return;
-        colour = gl::Texture::plain2D("output colour", GL_RGBA8, width, height);
+    void ensureTarget(int width, int height, OutputEncoding encoding) {
+        const GLenum format = encoding == OutputEncoding::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+        if (target && colour.width() == width && colour.height() == height &&
+            colour.format() == format) {
+            return;
+        }
+        colour = gl::Texture::plain2D("output colour", format, width, height);
         depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT24, width, height);
         target = gl::Framebuffer("output");
         glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
@@ -324,7 +328,7 @@ struct Renderer::Impl {
         stats.shadowMapBytes = shadowed.empty() ? 0 : shadowPass.bytes();
         finishLights();
 
-        ensureTarget(options.width, options.height);
+        ensureTarget(options.width, options.height, options.shading.output);
         glBindFramebuffer(GL_FRAMEBUFFER, target.id());
         glViewport(0, 0, options.width, options.height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -373,10 +377,14 @@ struct Renderer::Impl {
                 glClearTexImage(visibilityTexture.id(), 0, GL_RG, GL_FLOAT, unset);
                 visibilityTarget = &visibilityTexture;
             }
+            // sRGB output: the target is SRGB8_ALPHA8, so writes (and blending) encode.
+            const bool srgb = options.shading.output == OutputEncoding::Srgb;
+            if (srgb) glEnable(GL_FRAMEBUFFER_SRGB);
             mainPass.render(scene, in, options, visibilityTarget);
             if (options.debugView == DebugView::LightFrusta) {
                 debugPass.drawFrusta(shadowed, in.clipFromView * viewFromWorld);
             }
+            if (srgb) glDisable(GL_FRAMEBUFFER_SRGB);
         }
 
         if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));

@@ -811,6 +811,8 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
     }
     scene.ambient = glm::vec3(0.1f);
     scene.options.width = scene.options.height = 512;
+    scene.options.shading.output =
+        OutputEncoding::Srgb;  // authored for display, as viewers show it
     return scene;
 }
 

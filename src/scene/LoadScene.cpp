@@ -1,10 +1,12 @@
-// Scene lookup by name or path: built-in scenes by name, glTF files by path; other formats
-// get a clear error rather than a guess.
+// Scene lookup by name or path: built-in scenes by name, glTF files by path, other model
+// formats through assimp; anything else gets a clear error rather than a guess.
 #include <cctype>
 #include <filesystem>
 
 #include "gnomon/Error.h"
 #include "gnomon/Scene.h"
+#include "gnomon/SceneFile.h"
+#include "scene/AssimpLoader.h"
 #include "scene/GltfLoader.h"
 
 namespace gnomon {
@@ -23,9 +25,13 @@ Scene loadScene(const std::string& nameOrPath) {
         for (char& c : ext)
             c = char(std::tolower(static_cast<unsigned char>(c)));
         if (ext == ".gltf" || ext == ".glb") return loadGltf(nameOrPath);
-        throw Error(ErrorKind::InvalidInput, "cannot load scene '" + nameOrPath +
-                                                 "': gnomon reads glTF 2.0 (.gltf, .glb); '" + ext +
-                                                 "' files are not supported yet");
+        if (ext == ".json") return loadSceneFile(nameOrPath);
+        if (assimpReads(ext)) return loadWithAssimp(nameOrPath);
+        throw Error(ErrorKind::InvalidInput,
+                    "cannot load scene '" + nameOrPath + "': '" + ext +
+                        "' files are not supported; gnomon reads glTF 2.0 (.gltf, .glb), scene "
+                        "files (.json) and, through assimp, " +
+                        assimpExtensions());
     }
     return builtinScene(nameOrPath);
 }

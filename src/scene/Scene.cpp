@@ -174,6 +174,33 @@ bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t ind
     return scene.lights[index].enabled;
 }
 
+void addGround(Scene& scene) {
+    const Aabb box = worldBounds(scene, meshBounds(scene), 0.0, false);
+    if (box.empty()) return;
+    const float r = std::max(box.radius(), 1e-6f);
+    const glm::vec3 c = box.centre();
+    const float y = box.min.y - 1e-4f * r;  // a hair below: no fighting with bottom faces
+    const float h = 5.0f * r;
+    Mesh m;
+    m.name = "ground";
+    m.positions = {
+        {c.x - h, y, c.z - h}, {c.x - h, y, c.z + h}, {c.x + h, y, c.z + h}, {c.x + h, y, c.z - h}};
+    m.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+    m.indices = {0, 1, 2, 0, 2, 3};
+    scene.meshes.push_back(std::move(m));
+    Material grey;
+    grey.name = "ground";
+    grey.baseColour = glm::vec3(0.6f);
+    grey.specular = 0.0f;
+    scene.materials.push_back(grey);
+    Object o;
+    o.name = "ground";
+    o.mesh = std::uint32_t(scene.meshes.size() - 1);
+    o.material = std::uint32_t(scene.materials.size() - 1);
+    o.castsShadows = false;
+    scene.objects.push_back(o);
+}
+
 void addDefaultSun(Scene& scene) {
     if (!scene.lights.empty()) return;
     Light sun;

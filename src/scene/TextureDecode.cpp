@@ -22,8 +22,8 @@ std::string decodeTexture(const unsigned char* bytes, std::size_t size, Texture&
         return std::string("the image cannot be decoded (") + stbi_failure_reason() + ")";
     }
     if (w <= 0 || h <= 0 || w > kMaxTextureSide || h > kMaxTextureSide) {
-        return "the image is " + std::to_string(w) + "x" + std::to_string(h) +
-               ", outside 1.." + std::to_string(kMaxTextureSide) + " per side";
+        return "the image is " + std::to_string(w) + "x" + std::to_string(h) + ", outside 1.." +
+               std::to_string(kMaxTextureSide) + " per side";
     }
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
         stbi_load_from_memory(bytes, int(size), &w, &h, &n, 4), stbi_image_free);
@@ -41,9 +41,9 @@ Texture loadTextureFile(const std::string& path) {
     const std::streamoff length = in.tellg();
     in.seekg(0);
     if (length < 0 || std::size_t(length) > kMaxEncodedImageBytes) {
-        throw Error(ErrorKind::InvalidInput,
-                    "image '" + path + "' is larger than the " +
-                        std::to_string(kMaxEncodedImageBytes >> 20) + " MiB allowed");
+        throw Error(ErrorKind::InvalidInput, "image '" + path + "' is larger than the " +
+                                                 std::to_string(kMaxEncodedImageBytes >> 20) +
+                                                 " MiB allowed");
     }
     std::vector<unsigned char> bytes(static_cast<std::size_t>(length));
     in.read(reinterpret_cast<char*>(bytes.data()), length);

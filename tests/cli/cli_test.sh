@@ -77,9 +77,36 @@ gltf)
     run render --scene "$corpus/index_out_of_range.gltf" --out "$work/b.png"
     expect 2 "index_out_of_range.gltf: accessors[1] holds index 7"
     [[ -e "$work/b.png" ]] && fail "an image was written for a broken scene"
-    printf 'v 0 0 0\n' >"$work/model.obj"
-    run render --scene "$work/model.obj" --out "$work/o.png"
-    expect 2 "'.obj' files are not supported yet"
+    printf 'not a model\n' >"$work/model.xyzzy"
+    run render --scene "$work/model.xyzzy" --out "$work/o.png"
+    expect 2 "'.xyzzy' files are not supported; gnomon reads glTF 2.0"
+    ;;
+assimp)
+    models=$(dirname "$0")/../data/models
+    run render --scene "$models/two_parts.obj" --size 64x64 --out "$work/o.png"
+    skip_without_gl
+    expect 0 "warning: no lights: a default sun was added"
+    [[ -s "$work/o.png" ]] || fail "no o.png"
+    run render --scene "$models/textured.obj" --size 64x64 --out "$work/t.png"
+    expect 0 "no camera"
+    [[ -s "$work/t.png" ]] || fail "no t.png"
+    run render --scene "$models/broken.dae" --out "$work/b.png"
+    expect 2 "broken.dae: assimp cannot read it"
+    [[ -e "$work/b.png" ]] && fail "an image was written for a broken model"
+    ;;
+scene_file)
+    examples=$(dirname "$0")/../../examples/scenes
+    run --verbose render --scene "$examples/tutorial-room.json" --size 64x64 --out "$work/room.png"
+    skip_without_gl
+    expect 0 "loaded 'tutorial-room'"
+    expect 0 "7 objects, 1 lights"
+    [[ -s "$work/room.png" ]] || fail "no room.png"
+    grep -q "warning" "$work/stderr" && fail "warnings for an example: $(cat "$work/stderr")"
+    printf '{"gnomon-scene": 1, "include": [{"scene": "tutorial-room"}], "options": {"filtre": "pcf"}}' \
+        >"$work/typo.json"
+    run render --scene "$work/typo.json" --out "$work/typo.png"
+    expect 2 "typo.json: options: unknown key \"filtre\""
+    [[ -e "$work/typo.png" ]] && fail "an image was written for a broken scene file"
     ;;
 missing_file)
     run render --scene "$work/nothing.gltf" --out "$work/a.png"

@@ -3,6 +3,7 @@
 // --blend-shadows, and the ray-traced reference agreeing with all of it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "GlTest.h"
@@ -201,6 +202,28 @@ TEST(Materials, ReferenceAgreesWithMaskedAndDitheredShadows) {
     const ScoreResult b = score(sharedRenderer(), blend, o, so);
     std::printf("dithered plate at alpha 0.3: mean |error| %.4f\n", b.overall.meanAbsError);
     EXPECT_LT(b.overall.meanAbsError, 0.08);
+}
+
+TEST(Materials, SrgbOutputEncodesTheLinearColours) {
+    const Scene s = texturedPlate(AlphaMode::Mask);
+    RenderOptions o = s.options;
+    const Image linear = sharedRenderer().render(s, o);
+    o.shading.output = OutputEncoding::Srgb;
+    const Image srgb = sharedRenderer().render(s, o);
+    auto encode = [](double c) {
+        return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+    };
+    int checked = 0;
+    for (float x : {-4.5f, 1.0f, 3.5f}) {
+        const std::uint8_t* l = linear.at(column(x), kMiddleRow);
+        const std::uint8_t* e = srgb.at(column(x), kMiddleRow);
+        for (int c = 0; c < 3; ++c, ++checked) {
+            EXPECT_NEAR(double(e[c]), 255.0 * encode(l[c] / 255.0), 3.0)
+                << "x " << x << ", channel " << c;
+        }
+    }
+    EXPECT_EQ(checked, 9);
+    EXPECT_GT(srgb.at(column(1.0f), kMiddleRow)[0], linear.at(column(1.0f), kMiddleRow)[0]);
 }
 
 }  // namespace
