@@ -1,5 +1,5 @@
 // Per-object data shared by every pass: one std430 record per scene object, uploaded when
-// the scene or its animation time changes, indexed by the per-draw uniform uObject.
+// the scene or its animation time changes, indexed by uObject.
 struct ObjectData {
     mat4 worldFromModel;
     mat4 worldFromModelNormal;  // inverse transpose, upper 3x3 used
@@ -14,7 +14,9 @@ layout(std430, binding = 0) readonly buffer Objects {
     ObjectData objects[];
 };
 
-layout(location = 0) uniform uint uObject;
+// The object drawn: an instanced attribute, its entry chosen by the draw's base instance
+// (one multi-draw covers many objects).
+layout(location = 4) in uint uObject;
 
 vec2 materialUv(ObjectData o, vec2 uv) {
     vec3 h = vec3(uv, 1.0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <string_view>
+#include <tuple>
 
 #include "scene/SceneUtil.h"
 
@@ -80,7 +81,8 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         glVertexArrayAttribBinding(mVao.id(), a, 0);
     }
     mMeshBounds = meshBounds(scene);
-    mObjectData.clear();  // forces the object upload below
+    mObjectData.clear();        // forces the object upload below
+    mObjectIds = gl::Buffer();  // and the object indices' binding to the new vertex array
     mHaveGeometry = true;
 }
 
@@ -163,9 +165,43 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
     }
     // Opaque first, then masked, then blended; by texture within each (binds once each).
     std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {
-        return std::make_pair(int(a.alphaMode), a.texture) <
-               std::make_pair(int(b.alphaMode), b.texture);
+        return std::make_tuple(int(a.alphaMode), a.texture, a.doubleSided) <
+               std::make_tuple(int(b.alphaMode), b.texture, b.doubleSided);
     });
+    // Object indices, read as an instanced attribute: instance i of a draw with base
+    // instance b reads entry b + i / divisor.
+    if (!mObjectIds || mObjectIds.size() != std::max<std::size_t>(n, 1) * sizeof(GLuint)) {
+        std::vector<GLuint> ids(std::max<std::size_t>(n, 1));
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            ids[i] = GLuint(i);
+        mObjectIds = gl::Buffer("object indices", ids.size() * sizeof(GLuint), ids.data(), 0);
+        glVertexArrayVertexBuffer(mVao.id(), 1, mObjectIds.id(), 0, sizeof(GLuint));
+        glEnableVertexArrayAttrib(mVao.id(), 4);
+        glVertexArrayAttribIFormat(mVao.id(), 4, 1, GL_UNSIGNED_INT, 0);
+        glVertexArrayAttribBinding(mVao.id(), 4, 1);
+        glVertexArrayBindingDivisor(mVao.id(), 1, 1);
+        mDivisor = 1;
+    }
+    // Draw commands in item order, for 1 and for 6 instances; uploaded when they differ.
+    mCommandScratch.resize(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const DrawItem& item = mItems[i];
+        const DrawCommand c{GLuint(item.indexCount), 1,
+                            GLuint(item.firstIndexByte / sizeof(std::uint32_t)), item.baseVertex,
+                            item.object};
+        mCommandScratch[i] = c;
+        mCommandScratch[n + i] = c;
+        mCommandScratch[n + i].instanceCount = 6;
+    }
+    if (!mCommands || mCommandScratch.size() != mCommandData.size() ||
+        std::memcmp(mCommandScratch.data(), mCommandData.data(),
+                    mCommandData.size() * sizeof(DrawCommand)) != 0) {
+        mCommandData.swap(mCommandScratch);
+        mCommands =
+            gl::Buffer("draw commands", std::max<std::size_t>(n, 1) * 2 * sizeof(DrawCommand),
+                       n ? mCommandData.data() : nullptr, 0);
+        changed = true;
+    }
     if (dataChanged) {
         if (mObjects.size() != n * sizeof(GpuObject) || !mObjects) {
             mObjects = gl::Buffer("scene objects", n * sizeof(GpuObject), mObjectData.data(),
@@ -182,14 +218,31 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
 void GpuScene::bind() const {
     glBindVertexArray(mVao.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mObjects.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
+}
+
+void GpuScene::setInstanceDivisor(GLsizei instances) const {
+    if (instances == mDivisor) return;
+    glVertexArrayBindingDivisor(mVao.id(), 1, GLuint(instances));  // every copy: one object
+    mDivisor = instances;
 }
 
 void GpuScene::draw(const DrawItem& item, GLsizei instances) const {
     if (item.indexCount == 0) return;
-    glUniform1ui(0, item.object);
-    glDrawElementsInstancedBaseVertex(GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT,
-                                      reinterpret_cast<const void*>(item.firstIndexByte), instances,
-                                      item.baseVertex);
+    setInstanceDivisor(instances);
+    glDrawElementsInstancedBaseVertexBaseInstance(
+        GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(item.firstIndexByte), instances, item.baseVertex,
+        item.object);
+}
+
+void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances) const {
+    if (count == 0) return;
+    setInstanceDivisor(instances);
+    const std::size_t command = (instances == 6 ? mItems.size() : 0) + first;
+    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(command * sizeof(DrawCommand)),
+                                GLsizei(count), 0);
 }
 
 }  // namespace gnomon::render

@@ -1,8 +1,10 @@
 // The GPU copy of a Scene: all meshes in one vertex and one index buffer (uploaded once per
 // distinct geometry), the textures (uploaded once per distinct set), and one std430 record
 // per object (re-uploaded only when transforms or materials change, e.g. animation). Items
-// are ordered opaque, then masked, then blended, and by texture within each, so passes bind
-// each texture once. Passes draw through draw().
+// are ordered opaque, then masked, then blended, and by texture and sidedness within each,
+// so passes bind each texture once and draw each run of like items with one
+// glMultiDrawElementsIndirect from a static command buffer (one command per item; the
+// object index reaches the shaders as an instanced attribute, through baseInstance).
 #pragma once
 
 #include <cstdint>
@@ -54,10 +56,12 @@ class GpuScene {
 public:
     // Makes the GPU copy match `scene` at `seconds`; returns true when anything changed.
     bool sync(const Scene& scene, double seconds);
-    // Binds the vertex array and the object buffer (binding 0).
+    // Binds the vertex array, the object buffer (binding 0) and the draw commands.
     void bind() const;
-    // Issues one draw (`instances` copies); uniform location 0 receives the object index.
+    // Issues one draw (`instances` copies: 1, or 6 for the cube faces of a point light).
     void draw(const DrawItem& item, GLsizei instances = 1) const;
+    // Draws items [first, first + count) in one call (each 1 or 6 times).
+    void drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances = 1) const;
     const std::vector<DrawItem>& items() const { return mItems; }
     // The item's base colour texture, or a 1x1 white one (alpha 1) when it has none.
     GLuint textureOf(const DrawItem& item) const {
@@ -80,7 +84,19 @@ private:
     std::vector<gl::Texture> mTextures;  // Scene::textures order
     gl::Texture mWhite;
     bool mHaveGeometry = false;
+    void setInstanceDivisor(GLsizei instances) const;
+
+    // glMultiDrawElementsIndirect's record.
+    struct DrawCommand {
+        GLuint count, instanceCount, firstIndex;
+        GLint baseVertex;
+        GLuint baseInstance;  // the object index, read through the instanced attribute
+    };
     gl::Buffer mVertices, mIndices, mObjects;
+    gl::Buffer mObjectIds;  // 0..n-1: attribute 4, one per instance
+    gl::Buffer mCommands;   // one command per item, once drawing 1 instance, then 6
+    std::vector<DrawCommand> mCommandData, mCommandScratch;
+    mutable GLsizei mDivisor = 1;
     gl::VertexArray mVao;
     std::vector<GpuObject> mObjectData;  // reused every frame, no allocation once sized
     std::vector<DrawItem> mItems;

@@ -183,7 +183,8 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glDisable(GL_CULL_FACE);
         use(program(options, in, visibilityPass, false));
         GLuint texture = ~0u;
-        auto drawItem = [&](const DrawItem& item) {
+        // Sets the state `item` needs.
+        auto setState = [&](const DrawItem& item) {
             if (item.materialPath != material) {
                 material = item.materialPath;
                 use(program(options, in, visibilityPass, material));
@@ -196,27 +197,41 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
                 culling = !item.doubleSided;
                 culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
             }
-            scene.draw(item);
         };
+        // Runs of items needing the same state: one multi-draw each.
         mBlended.clear();
         const std::vector<DrawItem>& items = scene.items();
+        std::uint32_t runStart = 0, runLength = 0;
         for (std::uint32_t i = 0; i < items.size(); ++i) {
             if (items[i].alphaMode != AlphaMode::Blend) {
-                drawItem(items[i]);
+                const DrawItem& item = items[i];
+                const bool differs = item.materialPath != material ||
+                                     (material && scene.textureOf(item) != texture) ||
+                                     item.doubleSided == culling;
+                if (differs) {  // the run so far is drawn in the state it was set up for
+                    scene.drawRange(runStart, runLength);
+                    runStart = i;
+                    runLength = 0;
+                    setState(item);
+                }
+                ++runLength;
             } else if (!visibilityPass) {  // scored: the surfaces behind (as the reference)
                 const glm::vec3 c = items[i].bounds.centre();
                 mBlended.emplace_back(
                     -glm::length(glm::vec3(in.viewFromWorld * glm::vec4(c, 1.0f))), i);
             }
         }
+        scene.drawRange(runStart, runLength);
         if (!mBlended.empty()) {
             std::sort(mBlended.begin(), mBlended.end());
             glEnable(GL_BLEND);
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
                                 GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
-            for (const auto& [distance, i] : mBlended)
-                drawItem(items[i]);
+            for (const auto& [distance, i] : mBlended) {
+                setState(items[i]);
+                scene.draw(items[i]);
+            }
             glDepthMask(GL_TRUE);
             glDisable(GL_BLEND);
         }

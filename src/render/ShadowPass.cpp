@@ -172,10 +172,21 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
     GLuint texture = ~0u;
     glUseProgram(program(variant, false).id());
     setUniforms();
+    // Runs of consecutive items in the same state: one multi-draw each.
+    std::uint32_t runStart = 0, runLength = 0;
     for (std::uint32_t index : mVisible) {
         const DrawItem& item = scene.items()[index];
-        if (alphaTestedCaster(item, options) != alpha) {
-            alpha = !alpha;
+        const bool wantAlpha = alphaTestedCaster(item, options);
+        const bool wantCull = options.cull != CullMode::None && !item.doubleSided;
+        const bool differs = wantAlpha != alpha || (alpha && scene.textureOf(item) != texture) ||
+                             wantCull != culling;
+        if (differs || index != runStart + runLength) {
+            scene.drawRange(runStart, runLength, instances);
+            runStart = index;
+            runLength = 0;
+        }
+        if (wantAlpha != alpha) {
+            alpha = wantAlpha;
             glUseProgram(program(variant, alpha).id());
             setUniforms();
         }
@@ -183,13 +194,13 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
             texture = scene.textureOf(item);
             glBindTextureUnit(4, texture);
         }
-        const bool wantCull = options.cull != CullMode::None && !item.doubleSided;
         if (wantCull != culling) {
             wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
             culling = wantCull;
         }
-        scene.draw(item, instances);
+        ++runLength;
     }
+    scene.drawRange(runStart, runLength, instances);
 }
 
 void ShadowPass::invalidate() {
@@ -222,9 +233,18 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
     glUseProgram(program(kPlain, false).id());
     glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
     scene.bind();
-    for (const DrawItem& item : scene.items()) {
-        if (item.casts && item.indexCount > 0) scene.draw(item, 1);
+    std::uint32_t runStart = 0, runLength = 0;
+    const std::vector<DrawItem>& items = scene.items();
+    for (std::uint32_t i = 0; i < items.size(); ++i) {
+        if (!items[i].casts) continue;
+        if (i != runStart + runLength) {
+            scene.drawRange(runStart, runLength);
+            runStart = i;
+            runLength = 0;
+        }
+        ++runLength;
     }
+    scene.drawRange(runStart, runLength);
     glFinish();
     glDisable(GL_CULL_FACE);
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
