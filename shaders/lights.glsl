@@ -17,7 +17,8 @@ const float kFrameCascaded = 3.0;  // wsPosition: x first cascade record, y coun
 struct LightData {
     mat4 textureFromWorld;  // world -> light clip -> [0,1] map coordinates and depth
     vec4 vsPosition;        // xyz, w = type
-    vec4 vsDirection;       // xyz towards where the light goes, w = on (0/1)
+    vec4 vsDirection;       // xyz towards where the light goes, w = range (point, spot; -1:
+                            // none; 0 never reaches the shader: lights that are off)
     vec4 colour;            // rgb = colour x intensity, w = shadow layer (-1: no shadow)
     vec4 attenuation;       // c0, c1, c2, cos(outer cone); cascade records: x = far split
     vec4 shadow;            // x cos(inner cone), y texel world size, z frame kind, w uv scale

@@ -69,6 +69,10 @@ void lightAt(LightData light, out vec3 vsToLight, out float falloff) {
         vsToLight = d / dist;
         vec3 c = light.attenuation.xyz;
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
+        // glTF's range window (1 - (d/range)^4)^2, 1 without a range (w < 0).
+        float r = light.vsDirection.w > 0.0 ? dist / light.vsDirection.w : 0.0;
+        float window = clamp(1.0 - r * r * r * r, 0.0, 1.0);
+        falloff *= window * window;
         if (type == kSpot) {
             float cosAngle = dot(-vsToLight, normalize(light.vsDirection.xyz));
             falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);

@@ -142,6 +142,9 @@ struct Light {
     Attenuation attenuation;         // ignored for directional lights
     float innerConeDegrees = 20.0f;  // spot: full intensity inside (half-angle)
     float outerConeDegrees = 30.0f;  // spot: zero outside (half-angle)
+    // Point and spot: beyond this distance no light (glTF's range, with its smooth window
+    // (1 - (d/range)^4)^2 on top of the attenuation); 0 = unlimited.
+    float range = 0.0f;
     bool castsShadows = true;
     int shadowMapSize = 1024;  // texels per side, 64..8192
     ShadowCamera shadowCamera;

@@ -110,8 +110,13 @@ struct Renderer::Impl {
                                             : glm::vec3(0, -1, 0);
             g.vsPosition = glm::vec4(glm::vec3(viewFromWorld * glm::vec4(light.position, 1.0f)),
                                      float(lightTypeCode(light.type)));
-            g.vsDirection = glm::vec4(glm::mat3(viewFromWorld) * direction,
-                                      lightIsOn(s, options, i) ? 1.0f : 0.0f);
+            // w: 0 off; on: the range (point, spot), or -1 for none.
+            const bool ranged = light.range > 0.0f &&
+                                (light.type == LightType::Point || light.type == LightType::Spot);
+            g.vsDirection =
+                glm::vec4(glm::mat3(viewFromWorld) * direction, !lightIsOn(s, options, i) ? 0.0f
+                                                                : ranged ? light.range
+                                                                         : -1.0f);
             g.colour = glm::vec4(light.colour * light.intensity, -1.0f);
             g.attenuation = {light.attenuation.constant, light.attenuation.linear,
                              light.attenuation.quadratic,
@@ -121,7 +126,7 @@ struct Renderer::Impl {
             const int mapSize =
                 options.shadow.mapSize > 0 ? options.shadow.mapSize : light.shadowMapSize;
             const bool shadowing =
-                options.shadow.enabled && light.castsShadows && g.vsDirection.w > 0.5f;
+                options.shadow.enabled && light.castsShadows && g.vsDirection.w != 0.0f;
             g.shadowBias.x = options.shadow.biasConstant;
             g.shadowBias.y = options.shadow.normalOffset;
             if (shadowing && light.type == LightType::Directional &&
@@ -160,7 +165,7 @@ struct Renderer::Impl {
         // (Map layers are assigned later, by the shadow pass: colour.w says nothing yet.)
         auto kindOf = [&](std::size_t i) {
             const render::GpuLight& g = lights[i];
-            if (g.vsDirection.w < 0.5f) return -1;
+            if (g.vsDirection.w == 0.0f) return -1;
             if (!hasMap[i]) return 0;
             return g.shadow.z == 2.0f ? 2 : g.shadow.z == 3.0f ? 3 : 1;
         };

@@ -756,7 +756,8 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
                                      "': ignored");
             continue;
         }
-        if (src.range > 0.0) scene.warnings.push_back("light '" + src.name + "': range is ignored");
+        if (l.type != LightType::Directional && src.range > 0.0 && std::isfinite(src.range))
+            l.range = float(src.range);
         scene.lights.push_back(l);
     }
     // gnomon has no exposure control: photometric intensities (tens of candela at lamp

@@ -108,6 +108,9 @@ std::vector<std::string> Scene::validate() const {
               a.constant + a.linear + a.quadratic > 0.0f)) {
             add(where + " attenuation needs c0, c1, c2 >= 0 and not all zero");
         }
+        if (!(light.range >= 0.0f) || !std::isfinite(light.range)) {
+            add(where + " range must be >= 0 (0: unlimited)");
+        }
         if (light.type == LightType::Spot &&
             !(light.innerConeDegrees >= 0.0f && light.innerConeDegrees <= light.outerConeDegrees &&
               light.outerConeDegrees > 0.0f && light.outerConeDegrees < 90.0f)) {

@@ -627,7 +627,7 @@ Light readLight(const Reader& r, const Json& j, const std::string& path, std::si
     const Fields f(
         r, j, path,
         {"name", "type", "enabled", "position", "direction", "colour", "intensity", "attenuation",
-         "inner-cone", "outer-cone", "casts-shadows", "shadow-map-size", "shadow-camera"});
+         "inner-cone", "outer-cone", "range", "casts-shadows", "shadow-map-size", "shadow-camera"});
     Light l;
     l.name = "light " + std::to_string(index);
     f.get("name", l.name);
@@ -644,6 +644,7 @@ Light readLight(const Reader& r, const Json& j, const std::string& path, std::si
     }
     f.get("inner-cone", l.innerConeDegrees);
     f.get("outer-cone", l.outerConeDegrees);
+    f.get("range", l.range, 0.0f, std::numeric_limits<float>::max());
     f.get("casts-shadows", l.castsShadows);
     f.get("shadow-map-size", l.shadowMapSize, 64, 8192);
     if (const Json* sc = f.find("shadow-camera")) {
@@ -1124,6 +1125,7 @@ OJson lightJson(const Light& l) {
     j["attenuation"] = OJson::array({number(l.attenuation.constant), number(l.attenuation.linear),
                                      number(l.attenuation.quadratic)});
     j["inner-cone"] = number(l.innerConeDegrees);
+    j["range"] = number(l.range);
     j["outer-cone"] = number(l.outerConeDegrees);
     j["casts-shadows"] = l.castsShadows;
     j["shadow-map-size"] = l.shadowMapSize;

@@ -367,6 +367,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                         const glm::vec3 d = light.position - origin;
                         distance = glm::length(d);
                         if (!(distance > 0.0f)) continue;
+                        if (light.range > 0.0f && distance >= light.range) continue;  // unlit
                         toLight = d / distance;
                         if (light.type == LightType::Spot &&
                             !(glm::dot(-toLight, ld) >
