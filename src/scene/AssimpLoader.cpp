@@ -399,17 +399,6 @@ Scene loadWithAssimp(const std::string& path) {
         m.name = "default";
         scene.materials.push_back(m);
     }
-    // A textured material's copy without its texture, for meshes with no coordinates.
-    std::map<std::uint32_t, std::uint32_t> untexturedOf;
-    auto untextured = [&](std::uint32_t material) {
-        if (auto it = untexturedOf.find(material); it != untexturedOf.end()) return it->second;
-        Material copy = scene.materials[material];
-        copy.baseColourTexture = -1;
-        copy.name += " (untextured)";
-        scene.materials.push_back(copy);
-        return untexturedOf[material] = std::uint32_t(scene.materials.size() - 1);
-    };
-
     // One gnomon mesh per assimp mesh (and per winding, for mirrored nodes).
     std::map<std::pair<unsigned, bool>, std::int64_t> meshOf;
     std::set<unsigned> reported;  // meshes already warned about and counted
@@ -512,10 +501,6 @@ Scene loadWithAssimp(const std::string& path) {
                 o.name = name.empty() ? "node" : name;
                 o.mesh = std::uint32_t(gm);
                 o.material = ai->mMeshes[mi]->mMaterialIndex;
-                if (scene.materials[o.material].baseColourTexture >= 0 &&
-                    scene.meshes[o.mesh].uvs.empty()) {
-                    o.material = untextured(o.material);  // warned with the mesh
-                }
                 o.worldFromModel = world;
                 scene.objects.push_back(o);
             }
@@ -524,6 +509,7 @@ Scene loadWithAssimp(const std::string& path) {
             }
         };
     walk(*ai->mRootNode, glm::mat4(1.0f), 0);
+    untextureObjectsWithoutUvs(scene);  // each was warned about with its mesh
     if (zeroArea > 0)
         scene.warnings.push_back(std::to_string(zeroArea) + " zero-area triangles skipped");
     if (scene.objects.empty()) fail("the scene has no triangles to draw");

@@ -458,17 +458,6 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
         scene.materials.push_back(m);
     }
 
-    // A textured material's copy without its texture, for primitives with no coordinates.
-    std::map<std::uint32_t, std::uint32_t> untexturedOf;
-    auto untextured = [&](std::uint32_t material) {
-        if (auto it = untexturedOf.find(material); it != untexturedOf.end()) return it->second;
-        Material copy = scene.materials[material];
-        copy.baseColourTexture = -1;
-        copy.name += " (untextured)";
-        scene.materials.push_back(copy);
-        return untexturedOf[material] = std::uint32_t(scene.materials.size() - 1);
-    };
-
     // One gnomon mesh per primitive (and per winding, for mirrored nodes).
     std::map<std::tuple<int, int, bool>, std::uint32_t> meshOf;
     long zeroArea = 0;
@@ -684,10 +673,6 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
                     o.name = node.name.empty() ? "nodes[" + std::to_string(n) + "]" : node.name;
                     o.mesh = std::uint32_t(gm);
                     o.material = mat >= 0 ? std::uint32_t(mat) : defaultMaterial;
-                    if (scene.materials[o.material].baseColourTexture >= 0 &&
-                        scene.meshes[o.mesh].uvs.empty()) {
-                        o.material = untextured(o.material);  // warned: no TEXCOORD
-                    }
                     o.worldFromModel = m;
                     scene.objects.push_back(o);
                 }
@@ -716,6 +701,7 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
         for (std::size_t n = 0; n < model.nodes.size(); ++n)
             if (!child[n]) walk(int(n), glm::mat4(1.0f));
     }
+    untextureObjectsWithoutUvs(scene);  // each was warned about: no TEXCOORD
     if (zeroArea > 0)
         scene.warnings.push_back(std::to_string(zeroArea) + " zero-area triangles skipped");
     if (scene.objects.empty()) read.fail("the scene has no triangles to draw");

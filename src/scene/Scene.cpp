@@ -2,6 +2,7 @@
 // bounds for shadow fitting.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -175,6 +176,23 @@ RenderOptions presetOptions(const Scene& scene, Preset preset) {
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
     if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
     return scene.lights[index].enabled;
+}
+
+void untextureObjectsWithoutUvs(Scene& scene) {
+    std::map<std::uint32_t, std::uint32_t> copyOf;
+    for (Object& o : scene.objects) {
+        if (scene.materials[o.material].baseColourTexture < 0 || !scene.meshes[o.mesh].uvs.empty())
+            continue;
+        auto [it, added] = copyOf.try_emplace(o.material, 0u);
+        if (added) {
+            Material copy = scene.materials[o.material];
+            copy.baseColourTexture = -1;
+            copy.name += " (untextured)";
+            scene.materials.push_back(copy);
+            it->second = std::uint32_t(scene.materials.size() - 1);
+        }
+        o.material = it->second;
+    }
 }
 
 void addGround(Scene& scene) {

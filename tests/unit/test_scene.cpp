@@ -421,6 +421,25 @@ TEST(Presets, SceneWithoutTextbookGetsTheConstantToleranceMethod) {
 namespace gnomon {
 namespace {
 
+TEST(Scene, ObjectsWithoutUvsGetOneUntexturedCopyOfTheirMaterial) {
+    Scene s = builtinScene("course-cubes");
+    Texture t;
+    t.width = t.height = 1;
+    t.rgba = {1, 2, 3, 4};
+    s.textures.push_back(t);
+    s.materials[s.objects[0].material].baseColourTexture = 0;
+    const std::uint32_t textured = s.objects[0].material;
+    const std::size_t materials = s.materials.size();
+    EXPECT_FALSE(s.validate().empty()) << "textured material on a mesh without uvs";
+    untextureObjectsWithoutUvs(s);
+    EXPECT_TRUE(s.validate().empty());
+    ASSERT_EQ(s.materials.size(), materials + 1) << "one copy, shared by every such object";
+    for (const Object& o : s.objects) {
+        EXPECT_NE(o.material, textured);
+        EXPECT_EQ(s.materials[o.material].baseColourTexture, -1);
+    }
+}
+
 TEST(Scene, AddGroundPutsAReceiverUnderTheScene) {
     Scene s = builtinScene("course-cubes");
     const Aabb before = worldBounds(s, meshBounds(s), 0.0, false);
