@@ -17,8 +17,11 @@ float texelHash(uvec2 p) {
     return float(h >> 8) * (1.0 / 16777216.0);
 }
 
+// Masked: cut below the cutoff, as the main pass and the reference do. Dithered: kept where
+// alpha > a hash in [0, 1), so alpha 0 never casts and alpha 1 always does.
 void alphaTest() {
     float alpha = vAlpha.alpha * texture(uBaseColourTexture, vAlpha.uv).a;
-    float threshold = vAlpha.cutoff >= 0.0 ? vAlpha.cutoff : texelHash(uvec2(gl_FragCoord.xy));
-    if (alpha < threshold || alpha <= 0.0) discard;
+    bool cut = vAlpha.cutoff >= 0.0 ? alpha < vAlpha.cutoff
+                                    : alpha <= texelHash(uvec2(gl_FragCoord.xy));
+    if (cut) discard;
 }

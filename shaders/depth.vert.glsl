@@ -7,20 +7,13 @@ layout(location = 0) in vec3 msPosition;
 layout(location = 1) uniform mat4 uClipFromWorld;  // the light camera
 
 #ifdef ALPHA_TEST
-layout(location = 3) in vec2 msUv;
-out AlphaOut {
-    vec2 uv;
-    flat float alpha;
-    flat float cutoff;
-} vAlpha;
+#include "alpha_test_vertex.glsl"
 #endif
 
 void main() {
     ObjectData o = objects[uObject];
     gl_Position = uClipFromWorld * (o.worldFromModel * vec4(msPosition, 1.0));
 #ifdef ALPHA_TEST
-    vAlpha.uv = materialUv(o, msUv);
-    vAlpha.alpha = o.baseColour.a;
-    vAlpha.cutoff = o.flags.y == 1.0 ? o.flags.z : -1.0;
+    passAlphaRule(o);
 #endif
 }

@@ -10,21 +10,14 @@ layout(location = 1) uniform mat4 uFaceClipFromWorld[6];
 layout(location = 7) uniform int uBaseLayer;
 
 #ifdef ALPHA_TEST
-layout(location = 3) in vec2 msUv;
-out AlphaOut {
-    vec2 uv;
-    flat float alpha;
-    flat float cutoff;
-} vAlpha;
+#include "alpha_test_vertex.glsl"
 #endif
 
 void main() {
     ObjectData o = objects[uObject];
     vec4 wsPosition = o.worldFromModel * vec4(msPosition, 1.0);
 #ifdef ALPHA_TEST
-    vAlpha.uv = materialUv(o, msUv);
-    vAlpha.alpha = o.baseColour.a;
-    vAlpha.cutoff = o.flags.y == 1.0 ? o.flags.z : -1.0;
+    passAlphaRule(o);
 #endif
     gl_Position = uFaceClipFromWorld[gl_InstanceID] * wsPosition;
     gl_Layer = uBaseLayer + gl_InstanceID;
