@@ -970,6 +970,20 @@ Scene parseText(const std::string& text, const std::string& path, LoadState& sta
         }
     }
 
+    // The index of a named material or mesh; an unknown name is an error listing the known.
+    auto named = [&](const Json& value, const std::string& path, const char* kind, const char* list,
+                     const std::map<std::string, std::uint32_t>& byName,
+                     const std::vector<std::string>& names) {
+        const std::string name = r.string(value, path);
+        const auto found = byName.find(name);
+        if (found == byName.end()) {
+            r.fail(path,
+                   std::string("no ") + kind + " " + Json(name).dump() + " in " + list +
+                       (names.empty() ? " (there are none)" : " (known: " + joined(names) + ")"));
+        }
+        return found->second;
+    };
+
     if (const Json* oj = root.find("objects")) {
         r.array(*oj, root.at("objects"), 0, kMaxItems);
         for (std::size_t i = 0; i < oj->size(); ++i) {
@@ -986,16 +1000,8 @@ Scene parseText(const std::string& text, const std::string& path, LoadState& sta
             Object o;
             if (const Json* mj = f.find("mesh")) {
                 if (!shape.empty()) r.fail(at, "give \"mesh\" or \"shape\", not both");
-                const std::string name = r.string(*mj, f.at("mesh"));
-                const auto found = meshes.find(name);
-                if (found == meshes.end()) {
-                    r.fail(f.at("mesh"),
-                           "no mesh " + Json(name).dump() + " in meshes" +
-                               (meshNames.empty() ? " (there are none)"
-                                                  : " (known: " + joined(meshNames) + ")"));
-                }
-                o.mesh = found->second;
-                o.name = name;
+                o.mesh = named(*mj, f.at("mesh"), "mesh", "meshes", meshes, meshNames);
+                o.name = r.string(*mj, f.at("mesh"));
             } else if (shape.empty()) {
                 r.fail(at, "needs \"shape\" (" + joined(shapeNames()) +
                                ") or \"mesh\" (a name from meshes)");
@@ -1008,15 +1014,8 @@ Scene parseText(const std::string& text, const std::string& path, LoadState& sta
                 out.meshes.push_back(readShape(f, shape, o.name));
             }
             if (const Json* mj = f.find("material")) {
-                const std::string name = r.string(*mj, f.at("material"));
-                const auto found = materials.find(name);
-                if (found == materials.end()) {
-                    r.fail(f.at("material"),
-                           "no material " + Json(name).dump() + " in materials" +
-                               (materialNames.empty() ? " (there are none)"
-                                                      : " (known: " + joined(materialNames) + ")"));
-                }
-                o.material = found->second;
+                o.material =
+                    named(*mj, f.at("material"), "material", "materials", materials, materialNames);
             } else {
                 if (!defaultMaterial) {
                     defaultMaterial = std::uint32_t(out.materials.size());

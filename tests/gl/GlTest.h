@@ -18,6 +18,21 @@ inline std::string outputDir() {
     return GNOMON_TEST_OUTPUT_DIR;
 }
 
+// An orthographic camera 10 above the origin looking straight down (image up = -z),
+// seeing x and z in [-halfView, halfView]: image column and row map linearly to x and z.
+inline Camera lookingStraightDown(float halfView) {
+    Camera c;
+    c.projection = Projection::Orthographic;
+    c.eye = {0.0f, 10.0f, 0.0f};
+    c.centre = {0.0f, 0.0f, 0.0f};
+    c.up = {0.0f, 0.0f, -1.0f};
+    c.left = c.bottom = -halfView;
+    c.right = c.top = halfView;
+    c.near = 1.0f;
+    c.far = 20.0f;
+    return c;
+}
+
 inline int luminance(const std::uint8_t* p) {
     return int(p[0]) + int(p[1]) + int(p[2]);
 }

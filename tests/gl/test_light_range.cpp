@@ -28,13 +28,7 @@ Scene floorUnderALamp(float range) {
     lamp.position = {0.0f, 1.0f, 0.0f};
     lamp.range = range;
     s.lights.push_back(lamp);
-    s.camera.projection = Projection::Orthographic;
-    s.camera.eye = {0.0f, 10.0f, 0.0f};
-    s.camera.up = {0.0f, 0.0f, -1.0f};
-    s.camera.left = s.camera.bottom = -kHalfView;
-    s.camera.right = s.camera.top = kHalfView;
-    s.camera.near = 1.0f;
-    s.camera.far = 20.0f;
+    s.camera = lookingStraightDown(kHalfView);
     s.ambient = glm::vec3(0.0f);
     s.options.width = s.options.height = kSize;
     return s;

@@ -64,14 +64,7 @@ Scene texturedPlate(AlphaMode mode, float alpha = 1.0f, bool textured = true) {
     sun.direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
     sun.shadowMapSize = 1024;
     s.lights.push_back(sun);
-    s.camera.projection = Projection::Orthographic;
-    s.camera.eye = {0.0f, 10.0f, 0.0f};
-    s.camera.centre = {0.0f, 0.0f, 0.0f};
-    s.camera.up = {0.0f, 0.0f, -1.0f};
-    s.camera.left = s.camera.bottom = -kHalfView;
-    s.camera.right = s.camera.top = kHalfView;
-    s.camera.near = 1.0f;
-    s.camera.far = 20.0f;
+    s.camera = lookingStraightDown(kHalfView);
     s.ambient = glm::vec3(0.05f);
     s.options.width = s.options.height = kSize;
     return s;
@@ -181,6 +174,12 @@ TEST(Materials, BlendedSurfaceIsSeenThrough) {
     const int mixed = lum(image, -1.5f), floor = lum(floorOnly, -1.5f);
     EXPECT_GT(mixed, floor);
     EXPECT_LT(mixed, 3 * 255 - 10);
+    // Exactly the alpha-weighted mix of the plate drawn opaque and the floor alone (8-bit
+    // rounding of three channels aside).
+    Scene opaque = s;
+    opaque.materials[1].alphaMode = AlphaMode::Opaque;
+    const int plate = lum(sharedRenderer().render(opaque, o), -1.5f);
+    EXPECT_NEAR(mixed, 0.5 * plate + 0.5 * floor, 4.0);
 }
 
 TEST(Materials, ReferenceAgreesWithMaskedAndDitheredShadows) {

@@ -35,14 +35,7 @@ Scene platesOverFloor(float sunAngleDegrees) {
     sun.direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
     sun.shadowMapSize = 1024;
     s.lights.push_back(sun);
-    s.camera.projection = Projection::Orthographic;
-    s.camera.eye = {0.0f, 10.0f, 0.0f};
-    s.camera.centre = {0.0f, 0.0f, 0.0f};
-    s.camera.up = {0.0f, 0.0f, -1.0f};
-    s.camera.left = s.camera.bottom = -kHalfView;
-    s.camera.right = s.camera.top = kHalfView;
-    s.camera.near = 1.0f;
-    s.camera.far = 20.0f;
+    s.camera = lookingStraightDown(kHalfView);
     s.ambient = glm::vec3(0.05f);
     s.options.width = s.options.height = kSize;
     s.options.shadow.lightAngle = sunAngleDegrees;
