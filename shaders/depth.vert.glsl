@@ -11,7 +11,7 @@ layout(location = 1) uniform mat4 uClipFromWorld;  // the light camera
 #endif
 
 void main() {
-    ObjectData o = objects[uObject];
+    ObjectData o = objects[aObject];
     gl_Position = uClipFromWorld * (o.worldFromModel * vec4(msPosition, 1.0));
 #ifdef ALPHA_TEST
     passAlphaRule(o);

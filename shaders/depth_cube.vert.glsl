@@ -14,7 +14,7 @@ layout(location = 7) uniform int uBaseLayer;
 #endif
 
 void main() {
-    ObjectData o = objects[uObject];
+    ObjectData o = objects[aObject];
     vec4 wsPosition = o.worldFromModel * vec4(msPosition, 1.0);
 #ifdef ALPHA_TEST
     passAlphaRule(o);

@@ -32,7 +32,7 @@ out VertexOut {
 } vOut;
 
 void main() {
-    ObjectData o = objects[uObject];
+    ObjectData o = objects[aObject];
     vec4 wsPosition = o.worldFromModel * vec4(msPosition, 1.0);
     vec3 wsNormal = normalize(mat3(o.worldFromModelNormal) * msNormal);
     vec4 vsPosition = uViewFromWorld * wsPosition;

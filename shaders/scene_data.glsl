@@ -1,5 +1,5 @@
 // Per-object data shared by every pass: one std430 record per scene object, uploaded when
-// the scene or its animation time changes, indexed by uObject.
+// the scene or its animation time changes, indexed by aObject.
 struct ObjectData {
     mat4 worldFromModel;
     mat4 worldFromModelNormal;  // inverse transpose, upper 3x3 used
@@ -16,7 +16,7 @@ layout(std430, binding = 0) readonly buffer Objects {
 
 // The object drawn: an instanced attribute, its entry chosen by the draw's base instance
 // (one multi-draw covers many objects).
-layout(location = 4) in uint uObject;
+layout(location = 4) in uint aObject;
 
 vec2 materialUv(ObjectData o, vec2 uv) {
     vec3 h = vec3(uv, 1.0);

@@ -127,7 +127,7 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
     for (size_t i = 0; i < n; ++i) {
         const Object& o = scene.objects[i];
         const Material& mat = scene.materials[o.material];
-        GpuObject g;
+        GpaObject g;
         g.worldFromModel = o.worldFromModelAt(seconds);
         g.worldFromModelNormal =
             glm::mat4(glm::transpose(glm::inverse(glm::mat3(g.worldFromModel))));
@@ -148,7 +148,7 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         if (o.castsShadows) mCasterBounds.extend(box);
         const Mesh& mesh = scene.meshes[o.mesh];
         const std::string_view record(reinterpret_cast<const char*>(&mObjectData[i]),
-                                      sizeof(GpuObject));
+                                      sizeof(GpaObject));
         mItems[i] = {
             std::uint32_t(i),
             GLsizei(mesh.indices.size()),
@@ -203,11 +203,11 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         changed = true;
     }
     if (dataChanged) {
-        if (mObjects.size() != n * sizeof(GpuObject) || !mObjects) {
-            mObjects = gl::Buffer("scene objects", n * sizeof(GpuObject), mObjectData.data(),
+        if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
+            mObjects = gl::Buffer("scene objects", n * sizeof(GpaObject), mObjectData.data(),
                                   GL_DYNAMIC_STORAGE_BIT);
         } else {
-            mObjects.update(0, n * sizeof(GpuObject), mObjectData.data());
+            mObjects.update(0, n * sizeof(GpaObject), mObjectData.data());
         }
         changed = true;
     }

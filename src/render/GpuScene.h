@@ -16,7 +16,7 @@
 
 namespace gnomon::render {
 
-struct GpuObject {
+struct GpaObject {
     glm::mat4 worldFromModel;
     glm::mat4 worldFromModelNormal;
     glm::vec4 baseColour;
@@ -98,7 +98,7 @@ private:
     std::vector<DrawCommand> mCommandData, mCommandScratch;
     mutable GLsizei mDivisor = 1;
     gl::VertexArray mVao;
-    std::vector<GpuObject> mObjectData;  // reused every frame, no allocation once sized
+    std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
     std::vector<DrawItem> mItems;
     std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
     std::vector<Aabb> mMeshBounds;
