@@ -1,6 +1,7 @@
 // gnomon: the command-line tool. Subcommands: `scenes` lists the built-in scenes, `render`
 // draws one frame to a PNG (and optionally each light's shadow map), `score` measures its
-// shadows against a ray-traced reference, `bench` times each pass (and sweeps a parameter). Exit
+// shadows against a ray-traced reference, `bench` times each pass (and sweeps a parameter),
+// `view` opens the interactive viewer (a window; docs/viewer.md). Exit
 // codes: 0 success, 1 failure (I/O, OpenGL), 2 bad usage or input, 3 score above --max-error.
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -10,6 +11,7 @@
 #include "BenchCommand.h"
 #include "RenderOptionsCli.h"
 #include "ScoreCommand.h"
+#include "Viewer.h"
 #include "gnomon/gnomon.h"
 
 namespace {
@@ -129,6 +131,9 @@ int main(int argc, char** argv) {
     gnomon::cli::BenchArgs benchArgs;
     CLI::App* benchCmd = gnomon::cli::addBenchCommand(app, benchArgs);
 
+    gnomon::cli::ViewArgs viewArgs;
+    CLI::App* viewCmd = gnomon::cli::addViewCommand(app, viewArgs);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -144,6 +149,7 @@ int main(int argc, char** argv) {
         if (*renderCmd) return runRender(render, verbose);
         if (*scoreCmd) return gnomon::cli::runScore(scoreArgs, verbose);
         if (*benchCmd) return gnomon::cli::runBench(benchArgs, verbose);
+        if (*viewCmd) return gnomon::cli::runView(viewArgs, verbose);
     } catch (const gnomon::Error& e) {
         std::fprintf(stderr, "gnomon: error: %s\n", e.what());
         return e.kind() == gnomon::ErrorKind::InvalidInput ? 2 : 1;

@@ -86,6 +86,8 @@ struct ShadowOptions {
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
     BlendShadows blendShadows = BlendShadows::Dithered;  // shadows of blended materials
+
+    bool operator==(const ShadowOptions&) const = default;
 };
 
 // Diagnostic renderings (DESIGN: debug views are features).
@@ -108,6 +110,8 @@ struct ShadingOptions {
     ShadowedRule shadowedRule = ShadowedRule::AmbientOnly;  // what a shadowed fragment keeps
     float shadowFactor = 0.7f;  // colour multiplier for ShadowedRule::Factor, 0..1
     OutputEncoding output = OutputEncoding::Linear;  // colours as computed, or sRGB-encoded
+
+    bool operator==(const ShadingOptions&) const = default;
 };
 
 struct RenderOptions {
@@ -121,6 +125,7 @@ struct RenderOptions {
 
     // Empty when valid; otherwise one sentence per problem, naming the option.
     std::vector<std::string> validate() const;
+    bool operator==(const RenderOptions&) const = default;
 };
 
 // Names as the CLI spells them, for parsing and printing.

@@ -17,6 +17,9 @@ namespace gnomon {
 struct ContextOptions {
     bool verbose = false;  // print GL vendor/renderer/version to stderr
     bool debug = false;    // KHR_debug messages to stderr (on by default in Debug builds)
+    // Draw in the OpenGL 4.5 core context current on the calling thread (a window's, as in
+    // `gnomon view`) instead of creating a headless one; it must be current at every call.
+    bool currentContext = false;
 };
 
 // One light's shadow map read back from the GPU (SPEC S26: grey, darker = nearer).
@@ -71,6 +74,16 @@ public:
     Image render(const Scene& scene, const RenderOptions& options);
     // The same frame, and each light's shadow visibility per pixel as the main pass computed it.
     Image render(const Scene& scene, const RenderOptions& options, ShadowVisibility& visibility);
+    // The same frame left on the GPU, not read back (the viewer): frameTexture() names it.
+    void draw(const Scene& scene, const RenderOptions& options);
+    // The OpenGL texture (in the renderer's context) holding the last frame: RGBA8 whose
+    // bytes are what render() returns (sRGB-encoded for --output-encoding srgb, not decoded
+    // when sampled), rows bottom-up; 0 before the first frame. Valid until the next frame.
+    unsigned frameTexture() const;
+    // Draws the last frame's shadow maps of `light` (an index into Scene::lights) as
+    // --debug-view shadow-map does, into a texture of width x height kept by the renderer,
+    // and returns it (RGBA8, rows bottom-up); 0 when that light had no map in the last frame.
+    unsigned drawShadowMapPanel(int light, int width, int height);
     // The shadow maps of the last frame, one per shadowed light.
     std::vector<ShadowMapImage> shadowMaps();
     FrameStats lastFrameStats() const;

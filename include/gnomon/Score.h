@@ -4,16 +4,16 @@
 // camera through the pixel's centre, and a shadow ray to each light.
 #pragma once
 
+#include <atomic>
 #include <string>
 #include <vector>
 
 #include "gnomon/Image.h"
 #include "gnomon/Options.h"
+#include "gnomon/Renderer.h"
 #include "gnomon/Scene.h"
 
 namespace gnomon {
-
-class Renderer;
 
 struct ScoreOptions {
     int softSamples = 64;     // rays to each light's surface per pixel for the soft reference
@@ -44,6 +44,25 @@ struct ScoreResult {
     Image render;                // the frame scored
     Image errors;                // the error map (see truth/Metrics.h)
 };
+
+// score() in two halves, so that the ray tracing can run off the GL thread (gnomon view):
+// renderForScore draws the frame and reads back its shadow visibility (the renderer's
+// thread); scoreFrame traces the reference and compares (any thread, no GL).
+struct ScoreFrame {
+    Image render;
+    ShadowVisibility visibility;
+};
+// Progress of scoreFrame, readable from another thread: rows traced of `rows`. Setting
+// `cancel` stops the tracing early; scoreFrame then throws gnomon::Error.
+struct ScoreProgress {
+    std::atomic<int> rowsDone{0};
+    std::atomic<int> rows{0};
+    std::atomic<bool> cancel{false};
+};
+ScoreFrame renderForScore(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+                          const ScoreOptions& scoreOptions = {});
+ScoreResult scoreFrame(ScoreFrame frame, const Scene& scene, const RenderOptions& options,
+                       const ScoreOptions& scoreOptions = {}, ScoreProgress* progress = nullptr);
 
 // Scores `options` on `scene`. Throws gnomon::Error like Renderer::render.
 ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& options,

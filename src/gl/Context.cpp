@@ -175,6 +175,18 @@ void HeadlessContext::makeCurrent() {
     }
 }
 
+bool hasCurrentContext() {
+    if (eglGetCurrentContext() != EGL_NO_CONTEXT) return true;
+    // GLX only if some library (GLFW) already loaded libGL: never load it here.
+    void* libGl = dlopen("libGL.so.1", RTLD_LAZY | RTLD_NOLOAD);
+    if (!libGl) return false;
+    using GetCurrent = void* (*)();
+    auto getCurrent = reinterpret_cast<GetCurrent>(dlsym(libGl, "glXGetCurrentContext"));
+    const bool current = getCurrent && getCurrent() != nullptr;
+    dlclose(libGl);
+    return current;
+}
+
 std::string currentGlInfo() {
     auto str = [](GLenum e) {
         const GLubyte* s = glGetString(e);

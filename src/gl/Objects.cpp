@@ -59,6 +59,16 @@ Texture Texture::layersView(const std::string& label, const Texture& source) {
     return Texture(n, source.format(), source.width(), source.height(), source.layers());
 }
 
+Texture Texture::view2D(const std::string& label, const Texture& source, GLenum viewFormat) {
+    GLuint n = 0;
+    glGenTextures(1, &n);  // a view needs a name that has no texture object yet
+    glTextureView(n, GL_TEXTURE_2D, source.id(), viewFormat, 0, 1, 0, 1);
+    setLabel(GL_TEXTURE, n, label);
+    glTextureParameteri(n, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(n, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return Texture(n, viewFormat, source.width(), source.height(), 1);
+}
+
 Texture Texture::plain2D(const std::string& label, GLenum internalFormat, int width, int height) {
     GLuint n = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &n);

@@ -70,6 +70,9 @@ public:
     // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
     // storage.
     static Texture layersView(const std::string& label, const Texture& source);
+    // A 2D view of `source`'s first level in a compatible format (SRGB8_ALPHA8 as RGBA8:
+    // the stored bytes, undecoded), sharing its storage; NEAREST filtering.
+    static Texture view2D(const std::string& label, const Texture& source, GLenum viewFormat);
     int width() const { return mWidth; }
     int height() const { return mHeight; }
     int layers() const { return mLayers; }  // array layers; cube arrays: 6 per cube

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "gl/Context.h"
 #include "gnomon/Error.h"
@@ -47,7 +48,9 @@ int lightTypeCode(LightType type) {
 }  // namespace
 
 struct Renderer::Impl {
-    gl::HeadlessContext context;  // first: destroyed last, after every GL object below
+    // First: destroyed last, after every GL object below. Empty when drawing in the caller's
+    // context (ContextOptions::currentContext).
+    std::optional<gl::HeadlessContext> context;
     render::GpuScene scene;
     render::ShadowPass shadowPass;
     render::MainPass mainPass;
@@ -55,6 +58,9 @@ struct Renderer::Impl {
     gl::Texture colour, depth;
     gl::Texture visibilityTexture;  // RG32F, a layer per light: gnomon score only
     gl::Framebuffer target;
+    gl::Texture colourView;   // the colour target as RGBA8 (no sRGB decode), for display
+    gl::Texture panelColour;  // drawShadowMapPanel's target
+    gl::Framebuffer panelTarget;
     std::vector<render::ShadowedLight> shadowed;
     std::vector<render::GpuLight> lights;          // scene lights, then cascade records
     std::vector<render::GpuLight> cascadeRecords;  // reused every frame
@@ -67,8 +73,28 @@ struct Renderer::Impl {
     bool passTiming = false;
     std::unique_ptr<render::PassClock> clock;  // made when timing is first switched on
 
-    explicit Impl(const ContextOptions& o) : context(o.debug || kDebugBuild, o.verbose) {
+    explicit Impl(const ContextOptions& o) : context(openContext(o)) {
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF taps may cross cube faces
+    }
+
+    // Runs before any other member is made: they create GL objects.
+    static std::optional<gl::HeadlessContext> openContext(const ContextOptions& o) {
+        if (!o.currentContext) {
+            return std::optional<gl::HeadlessContext>(std::in_place, o.debug || kDebugBuild,
+                                                      o.verbose);
+        }
+        if (!gl::hasCurrentContext()) {
+            throw Error(ErrorKind::Gl,
+                        "Renderer: ContextOptions::currentContext is set but no OpenGL context "
+                        "is current on this thread");
+        }
+        gl::requireGl45();
+        if (o.debug || kDebugBuild) gl::installDebugOutput();
+        return std::nullopt;
+    }
+
+    void makeCurrent() {
+        if (context) context->makeCurrent();
     }
 
     void ensureTarget(int width, int height, OutputEncoding encoding) {
@@ -78,6 +104,7 @@ struct Renderer::Impl {
             return;
         }
         colour = gl::Texture::plain2D("output colour", format, width, height);
+        colourView = gl::Texture::view2D("output colour as stored", colour, GL_RGBA8);
         depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT24, width, height);
         target = gl::Framebuffer("output");
         glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
@@ -290,7 +317,8 @@ struct Renderer::Impl {
         }
     }
 
-    Image render(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
+    // The frame in `target`, not read back.
+    void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
         if (auto problems = options.validate(); !problems.empty()) invalid(problems);
         if (auto problems = s.validate(); !problems.empty()) invalid(problems);
         if (s.lights.size() > std::size_t(mainPass.maxLights())) {
@@ -304,7 +332,7 @@ struct Renderer::Impl {
                                                      ": scene '" + s.name + "' has " +
                                                      std::to_string(s.lights.size()) + " lights");
         }
-        context.makeCurrent();
+        makeCurrent();
         scene.sync(s, options.time);
 
         const float aspect = float(options.width) / float(options.height);
@@ -393,7 +421,31 @@ struct Renderer::Impl {
         }
 
         if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));
+    }
+
+    GLuint drawPanel(int light, int width, int height) {
+        makeCurrent();
+        if (!panelTarget || panelColour.width() != width || panelColour.height() != height) {
+            panelColour = gl::Texture::plain2D("shadow map panel", GL_RGBA8, width, height);
+            glTextureParameteri(panelColour.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(panelColour.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            panelTarget = gl::Framebuffer("shadow map panel");
+            glNamedFramebufferTexture(panelTarget.id(), GL_COLOR_ATTACHMENT0, panelColour.id(), 0);
+            panelTarget.checkComplete();
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, panelTarget.id());
+        glViewport(0, 0, width, height);
+        const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        glClearNamedFramebufferfv(panelTarget.id(), GL_COLOR, 0, black);
+        return debugPass.drawMaps(shadowPass, shadowed, light, width, height) ? panelColour.id()
+                                                                              : 0;
+    }
+
+    Image render(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
+        draw(s, options, visibility);
+        render::PassClock* timer = passTiming ? clock.get() : nullptr;
         if (timer) timer->start();
+        glBindFramebuffer(GL_FRAMEBUFFER, target.id());
         Image image(options.width, options.height, 4);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -422,8 +474,25 @@ Image Renderer::render(const Scene& scene, const RenderOptions& options,
     return mImpl->render(scene, options, &visibility);
 }
 
+void Renderer::draw(const Scene& scene, const RenderOptions& options) {
+    mImpl->draw(scene, options, nullptr);
+}
+
+unsigned Renderer::frameTexture() const {
+    return mImpl->colourView.id();
+}
+
+unsigned Renderer::drawShadowMapPanel(int light, int width, int height) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384) {
+        throw Error(ErrorKind::InvalidInput, "shadow map panel size must be in 1..16384, got " +
+                                                 std::to_string(width) + "x" +
+                                                 std::to_string(height));
+    }
+    return mImpl->drawPanel(light, width, height);
+}
+
 std::vector<ShadowMapImage> Renderer::shadowMaps() {
-    mImpl->context.makeCurrent();
+    mImpl->makeCurrent();
     std::vector<ShadowMapImage> out;
     for (const render::ShadowedLight& sl : mImpl->shadowed) {
         out.push_back({sl.light, sl.cascade, mImpl->shadowPass.readBack(sl)});
@@ -436,7 +505,7 @@ FrameStats Renderer::lastFrameStats() const {
 }
 
 void Renderer::setPassTiming(bool on) {
-    mImpl->context.makeCurrent();
+    mImpl->makeCurrent();
     if (on && !mImpl->clock) mImpl->clock = std::make_unique<render::PassClock>();
     mImpl->passTiming = on;
 }
@@ -450,7 +519,7 @@ double Renderer::measureBareDepthPass(int size) {
         throw Error(ErrorKind::InvalidInput,
                     "bare depth pass size must be in 1..16384, got " + std::to_string(size));
     }
-    mImpl->context.makeCurrent();
+    mImpl->makeCurrent();
     for (const render::ShadowedLight& sl : mImpl->shadowed) {
         if (sl.frame.kind == shadow::FrameKind::Cube) continue;
         return mImpl->shadowPass.bareDepthPass(mImpl->scene, sl.frame.clipFromWorld(), size);
@@ -459,7 +528,7 @@ double Renderer::measureBareDepthPass(int size) {
 }
 
 std::string Renderer::glInfo() const {
-    mImpl->context.makeCurrent();
+    mImpl->makeCurrent();
     return gl::currentGlInfo();
 }
 

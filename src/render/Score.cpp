@@ -12,8 +12,8 @@
 
 namespace gnomon {
 
-ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& options,
-                  const ScoreOptions& scoreOptions) {
+namespace {
+void checkScoreOptions(const RenderOptions& options, const ScoreOptions& scoreOptions) {
     if (!(scoreOptions.softSamples >= 1 && scoreOptions.softSamples <= 4096)) {
         throw Error(ErrorKind::InvalidInput, "soft-samples must be in 1..4096, got " +
                                                  std::to_string(scoreOptions.softSamples));
@@ -26,18 +26,43 @@ ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& o
         throw Error(ErrorKind::InvalidInput,
                     "score needs the scene as rendered: use --debug-view none");
     }
+}
+}  // namespace
+
+ScoreFrame renderForScore(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+                          const ScoreOptions& scoreOptions) {
+    checkScoreOptions(options, scoreOptions);
+    ScoreFrame frame;
+    frame.render = renderer.render(scene, options, frame.visibility);
+    return frame;
+}
+
+ScoreResult scoreFrame(ScoreFrame frame, const Scene& scene, const RenderOptions& options,
+                       const ScoreOptions& scoreOptions, ScoreProgress* progress) {
+    checkScoreOptions(options, scoreOptions);
+    if (frame.visibility.width != options.width || frame.visibility.height != options.height) {
+        throw Error(ErrorKind::InvalidInput,
+                    "score: the frame's visibility is " + std::to_string(frame.visibility.width) +
+                        "x" + std::to_string(frame.visibility.height) + ", the options ask for " +
+                        std::to_string(options.width) + "x" + std::to_string(options.height));
+    }
     ScoreResult result;
-    ShadowVisibility visibility;
-    result.render = renderer.render(scene, options, visibility);
+    result.render = std::move(frame.render);
     result.softReference = options.shadow.filter == ShadowFilter::Pcss;
     truth::ReferenceOptions ro;
     ro.softSamples = result.softReference ? scoreOptions.softSamples : 0;
     ro.threads = scoreOptions.threads;
+    if (progress) {
+        progress->rows = options.height;
+        ro.rowsDone = &progress->rowsDone;
+        ro.cancel = &progress->cancel;
+    }
     const auto start = std::chrono::steady_clock::now();
     const truth::Reference reference = truth::traceReference(scene, options, ro);
     result.traceSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // One aliasing band for the numbers and the map.
+    const ShadowVisibility& visibility = frame.visibility;
     const std::vector<std::uint8_t> band = truth::aliasingBand(
         reference, visibility.texelWorld, scoreOptions.bandTexels, result.softReference);
     const truth::Scores scores =
@@ -47,6 +72,12 @@ ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& o
     result.errors = truth::errorMap(reference, visibility.visibility, band, result.softReference,
                                     result.render);
     return result;
+}
+
+ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+                  const ScoreOptions& scoreOptions) {
+    return scoreFrame(renderForScore(renderer, scene, options, scoreOptions), scene, options,
+                      scoreOptions);
 }
 
 namespace {

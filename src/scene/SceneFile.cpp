@@ -1260,7 +1260,7 @@ Scene loadSceneFile(const std::string& path) {
 }
 
 void saveSceneFile(const std::string& path, const std::string& source, const Scene& scene,
-                   const RenderOptions& options) {
+                   const RenderOptions& options, bool ground) {
     std::string include = source;
     if (looksLikePath(source)) {
         const fs::path folder = fs::absolute(fs::path(path)).parent_path().lexically_normal();
@@ -1279,6 +1279,7 @@ void saveSceneFile(const std::string& path, const std::string& source, const Sce
         doc["lights"].push_back(lightJson(l));
     doc["camera"] = cameraJson(scene.camera);
     doc["ambient"] = vec(scene.ambient);
+    if (ground) doc["ground"] = true;
     doc["options"] = optionsJson(options);
     checkFinite(doc, "", path);
     std::string text;

@@ -419,8 +419,10 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     std::atomic<int> nextRow{0};
     auto worker = [&] {
         for (int y = nextRow++; y < options.height; y = nextRow++) {
+            if (referenceOptions.cancel && referenceOptions.cancel->load()) return;
             for (int x = 0; x < options.width; ++x)
                 tracePixel(x, y);
+            if (referenceOptions.rowsDone) ++*referenceOptions.rowsDone;
         }
     };
     std::vector<std::thread> pool;
@@ -430,6 +432,9 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     for (std::thread& t : pool)
         t.join();
     check(device.get(), "trace rays");
+    if (referenceOptions.cancel && referenceOptions.cancel->load()) {
+        throw Error(ErrorKind::InvalidInput, "ray-traced reference cancelled");
+    }
     return ref;
 }
 

@@ -6,6 +6,7 @@
 // directional ones: the emitters PCSS models). Rows are split over all cores.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,8 @@ namespace gnomon::truth {
 struct ReferenceOptions {
     int softSamples = 0;  // rays per pixel and light for the soft reference; 0: hard only
     int threads = 0;      // 0: every core
+    std::atomic<int>* rowsDone = nullptr;       // if set: counts rows traced (progress)
+    const std::atomic<bool>* cancel = nullptr;  // if set and true: stop early, throw Error
 };
 
 // Per pixel (rows top first, as images), and per pixel x light at [pixel * lights + light].
