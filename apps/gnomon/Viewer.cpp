@@ -244,8 +244,6 @@ public:
         printWarnings(mState.scene);
         mState.options = args.flags.resolve(mState.scene);
         if (args.flags.app->count("--size") > 0) mState.fitView = false;
-        mSavePath = mState.scene.name + "-tuned.json";
-        mSourceField = mState.source;
         if (!args.script.empty()) {
             std::ifstream in(args.script, std::ios::binary);
             if (!in) {
@@ -413,12 +411,15 @@ private:
     }
 
     void sceneControls() {
+        if (mState.source != mShownSource) {  // loaded by a preset, a script or Load
+            mShownSource = mSourceField = mState.source;
+            mSavePath = mState.scene.name + "-tuned.json";
+        }
         if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
         if (ImGui::BeginCombo("built-in", mState.source.c_str())) {
             for (const SceneInfo& s : builtinScenes()) {
                 if (ImGui::Selectable(s.name.c_str(), s.name == mState.source)) {
                     guarded([&] { view::applyFlags(mState, {"--scene", s.name}); });
-                    mSourceField = mState.source;
                 }
                 tooltip(s.description);
             }
@@ -831,11 +832,11 @@ private:
         const ShadowScore& o = mScore->overall;
         if (mScoredRevision != mState.revision)
             ImGui::TextColored({1, 0.8f, 0.3f, 1}, "(settings changed since this score)");
-        ImGui::Text("misclassified %.2f%%  (outside band: false shadow %.2f%%, leak %.2f%%)",
-                    100.0 * o.misclassified, 100.0 * o.falseShadowOutsideBand,
-                    100.0 * o.leakOutsideBand);
-        ImGui::Text("false shadow %.2f%%  leak %.2f%%  mean |err| %.3f  (%.2f s)",
-                    100.0 * o.falseShadow, 100.0 * o.leak, o.meanAbsError, mScore->traceSeconds);
+        ImGui::Text("misclassified %.2f%%   mean |error| %.3f   (traced in %.2f s)",
+                    100.0 * o.misclassified, o.meanAbsError, mScore->traceSeconds);
+        ImGui::Text("false shadow %.2f%%   leak %.2f%%", 100.0 * o.falseShadow, 100.0 * o.leak);
+        ImGui::Text("away from edges: false shadow %.2f%%, leak %.2f%%",
+                    100.0 * o.falseShadowOutsideBand, 100.0 * o.leakOutsideBand);
         ImGui::Checkbox("error overlay", &mOverlay);
         tooltip("red: false shadow (acne), blue: light leak; pale inside the aliasing band");
         ImGui::SameLine();
@@ -957,7 +958,19 @@ private:
             if (mJob) return;
             mWaitScore = false;
         }
-        while (mNext < mScript.size() && mWaitFrames == 0 && !mWaitScore && !mQuit) {
+        if (mRepeatLeft > 0) {  // one repetition per frame
+            --mRepeatLeft;
+            try {
+                runCommand(mRepeated);
+            } catch (const Error& e) {
+                std::fprintf(stderr, "gnomon: error: %s:%d: %s\n", mArgs.script.c_str(),
+                             mRepeated.line, e.what());
+                mExitCode = e.kind() == ErrorKind::InvalidInput ? 2 : 1;
+            }
+            return;
+        }
+        while (mNext < mScript.size() && mWaitFrames == 0 && mRepeatLeft == 0 && !mWaitScore &&
+               !mQuit) {
             const view::Command& c = mScript[mNext++];
             try {
                 runCommand(c);
@@ -969,7 +982,8 @@ private:
             }
             if (mExitCode != 0) return;
         }
-        if (mNext >= mScript.size() && mWaitFrames == 0 && !mWaitScore) mScripted = false;
+        if (mNext >= mScript.size() && mWaitFrames == 0 && mRepeatLeft == 0 && !mWaitScore)
+            mScripted = false;
     }
 
     void runCommand(const view::Command& c) {
@@ -1003,6 +1017,16 @@ private:
             expectScore(c);
         } else if (c.verb == "key") {
             key(arg);
+        } else if (c.verb == "repeat") {
+            mRepeated = view::repeatedCommand(c);
+            mRepeatLeft = std::stoi(c.args[0]);
+        } else if (c.verb == "measure") {
+            if (arg != "on" && arg != "off") {
+                throw Error(ErrorKind::InvalidInput,
+                            "measure: expected on or off, got '" + arg + "'");
+            }
+            mMeasure = arg == "on";
+            mRenderer.setPassTiming(mMeasure);
         } else if (c.verb == "stats") {
             printStats();
         } else if (c.verb == "quit") {
@@ -1078,7 +1102,7 @@ private:
     std::uint64_t mDrawnRevision = ~std::uint64_t(0);
     int mDrawnWidth = 0, mDrawnHeight = 0;
     bool mRedraw = false;
-    std::string mFrameError, mUiError, mLastWritten, mSavePath, mSourceField;
+    std::string mFrameError, mUiError, mLastWritten, mSavePath, mSourceField, mShownSource;
     FrameStats mStats;
     std::vector<float> mShadowMs, mMainMs;
     std::vector<double> mFrameMs;
@@ -1102,6 +1126,8 @@ private:
     std::size_t mNext = 0;
     bool mScripted = false, mWaitScore = false, mQuit = false;
     int mWaitFrames = 0;
+    int mRepeatLeft = 0;
+    view::Command mRepeated;
     std::string mWindowShot;
     long mFrames = 0;
     int mExitCode = 0;

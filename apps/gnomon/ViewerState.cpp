@@ -134,7 +134,9 @@ const std::map<std::string, Arity>& verbs() {
         {"expect-score", {3, 3}},
         {"key", {1, 1}},
         {"stats", {0, 0}},
+        {"measure", {1, 1}},
         {"quit", {0, 0}},
+        {"repeat", {2, -1}},
     };
     return v;
 }
@@ -142,6 +144,27 @@ const std::map<std::string, Arity>& verbs() {
 glm::vec3 rotateAbout(const glm::vec3& v, const glm::vec3& axis, float degrees) {
     return glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(degrees), axis) *
                      glm::vec4(v, 0.0f));
+}
+
+void checkCommand(const Command& c, const std::string& path) {
+    const int lineNumber = c.line;
+    const auto it = verbs().find(c.verb);
+    if (it == verbs().end()) {
+        std::string known;
+        for (const auto& [verb, arity] : verbs())
+            known += (known.empty() ? "" : ", ") + verb;
+        bad(path + ":" + std::to_string(lineNumber) + ": unknown command '" + c.verb +
+            "' (known: " + known + ")");
+    }
+    const int n = int(c.args.size());
+    if (n < it->second.min || (it->second.max >= 0 && n > it->second.max)) {
+        bad(path + ":" + std::to_string(lineNumber) + ": " + c.verb + " takes " +
+            (it->second.min == it->second.max
+                 ? std::to_string(it->second.min)
+                 : std::to_string(it->second.min) + ".." +
+                       (it->second.max < 0 ? std::string("any") : std::to_string(it->second.max))) +
+            " argument(s), got " + std::to_string(n));
+    }
 }
 
 }  // namespace
@@ -298,27 +321,31 @@ std::vector<Command> parseScript(const std::string& text, const std::string& pat
         c.line = lineNumber;
         c.verb = w.front();
         c.args.assign(w.begin() + 1, w.end());
-        const auto it = verbs().find(c.verb);
-        if (it == verbs().end()) {
-            std::string known;
-            for (const auto& [verb, arity] : verbs())
-                known += (known.empty() ? "" : ", ") + verb;
-            bad(path + ":" + std::to_string(lineNumber) + ": unknown command '" + c.verb +
-                "' (known: " + known + ")");
-        }
-        const int n = int(c.args.size());
-        if (n < it->second.min || (it->second.max >= 0 && n > it->second.max)) {
-            bad(path + ":" + std::to_string(lineNumber) + ": " + c.verb + " takes " +
-                (it->second.min == it->second.max
-                     ? std::to_string(it->second.min)
-                     : std::to_string(it->second.min) + ".." +
-                           (it->second.max < 0 ? std::string("any")
-                                               : std::to_string(it->second.max))) +
-                " argument(s), got " + std::to_string(n));
+        checkCommand(c, path);
+        if (c.verb == "repeat") {
+            const Command inner = repeatedCommand(c);
+            if (inner.verb == "repeat" || inner.verb == "wait" || inner.verb == "wait-score" ||
+                inner.verb == "quit") {
+                bad(path + ":" + std::to_string(lineNumber) + ": repeat cannot repeat " +
+                    inner.verb);
+            }
+            checkCommand(inner, path);
         }
         out.push_back(std::move(c));
     }
     return out;
+}
+
+Command repeatedCommand(const Command& c) {
+    const std::string& n = c.args.at(0);
+    if (n.empty() || n.size() > 6 || n.find_first_not_of("0123456789") != std::string::npos) {
+        bad("line " + std::to_string(c.line) + ": repeat: expected a frame count, got '" + n + "'");
+    }
+    Command inner;
+    inner.line = c.line;
+    inner.verb = c.args.at(1);
+    inner.args.assign(c.args.begin() + 2, c.args.end());
+    return inner;
 }
 
 bool applyCommand(State& state, const Command& c) {

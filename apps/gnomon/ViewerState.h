@@ -77,6 +77,8 @@ struct Command {
 // Throws gnomon::Error (InvalidInput) naming `path` and the line of an unknown verb or a
 // wrong argument count.
 std::vector<Command> parseScript(const std::string& text, const std::string& path);
+// `repeat N VERB ARGS...`: VERB ARGS, once per frame on N frames.
+Command repeatedCommand(const Command& repeat);
 // Runs a command that edits the state (set, preset, scene, light, camera, orbit, pan, zoom,
 // select-light, side, frusta, play, pause, speed); returns false, doing nothing, for the
 // viewer's own verbs (wait, screenshot, save...). Throws gnomon::Error naming the line.
