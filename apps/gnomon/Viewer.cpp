@@ -234,26 +234,17 @@ const char* policyName(ShadowCameraPolicy p) {
 
 class Viewer {
 public:
-    Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHeight)
+    // `state` and `script` are checked before the window opens (runView).
+    Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHeight, view::State state,
+           std::vector<view::Command> script)
         : mArgs(args),
           mVerbose(verbose),
           mWindow(windowWidth, windowHeight),
           mImGui(mWindow.get()),
-          mRenderer(contextOptions(verbose)) {
-        view::load(mState, args.scene, args.flags.ground);
-        printWarnings(mState.scene);
-        mState.options = args.flags.resolve(mState.scene);
-        if (args.flags.app->count("--size") > 0) mState.fitView = false;
-        if (!args.script.empty()) {
-            std::ifstream in(args.script, std::ios::binary);
-            if (!in) {
-                throw Error(ErrorKind::Io, "--script: cannot read '" + args.script + "'");
-            }
-            std::stringstream text;
-            text << in.rdbuf();
-            mScript = view::parseScript(text.str(), args.script);
-            mScripted = true;
-        }
+          mRenderer(contextOptions(verbose)),
+          mState(std::move(state)),
+          mScript(std::move(script)),
+          mScripted(!args.script.empty()) {
         mRenderer.setPassTiming(mMeasure);
         if (mVerbose) std::fprintf(stderr, "gnomon view: OpenGL %s\n", mRenderer.glInfo().c_str());
     }
@@ -425,7 +416,7 @@ private:
             }
             ImGui::EndCombo();
         }
-        tooltip(mDocs("--scene") + " Model files: type a path below.");
+        tooltip("a built-in scene; for a scene file or a model file, type its path below");
         inputText("file", mSourceField);
         ImGui::SameLine();
         if (ImGui::Button("Load"))
@@ -434,7 +425,7 @@ private:
         if (ImGui::Checkbox("ground", &ground)) {
             guarded([&] { view::load(mState, mState.source, ground); });
         }
-        tooltip(mDocs("--ground"));
+        tooltip(mDocs("--ground") + " (reloads the scene: its lights and camera restart)");
         if (ImGui::BeginCombo("preset", "choose...")) {
             std::string group;
             for (const view::PresetEntry& p : view::presets()) {
@@ -664,8 +655,9 @@ private:
                 mState.playing = !mState.playing;
             ImGui::SameLine();
             ImGui::SetNextItemWidth(100);
-            ImGui::DragFloat("speed", &mSpeedField, 0.05f, -10.0f, 10.0f);
-            mState.speed = mSpeedField;
+            float speed = float(mState.speed);
+            if (ImGui::DragFloat("speed", &speed, 0.05f, -10.0f, 10.0f)) mState.speed = speed;
+            tooltip("animation seconds per second");
             float time = float(o.time);
             if (ImGui::DragFloat("time", &time, 0.05f, 0.0f, 1e6f, "%.2f s")) {
                 o.time = time;
@@ -1107,7 +1099,6 @@ private:
     std::vector<float> mShadowMs, mMainMs;
     std::vector<double> mFrameMs;
     bool mMeasure = true;
-    float mSpeedField = 1.0f;
 
     GLuint mSideTexture = 0;
     int mSideW = 0, mSideH = 0, mSideLight = -1;
@@ -1165,7 +1156,21 @@ int runView(const ViewArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput,
                     "--window: " + args.window + " is outside 320x240..16384x16384");
     }
-    Viewer viewer(args, verbose, width, height);
+    // Bad input is reported before a window opens.
+    std::vector<view::Command> script;
+    if (!args.script.empty()) {
+        std::ifstream in(args.script, std::ios::binary);
+        if (!in) throw Error(ErrorKind::Io, "--script: cannot read '" + args.script + "'");
+        std::stringstream text;
+        text << in.rdbuf();
+        script = view::parseScript(text.str(), args.script);
+    }
+    view::State state;
+    view::load(state, args.scene, args.flags.ground);
+    printWarnings(state.scene);
+    state.options = args.flags.resolve(state.scene);
+    if (args.flags.app->count("--size") > 0) state.fitView = false;
+    Viewer viewer(args, verbose, width, height, std::move(state), std::move(script));
     return viewer.run();
 }
 

@@ -94,6 +94,23 @@ assimp)
     expect 2 "broken.dae: assimp cannot read it"
     [[ -e "$work/b.png" ]] && fail "an image was written for a broken model"
     ;;
+view_input)
+    # gnomon view reports bad input before it opens a window (no display needed here).
+    run view --window 10x10
+    expect 2 "--window: 10x10 is outside"
+    run view --script "$work/missing.txt"
+    expect 1 "--script: cannot read"
+    printf 'wait 1\nexplode now\n' >"$work/bad.txt"
+    run view --script "$work/bad.txt"
+    expect 2 "bad.txt:2: unknown command 'explode'"
+    run view --scene no-such-scene
+    expect 2 "no-such-scene"
+    run view --filter blurry
+    expect 2 "--filter: expected one of"
+    printf 'quit\n' >"$work/quit.txt"
+    DISPLAY= WAYLAND_DISPLAY= run view --script "$work/quit.txt"
+    expect 1 "cannot open a window"
+    ;;
 scene_file)
     examples=$(dirname "$0")/../../examples/scenes
     run --verbose render --scene "$examples/tutorial-room.json" --size 64x64 --out "$work/room.png"
