@@ -294,6 +294,7 @@ private:
             return;
         }
         handleKeys();
+        pollScore();  // before any draw list refers to the overlay texture it may replace
         const ImGuiIO& io = ImGui::GetIO();
         const float W = io.DisplaySize.x, H = io.DisplaySize.y;
         const float panelW = std::min(380.0f, W * 0.4f), measureH = std::min(190.0f, H * 0.3f);
@@ -305,7 +306,6 @@ private:
                     int((viewW - mainW) * io.DisplayFramebufferScale.x));
         views(panelW, mainW, viewW, viewH);
         measurePanel(panelW, viewH, viewW, measureH);
-        pollScore();
 
         ImGui::Render();
         int fbW = 0, fbH = 0;
