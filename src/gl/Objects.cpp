@@ -175,7 +175,7 @@ Query::Query(const std::string& label, GLenum target) {
     GLuint n = 0;
     glCreateQueries(target, 1, &n);
     static_cast<Object&>(*this) = Object(n);
-    setLabel(GL_QUERY, n, label);
+    if (n != 0) setLabel(GL_QUERY, n, label);  // 0: the driver refused the target
 }
 
 }  // namespace gnomon::gl

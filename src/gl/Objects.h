@@ -119,6 +119,8 @@ public:
 class Query : public Object<QueryDeleter> {
 public:
     Query() = default;
+    // Empty (false) when the driver refuses `target` although it advertises it (llvmpipe in a
+    // GLX context does so for pipeline statistics).
     Query(const std::string& label, GLenum target);
 };
 
