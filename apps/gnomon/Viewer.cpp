@@ -204,32 +204,6 @@ bool enumCombo(const char* label, E& value, std::initializer_list<E> values) {
     return changed;
 }
 
-const char* lightTypeName(LightType t) {
-    switch (t) {
-        case LightType::Directional:
-            return "directional";
-        case LightType::Spot:
-            return "spot";
-        case LightType::Point:
-            return "point";
-        case LightType::Area:
-            return "area";
-    }
-    return "?";
-}
-
-const char* policyName(ShadowCameraPolicy p) {
-    switch (p) {
-        case ShadowCameraPolicy::Fit:
-            return "fit";
-        case ShadowCameraPolicy::Manual:
-            return "manual";
-        case ShadowCameraPolicy::Course:
-            return "course";
-    }
-    return "?";
-}
-
 // ---- The viewer ----------------------------------------------------------------------------
 
 class Viewer {
@@ -486,7 +460,7 @@ private:
         mState.selectedLight = std::clamp(mState.selectedLight, 0, int(lights.size()) - 1);
         auto labelOf = [&](int i) {
             const Light& l = lights[std::size_t(i)];
-            return std::to_string(i) + ": " + (l.name.empty() ? lightTypeName(l.type) : l.name);
+            return std::to_string(i) + ": " + (l.name.empty() ? toString(l.type) : l.name);
         };
         if (ImGui::BeginCombo("light", labelOf(mState.selectedLight).c_str())) {
             for (int i = 0; i < int(lights.size()); ++i) {
@@ -539,7 +513,7 @@ private:
             sc.policy = ShadowCameraPolicy(policy);
             changed(true);
         }
-        tooltip(std::string("how the shadow camera is placed: ") + policyName(sc.policy) +
+        tooltip(std::string("how the shadow camera is placed: ") + toString(sc.policy) +
                 ". fit: around what can be shadowed; manual: the numbers below; course: "
                 "looking at the view's centre");
         if (sc.policy != ShadowCameraPolicy::Fit) {

@@ -92,6 +92,15 @@ E choice(const Command& c, std::size_t i, const std::map<std::string, E>& names)
         ", got '" + s + "'");
 }
 
+// A value of an enum by its toString spelling (Scene.h).
+template <typename E>
+E named(const Command& c, std::size_t i) {
+    std::map<std::string, E> names;
+    for (int v = 0; std::string(toString(E(v))) != "?"; ++v)
+        names.emplace(toString(E(v)), E(v));
+    return choice(c, i, names);
+}
+
 void needArgs(const Command& c, std::size_t count) {
     if (c.args.size() != count) {
         bad("line " + std::to_string(c.line) + ": " + c.verb + " " +
@@ -376,11 +385,7 @@ bool applyCommand(State& state, const Command& c) {
             l.castsShadows = onOff(rest, 0);
         } else if (key == "type") {
             needArgs(rest, 1);
-            l.type = choice<LightType>(rest, 0,
-                                       {{"directional", LightType::Directional},
-                                        {"spot", LightType::Spot},
-                                        {"point", LightType::Point},
-                                        {"area", LightType::Area}});
+            l.type = named<LightType>(rest, 0);
         } else if (key == "position" || key == "direction" || key == "colour") {
             needArgs(rest, 3);
             (key == "position"    ? l.position
@@ -394,11 +399,7 @@ bool applyCommand(State& state, const Command& c) {
             l.shadowMapSize = integer(rest, 0);
         } else if (key == "policy") {
             needArgs(rest, 1);
-            l.shadowCamera.policy =
-                choice<ShadowCameraPolicy>(rest, 0,
-                                           {{"fit", ShadowCameraPolicy::Fit},
-                                            {"manual", ShadowCameraPolicy::Manual},
-                                            {"course", ShadowCameraPolicy::Course}});
+            l.shadowCamera.policy = named<ShadowCameraPolicy>(rest, 0);
         } else {
             bad(at + "light: unknown property '" + key +
                 "' (known: on, shadows, type, position, direction, colour, intensity, map-size, "

@@ -176,6 +176,12 @@ struct SceneInfo {
     std::string description;
 };
 
+// Names as scene files and the viewer spell them ("directional", "fit", "perspective"...);
+// "?" past the last value.
+const char* toString(LightType v);
+const char* toString(ShadowCameraPolicy v);
+const char* toString(Projection v);
+
 // The options a preset gives for `scene`: Default = scene.options; Textbook =
 // scene.textbookOptions, or for scenes without them a constant tolerance of 0.005 in stored
 // depth and nothing else (no slope, normal offset or depth-aware step, no culling, one

@@ -245,4 +245,40 @@ void frameWithCamera(Scene& scene, const Aabb& bounds) {
     scene.warnings.push_back("no camera: one framing the scene was added");
 }
 
+const char* toString(LightType v) {
+    switch (v) {
+        case LightType::Directional:
+            return "directional";
+        case LightType::Spot:
+            return "spot";
+        case LightType::Point:
+            return "point";
+        case LightType::Area:
+            return "area";
+    }
+    return "?";
+}
+
+const char* toString(ShadowCameraPolicy v) {
+    switch (v) {
+        case ShadowCameraPolicy::Fit:
+            return "fit";
+        case ShadowCameraPolicy::Manual:
+            return "manual";
+        case ShadowCameraPolicy::Course:
+            return "course";
+    }
+    return "?";
+}
+
+const char* toString(Projection v) {
+    switch (v) {
+        case Projection::Perspective:
+            return "perspective";
+        case Projection::Orthographic:
+            return "orthographic";
+    }
+    return "?";
+}
+
 }  // namespace gnomon

@@ -85,7 +85,7 @@ std::string joined(const std::vector<std::string>& items, const char* separator 
 template <typename E>
 using Names = std::vector<std::pair<std::string, E>>;
 
-// The CLI's spellings (Options.h), in enum order: toString gives "?" past the last value.
+// The spellings of toString (Options.h, Scene.h), in enum order: "?" past the last value.
 template <typename E>
 Names<E> optionNames() {
     Names<E> out;
@@ -97,15 +97,9 @@ Names<E> optionNames() {
     return out;
 }
 
-const Names<LightType> kLightTypes = {{"directional", LightType::Directional},
-                                      {"spot", LightType::Spot},
-                                      {"point", LightType::Point},
-                                      {"area", LightType::Area}};
-const Names<Projection> kProjections = {{"perspective", Projection::Perspective},
-                                        {"orthographic", Projection::Orthographic}};
-const Names<ShadowCameraPolicy> kPolicies = {{"fit", ShadowCameraPolicy::Fit},
-                                             {"manual", ShadowCameraPolicy::Manual},
-                                             {"course", ShadowCameraPolicy::Course}};
+const Names<LightType> kLightTypes = optionNames<LightType>();
+const Names<Projection> kProjections = optionNames<Projection>();
+const Names<ShadowCameraPolicy> kPolicies = optionNames<ShadowCameraPolicy>();
 const Names<AlphaMode> kAlphaModes = {
     {"opaque", AlphaMode::Opaque}, {"mask", AlphaMode::Mask}, {"blend", AlphaMode::Blend}};
 

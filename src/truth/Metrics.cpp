@@ -93,24 +93,6 @@ std::vector<std::uint8_t> aliasingBand(const Reference& r, const std::vector<flo
     return band;
 }
 
-namespace {
-
-const char* typeName(LightType t) {
-    switch (t) {
-        case LightType::Directional:
-            return "directional";
-        case LightType::Spot:
-            return "spot";
-        case LightType::Point:
-            return "point";
-        case LightType::Area:
-            return "area";
-    }
-    return "?";
-}
-
-}  // namespace
-
 std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int width, int height) {
     std::vector<float> grid(seeds.size());
     for (std::size_t i = 0; i < seeds.size(); ++i)
@@ -181,7 +163,7 @@ Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector
         if (k.pixels == 0) continue;
         ShadowScore s;
         s.light = int(l);
-        s.type = typeName(scene.lights[l].type);
+        s.type = toString(scene.lights[l].type);
         finish(k, s);
         out.lights.push_back(s);
         total.pixels += k.pixels;
