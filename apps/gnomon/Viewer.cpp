@@ -179,14 +179,19 @@ private:
     RenderFlags mFlags;
 };
 
-void tooltip(const std::string& text) {
+// The last item's tooltip. Callers that build the text check ImGui::IsItemHovered() first,
+// so nothing is formatted on frames where no tooltip shows.
+void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
-        ImGui::TextUnformatted(text.c_str());
+        ImGui::TextUnformatted(text);
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }
+}
+void tooltip(const std::string& text) {
+    tooltip(text.c_str());
 }
 
 template <typename E>
@@ -362,6 +367,11 @@ private:
         ImGui::End();
     }
 
+    // The flag's one-line doc as the last item's tooltip, looked up only while hovered.
+    void flagTip(const char* flag) {
+        if (ImGui::IsItemHovered()) tooltip(mDocs(flag));
+    }
+
     void changed(bool c) {
         if (c) ++mState.revision;
     }
@@ -399,7 +409,8 @@ private:
         if (ImGui::Checkbox("ground", &ground)) {
             guarded([&] { view::load(mState, mState.source, ground); });
         }
-        tooltip(mDocs("--ground") + " (reloads the scene: its lights and camera restart)");
+        if (ImGui::IsItemHovered())
+            tooltip(mDocs("--ground") + " (reloads the scene: its lights and camera restart)");
         if (ImGui::BeginCombo("preset", "choose...")) {
             std::string group;
             for (const view::PresetEntry& p : view::presets()) {
@@ -513,9 +524,10 @@ private:
             sc.policy = ShadowCameraPolicy(policy);
             changed(true);
         }
-        tooltip(std::string("how the shadow camera is placed: ") + toString(sc.policy) +
-                ". fit: around what can be shadowed; manual: the numbers below; course: "
-                "looking at the view's centre");
+        if (ImGui::IsItemHovered())
+            tooltip(std::string("how the shadow camera is placed: ") + toString(sc.policy) +
+                    ". fit: around what can be shadowed; manual: the numbers below; course: "
+                    "looking at the view's centre");
         if (sc.policy != ShadowCameraPolicy::Fit) {
             int proj = sc.projection == Projection::Perspective ? 0 : 1;
             if (ImGui::Combo("light projection", &proj, "perspective\0orthographic\0")) {
@@ -539,7 +551,7 @@ private:
         ShadowOptions& s = o.shadow;
         if (ImGui::CollapsingHeader("Shadow map", ImGuiTreeNodeFlags_DefaultOpen)) {
             changed(ImGui::Checkbox("shadows", &s.enabled));
-            tooltip(mDocs("--shadows"));
+            flagTip("--shadows");
             bool override = s.mapSize > 0;
             if (ImGui::Checkbox("##override", &override)) {
                 s.mapSize = override ? 1024 : 0;
@@ -558,68 +570,68 @@ private:
             } else {
                 ImGui::TextDisabled("map-size: each light's own");
             }
-            tooltip(mDocs("--map-size"));
+            flagTip("--map-size");
             changed(enumCombo(
                 "depth-format", s.depthFormat,
                 {DepthFormat::R8, DepthFormat::Rgba8Packed256, DepthFormat::Rgba8Packed255,
                  DepthFormat::Depth16, DepthFormat::Depth24, DepthFormat::Depth32F}));
-            tooltip(mDocs("--depth-format"));
+            flagTip("--depth-format");
             changed(enumCombo("map-filter", s.mapFilter, {MapFilter::Nearest, MapFilter::Linear}));
-            tooltip(mDocs("--map-filter"));
+            flagTip("--map-filter");
             changed(enumCombo("outside", s.outside, {OutsidePolicy::Lit, OutsidePolicy::Clamp}));
-            tooltip(mDocs("--outside"));
+            flagTip("--outside");
         }
         if (ImGui::CollapsingHeader("Tolerances", ImGuiTreeNodeFlags_DefaultOpen)) {
             changed(
                 ImGui::DragFloat("bias-constant", &s.biasConstant, 0.0001f, 0.0f, 0.5f, "%.5f"));
-            tooltip(mDocs("--bias-constant"));
+            flagTip("--bias-constant");
             changed(ImGui::DragFloat("bias-depth-aware", &s.biasDepthAware, 0.05f, 0.0f, 100.0f));
-            tooltip(mDocs("--bias-depth-aware"));
+            flagTip("--bias-depth-aware");
             changed(ImGui::DragFloat("bias-slope", &s.biasSlope, 0.05f, 0.0f, 100.0f));
-            tooltip(mDocs("--bias-slope"));
+            flagTip("--bias-slope");
             changed(ImGui::DragFloat("bias-units", &s.biasUnits, 0.1f, 0.0f, 10000.0f));
-            tooltip(mDocs("--bias-units"));
+            flagTip("--bias-units");
             changed(ImGui::DragFloat("normal-offset", &s.normalOffset, 0.05f, 0.0f, 100.0f));
-            tooltip(mDocs("--normal-offset"));
+            flagTip("--normal-offset");
             changed(enumCombo("cull", s.cull, {CullMode::Back, CullMode::Front, CullMode::None}));
-            tooltip(mDocs("--cull"));
+            flagTip("--cull");
         }
         if (ImGui::CollapsingHeader("Filter", ImGuiTreeNodeFlags_DefaultOpen)) {
             changed(enumCombo("filter", s.filter,
                               {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf,
                                ShadowFilter::Poisson, ShadowFilter::Pcss}));
-            tooltip(mDocs("--filter"));
+            flagTip("--filter");
             int half = (s.pcfSize - 1) / 2;
             if (ImGui::SliderInt("pcf-size", &half, 0, 4, std::to_string(2 * half + 1).c_str())) {
                 s.pcfSize = 2 * half + 1;
                 changed(true);
             }
-            tooltip(mDocs("--pcf-size"));
+            flagTip("--pcf-size");
             changed(ImGui::DragFloat("light-radius", &s.lightRadius, 0.01f, 0.0f, 100.0f));
-            tooltip(mDocs("--light-radius"));
+            flagTip("--light-radius");
             changed(ImGui::SliderFloat("light-angle", &s.lightAngle, 0.0f, 20.0f, "%.2f deg"));
-            tooltip(mDocs("--light-angle"));
+            flagTip("--light-angle");
             changed(enumCombo("blend-shadows", s.blendShadows,
                               {BlendShadows::Opaque, BlendShadows::None, BlendShadows::Dithered}));
-            tooltip(mDocs("--blend-shadows"));
+            flagTip("--blend-shadows");
         }
         if (ImGui::CollapsingHeader("Cascades")) {
             changed(ImGui::SliderInt("cascades", &s.cascades, 1, 4));
-            tooltip(mDocs("--cascades"));
+            flagTip("--cascades");
             changed(ImGui::SliderFloat("cascade-lambda", &s.cascadeLambda, 0.0f, 1.0f));
-            tooltip(mDocs("--cascade-lambda"));
+            flagTip("--cascade-lambda");
             changed(ImGui::SliderFloat("cascade-blend", &s.cascadeBlend, 0.0f, 0.5f));
-            tooltip(mDocs("--cascade-blend"));
+            flagTip("--cascade-blend");
         }
         if (ImGui::CollapsingHeader("Shading")) {
             changed(enumCombo("shadowed", o.shading.shadowedRule,
                               {ShadowedRule::AmbientOnly, ShadowedRule::Factor}));
-            tooltip(mDocs("--shadowed"));
+            flagTip("--shadowed");
             changed(ImGui::SliderFloat("shadow-factor", &o.shading.shadowFactor, 0.0f, 1.0f));
-            tooltip(mDocs("--shadow-factor"));
+            flagTip("--shadow-factor");
             changed(enumCombo("output-encoding", o.shading.output,
                               {OutputEncoding::Linear, OutputEncoding::Srgb}));
-            tooltip(mDocs("--output-encoding"));
+            flagTip("--output-encoding");
             changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
             tooltip("the scene's ambient light colour, times each material's colour");
             ImGui::TextDisabled("shininess: per material, from the scene");
@@ -637,18 +649,18 @@ private:
                 o.time = time;
                 changed(true);
             }
-            tooltip(mDocs("--time"));
+            flagTip("--time");
             int lightOnly = o.lightOnly;
             if (ImGui::SliderInt("light-only", &lightOnly, -1, int(mState.scene.lights.size()) - 1,
                                  lightOnly < 0 ? "all" : "%d")) {
                 o.lightOnly = lightOnly;
                 changed(true);
             }
-            tooltip(mDocs("--light-only"));
+            flagTip("--light-only");
             changed(enumCombo("debug-view", o.debugView,
                               {DebugView::None, DebugView::Cascades, DebugView::ShadowMap,
                                DebugView::LightFrusta}));
-            tooltip(mDocs("--debug-view"));
+            flagTip("--debug-view");
             changed(ImGui::Checkbox("light frusta (F)", &mState.frusta));
             tooltip("draw every shadow camera's volume as lines over the camera's view");
             bool side = mState.side == view::SideView::ShadowMap;
@@ -662,7 +674,7 @@ private:
                     o.height = std::clamp(size[1], 1, 16384);
                     changed(true);
                 }
-                tooltip(mDocs("--size"));
+                flagTip("--size");
             }
             if (ImGui::Checkbox("measure passes", &mMeasure)) mRenderer.setPassTiming(mMeasure);
             tooltip("time each pass as gnomon bench does (a glFinish between passes)");
@@ -963,18 +975,18 @@ private:
             mWaitFrames = std::stoi(arg);
         } else if (c.verb == "screenshot") {
             // The frame as it stands after this command: settle the view first.
-            renderNow();
+            settleOptions();
             screenshot(arg);
         } else if (c.verb == "window-shot") {
             mWindowShot = arg;  // at the end of this frame, with the UI drawn
             mWaitFrames = 1;    // what follows runs on the next frame
         } else if (c.verb == "save") {
-            renderNow();
+            settleOptions();
             save(arg);
         } else if (c.verb == "load") {
             view::applyFlags(mState, {"--scene", arg});
         } else if (c.verb == "score") {
-            renderNow();
+            settleOptions();
             mJob.reset();
             startScore();
         } else if (c.verb == "wait-score") {
@@ -1000,8 +1012,9 @@ private:
         }
     }
 
-    // Main-view options as the next frame will draw them (the layout of the last frame).
-    void renderNow() {
+    // The main view's options after this frame's commands so far, at the last frame's size:
+    // what a scripted screenshot, save or score uses.
+    void settleOptions() {
         mMainOptions =
             view::mainViewOptions(mState, std::max(mDrawnWidth, 1), std::max(mDrawnHeight, 1));
     }

@@ -246,8 +246,7 @@ void applyFlags(State& state, const std::vector<std::string>& args) {
 
 void applyPreset(State& state, const PresetEntry& preset) {
     // An example names its scene: it starts from that scene's authored options.
-    std::vector<std::string> args = preset.args;
-    applyFlags(state, args);
+    applyFlags(state, preset.args);
 }
 
 RenderOptions mainViewOptions(const State& state, int width, int height) {
