@@ -85,11 +85,13 @@ struct FitBoxes {
     bool snap = false;  // the fit follows the view: keep it steady
 };
 
-Aabb intersect(const Aabb& a, const Aabb& b) {
+// `a` moved inside `b` corner by corner: their intersection when they overlap, and never
+// empty when `a` is not (for a box that rounding put a hair beside `b`).
+Aabb clampInto(const Aabb& a, const Aabb& b) {
     Aabb out;
-    out.min = glm::max(a.min, b.min);
-    out.max = glm::min(a.max, b.max);
-    return out.empty() ? Aabb{} : out;
+    out.min = glm::clamp(a.min, b.min, b.max);
+    out.max = glm::clamp(a.max, b.min, b.max);
+    return out;
 }
 
 // The vertices of a box clipped by a frustum: at most the ends of 24 clipped edges.
@@ -185,9 +187,10 @@ FitBoxes visibleReceivers(const FitScene& scene) {
             f.receivers.push_back(r);
             continue;
         }
-        // Rounding must not grow the box.
-        const Aabb clipped = intersect(clipToFrustum(r, scene.viewClipFromWorld, frustum).box(), r);
-        if (!clipped.empty()) f.receivers.push_back(clipped);
+        // Rounding must not grow the box, nor empty a flat one (a ground plane has no
+        // thickness: its clipped points may all round to one side of it).
+        const Aabb clipped = clipToFrustum(r, scene.viewClipFromWorld, frustum).box();
+        if (!clipped.empty()) f.receivers.push_back(clampInto(clipped, r));
     }
     return f;
 }

@@ -128,6 +128,25 @@ TEST(FitReceivers, SlantedSunHoldsTheWholeShadow) {
     EXPECT_GT(shadowed, 100);
 }
 
+// A floor of zero thickness (what --ground adds, and most scanned ground planes): clipping
+// it to the view frustum must not lose it to rounding, or the map's depth range stops at
+// the caster's foot and the floor's shadowed points fall beyond its far plane (read as lit).
+TEST(FitReceivers, FlatFloorStaysAReceiver) {
+    for (const glm::vec3 centre : {glm::vec3(0, 0, 0), glm::vec3(2.3f, 0, -1.7f)}) {
+        shadow::FitScene s = blockOnFloor(centre);
+        s.receivers[0] = box({-20.123f, 0.0137f, -20.456f}, {20.789f, 0.0137f, 20.321f});
+        const glm::vec3 dir = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+        const auto f = shadow::lightCameraFrame(sunAlong(dir), Camera{}, s, 1024);
+        ASSERT_TRUE(f.valid);
+        // The block's shadow on the floor: the floor points below its top corners.
+        for (const glm::vec3 top :
+             {glm::vec3(-1, 2, -1), glm::vec3(1, 2, 1), glm::vec3(-1, 2, 1), glm::vec3(1, 2, -1)}) {
+            const glm::vec3 p = top + dir * ((2.0f - 0.0137f) / -dir.y);
+            EXPECT_TRUE(inside(mapCoord(f, p))) << p.x << ", " << p.y << ", " << p.z;
+        }
+    }
+}
+
 // Receivers out of view do not count: with the camera looking at a corner of the floor far
 // from the block, nothing visible can be shadowed: no map is needed.
 TEST(FitReceivers, NothingVisibleToShadowNeedsNoMap) {
