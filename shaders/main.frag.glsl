@@ -140,6 +140,16 @@ float cubeLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
 }
 
 void main() {
+#if defined(RECEIVER_PLANE) && !defined(SHADOWS_OFF)
+    // Before any discard: derivatives need the whole 2x2 quad. Helper invocations
+    // interpolate the same triangle, so the differences span its plane exactly.
+    {
+        vec3 dx = dFdx(vIn.wsPosition), dy = dFdy(vIn.wsPosition);
+        vec3 n = cross(dx, dy);
+        float len = length(n);
+        gPlaneNormal = len > 1e-6 * length(dx) * length(dy) ? n / len : normalize(vIn.wsNormal);
+    }
+#endif
     Surface s;
     s.unlit = vIn.material.z > 0.5;
     s.receives = vIn.receives > 0.5;

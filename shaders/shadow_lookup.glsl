@@ -37,9 +37,9 @@ layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
 float compareDepth(vec2 uv, float layer, float reference) {
     return texture(uShadowMaps, vec4(uv, layer, reference));
 }
-#if defined(FILTER_PCSS)
-// PCSS's blocker search reads stored depth: the same maps through a NEAREST sampler
-// without comparison.
+#if defined(FILTER_PCSS) || defined(RECEIVER_PLANE)
+// PCSS's blocker search and the receiver plane's gathers read stored depth: the same maps
+// through a NEAREST sampler without comparison.
 layout(binding = 2) uniform sampler2DArray uShadowDepths;
 float rawDepth(vec2 uv, float layer) {
     return texture(uShadowDepths, vec3(uv, layer)).r;
@@ -88,6 +88,89 @@ vec3 normalOffset(LightData light, vec3 wsNormal, vec3 wsToLight, float texelWor
     return wsNormal * (light.shadowBias.y * kFilterReach * texelWorld * sinTheta);
 }
 
+// The receiver's plane, world space: set by main() from the screen-space derivatives of the
+// fragment's position, which give the triangle's own plane (the interpolated normal of a
+// smooth mesh is not it). Its sign does not matter.
+vec3 gPlaneNormal = vec3(0.0, 1.0, 0.0);
+
+// Receiver-plane depth (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC
+// 2006; Dou et al., "Adaptive Depth Bias for Shadow Maps", I3D 2014). A plane stays a plane
+// through the light's projection, so the depth it stores is affine in map coordinates:
+// depth(t) = coord.z + dot(gradient, t - coord.xy). Comparing each texel against the depth
+// its own centre has on the receiver's plane removes the slope from the tolerance: what is
+// left covers rounding. `clip` is the lookup point in map clip space, `coord`
+// after the divide; two tangent steps of about a texel give the gradient per map unit.
+// The steepest receiver plane followed, as depth per distance across the light (tan of
+// the angle between the surface's normal and the light): steeper planes are followed only
+// this far, and the depth pass's slope-scaled offset covers the rest. Measured on Sponza's
+// arches and the built-in scenes: 1-2 leak least; 4 and more let grazing planes reach past
+// real occluders within the filter's footprint.
+const float kPlaneMaxSlope = 2.0;
+vec2 receiverPlaneGradient(LightData light, vec4 clip, vec3 coord, float texelWorld,
+                           float texelCoord, vec3 wsToLight) {
+    vec3 n = gPlaneNormal;
+    vec3 t1 = normalize(abs(n.x) > 0.5 ? vec3(n.y, -n.x, 0.0) : vec3(0.0, n.z, -n.y));
+    vec3 t2 = cross(n, t1);
+    vec4 c1 = clip + light.textureFromWorld * vec4(t1 * texelWorld, 0.0);
+    vec4 c2 = clip + light.textureFromWorld * vec4(t2 * texelWorld, 0.0);
+    vec3 d1 = c1.xyz / c1.w - coord, d2 = c2.xyz / c2.w - coord;
+    float det = d1.x * d2.y - d2.x * d1.y;
+    // A plane seen edge-on by the light has no depth gradient in the map: no texel but its
+    // own line shows it, and the single-depth comparison is as good as any.
+    if (!(abs(det) > 1e-6 * length(d1.xy) * length(d2.xy))) return vec2(0.0);
+    vec2 g = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+    // Clamped to kPlaneMaxSlope: the depth the surface changes over one texel when it is
+    // tilted that much, from a step towards the light.
+    vec4 c3 = clip + light.textureFromWorld * vec4(wsToLight * texelWorld * kPlaneMaxSlope, 0.0);
+    float maxPerTexel = abs(coord.z - c3.z / c3.w);
+    float perTexel = length(g) * texelCoord;
+    return perTexel > maxPerTexel ? g * (maxPerTexel / perTexel) : g;
+}
+
+#if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
+    (defined(FILTER_PCF) || defined(FILTER_HW2X2))
+// PCF over whole texels: the footprint of a K x K box of bilinear taps is (K + 1)^2 texels
+// with tent weights (1 - f, 1, ..., 1, f) per axis; it is read by 2x2 gathers, and every
+// texel is compared against the receiver plane at its own centre. Same weights as K x K
+// bilinear comparisons, fewer fetches ((K + 1)^2 / 4 gathers instead of K^2 taps): 4 instead
+// of 9 for the default 3 x 3, measured 15-20 % faster main passes on llvmpipe.
+#if defined(FILTER_PCF)
+const int kGatherRadius = PCF_SIZE / 2;
+#else
+const int kGatherRadius = 0;
+#endif
+float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, float texelUv,
+                float uvScale) {
+    const int r = kGatherRadius;
+    vec2 s = uv / texelUv - 0.5;  // in texels of the layer: texel i's centre is at i
+    vec2 base = floor(s);
+    vec2 f = s - base;
+    vec2 g = gradientUv * texelUv;  // stored depth per texel along the layer's axes
+    // Half a texel of the plane's slope, as the bilinear paths allow: the rasteriser's depth
+    // at a texel differs from the exact plane by up to that much near the edges of steep
+    // casters (measured: a quarter texel is not enough on the tutorial room's walls).
+    float margin = 0.5 * (abs(g.x) + abs(g.y));
+    float last = floor(uvScale / texelUv + 0.5) - 2.0;  // the map's last 2x2 block start
+    float sum = 0.0;
+    for (int my = 0; my <= r; ++my) {
+        float ky = clamp(base.y - float(r - 2 * my), 0.0, last);
+        vec2 wy = vec2(my == 0 ? 1.0 - f.y : 1.0, my == r ? f.y : 1.0);
+        for (int mx = 0; mx <= r; ++mx) {
+            float kx = clamp(base.x - float(r - 2 * mx), 0.0, last);
+            vec2 wx = vec2(mx == 0 ? 1.0 - f.x : 1.0, mx == r ? f.x : 1.0);
+            // Gathered at the corner the four texels share: x (k, k+1), y (k+1, k+1),
+            // z (k+1, k), w (k, k) as (column, row).
+            vec4 d = textureGather(uShadowDepths, vec3((vec2(kx, ky) + 1.0) * texelUv, layer));
+            vec4 along = dot(g, vec2(kx, ky) - s) + vec4(g.y, g.x + g.y, g.x, 0.0);
+            vec4 refs = reference + along - margin;
+            vec4 w = vec4(wx.x * wy.y, wx.y * wy.y, wx.y * wy.x, wx.x * wy.x);
+            sum += dot(step(refs, d), w);
+        }
+    }
+    return sum / float((2 * r + 1) * (2 * r + 1));
+}
+#endif
+
 #if defined(FILTER_PCSS)
 // Percentage-closer soft shadows (Fernando 2005). The light is a disc of radius R at
 // distance u from the receiver (directional lights: a cone of half-angle a). A blocker
@@ -131,8 +214,15 @@ float surfaceSlope(vec3 wsNormal, vec3 wsToLight) {
     return min(sqrt(1.0 - nDotL * nDotL) / nDotL, 8.0);
 }
 
+// `plane`: the receiver plane's stored-depth gradient per layer uv and its half-texel spread
+// (z < 0: none; taps then allow the surface's slope times their distance instead).
+float pcssTapReference(float reference, vec2 o, vec3 plane, float perTexel, vec2 offsetUv) {
+    return plane.z >= 0.0 ? reference + dot(plane.xy, offsetUv) - plane.z
+                          : reference - length(o) * perTexel;
+}
+
 float pcssMap(LightData light, vec2 uv, float layer, float receiverStored, float reference,
-              vec2 lo, vec2 hi, float texelUv, bool ortho, float slope) {
+              vec2 lo, vec2 hi, float texelUv, bool ortho, float slope, vec3 plane) {
     float n = light.wsPosition.w;
     float tr = linearDepth(light, receiverStored, ortho);
     float texelAtNear = light.shadow.y * (ortho ? 1.0 : n);
@@ -143,8 +233,9 @@ float pcssMap(LightData light, vec2 uv, float layer, float receiverStored, float
     float blockers = 0.0, count = 0.0;
     for (int i = 0; i < 16; ++i) {
         vec2 o = turn * kPoissonDisc[i] * search;
-        float z = rawDepth(clamp(uv + o * texelUv, lo, hi), layer);
-        if (z < reference - length(o) * perTexel) {
+        vec2 tap = clamp(uv + o * texelUv, lo, hi);
+        float z = rawDepth(tap, layer);
+        if (z < pcssTapReference(reference, o, plane, perTexel, tap - uv)) {
             blockers += z;
             count += 1.0;
         }
@@ -156,8 +247,8 @@ float pcssMap(LightData light, vec2 uv, float layer, float receiverStored, float
     float sum = 0.0;
     for (int i = 0; i < 16; ++i) {
         vec2 o = turn * kPoissonDisc[i] * radius;
-        sum += compareDepth(clamp(uv + o * texelUv, lo, hi), layer,
-                            reference - length(o) * perTexel);
+        vec2 tap = clamp(uv + o * texelUv, lo, hi);
+        sum += compareDepth(tap, layer, pcssTapReference(reference, o, plane, perTexel, tap - uv));
     }
     return sum / 16.0;
 }
@@ -165,6 +256,19 @@ float pcssMap(LightData light, vec2 uv, float layer, float receiverStored, float
 
 // World size of the map texel behind the last lookup (gnomon score's aliasing band).
 float gTexelWorld = 0.0;
+
+// Stored cube depth of the receiver's plane (through the light-relative point `p`, normal
+// gPlaneNormal) along the direction p + offset from the light: where that ray meets the
+// plane, the perspective depth along p's major axis (offsets lie across it). A ray that
+// misses the plane keeps p's own depth.
+float cubePlaneDepth(vec3 p, vec3 offset, float near, float far) {
+    vec3 d = p + offset;
+    float t = dot(gPlaneNormal, p) / dot(gPlaneNormal, d);
+    vec3 a = abs(p);
+    float major = max(a.x, max(a.y, a.z)) * (t > 0.0 && t < 1e6 ? t : 1.0);
+    float ndc = (far + near) / (far - near) - 2.0 * far * near / ((far - near) * major);
+    return 0.5 * ndc + 0.5;
+}
 
 // Point lights (SPEC S21): the cube face of the direction light -> point holds the depth
 // along that face's axis; compare against the same depth of this point. PCF taps lie in the
@@ -184,23 +288,31 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     float stored = 0.5 * ndc + 0.5;
     float reference = stored - depthTolerance(light, stored, uDepthAware.z);
     float layer = light.colour.w;
-#if defined(FILTER_PCF)
     // Two axes spanning the face of the major axis; one texel is 2 / size at unit distance.
     vec3 u = a.x >= a.y && a.x >= a.z ? vec3(0, 1, 0) : vec3(1, 0, 0);
     vec3 v = a.z >= a.x && a.z >= a.y ? vec3(0, 1, 0) : vec3(0, 0, 1);
     float step = light.shadowBias.z * 2.0 * major;
+#if defined(RECEIVER_PLANE)
+    // Stored depth per world unit of tap offset along u and v (affine on the face: a face is
+    // a perspective projection), and its half-texel spread for the bilinear comparisons.
+    vec2 g = vec2(cubePlaneDepth(toPoint, u * step, near, far) - stored,
+                  cubePlaneDepth(toPoint, v * step, near, far) - stored) / step;
+    float spread = 0.5 * step * (abs(g.x) + abs(g.y));
+#define CUBE_REFERENCE(o) (reference + dot(g, (o)) - spread)
+#else
+#define CUBE_REFERENCE(o) (reference)
+#endif
+#if defined(FILTER_PCF)
     float sum = 0.0;
     const int r = PCF_SIZE / 2;
     for (int y = -r; y <= r; ++y) {
         for (int x = -r; x <= r; ++x) {
             vec3 tap = toPoint + (float(x) * u + float(y) * v) * step;
-            sum += texture(uShadowCubes, vec4(tap, layer), reference);
+            sum += texture(uShadowCubes, vec4(tap, layer), CUBE_REFERENCE(vec2(x, y) * step));
         }
     }
     return sum / float(PCF_SIZE * PCF_SIZE);
 #elif defined(FILTER_PCSS)
-    vec3 u = a.x >= a.y && a.x >= a.z ? vec3(0, 1, 0) : vec3(1, 0, 0);
-    vec3 v = a.z >= a.x && a.z >= a.y ? vec3(0, 1, 0) : vec3(0, 0, 1);
     float texelAtReceiver = light.shadow.y * major;  // one texel at the receiver, world
     float perTexel = texelAtReceiver * surfaceSlope(wsNormal, wsToLight) *
                      storedPerWorld(light, major, false);
@@ -212,7 +324,11 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
         vec2 o = turn * kPoissonDisc[i] * search;
         vec3 tap = toPoint + (o.x * u + o.y * v) * texelAtReceiver;
         float z = texture(uShadowCubeDepths, vec4(tap, layer)).r;
+#if defined(RECEIVER_PLANE)
+        if (z < CUBE_REFERENCE(o * texelAtReceiver)) {
+#else
         if (z < reference - length(o) * perTexel) {
+#endif
             blockers += z;
             count += 1.0;
         }
@@ -225,23 +341,26 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     for (int i = 0; i < 16; ++i) {
         vec2 o = turn * kPoissonDisc[i] * radius;
         vec3 tap = toPoint + (o.x * u + o.y * v) * texelAtReceiver;
+#if defined(RECEIVER_PLANE)
+        sum += texture(uShadowCubes, vec4(tap, layer), CUBE_REFERENCE(o * texelAtReceiver));
+#else
         sum += texture(uShadowCubes, vec4(tap, layer), reference - length(o) * perTexel);
+#endif
     }
     return sum / 16.0;
 #elif defined(FILTER_POISSON)
-    vec3 u = a.x >= a.y && a.x >= a.z ? vec3(0, 1, 0) : vec3(1, 0, 0);
-    vec3 v = a.z >= a.x && a.z >= a.y ? vec3(0, 1, 0) : vec3(0, 0, 1);
-    float radius = light.shadowBias.z * 2.0 * major * 0.5 * float(PCF_SIZE);
+    float radius = step * 0.5 * float(PCF_SIZE);
     mat2 turn = poissonRotation();
     float sum = 0.0;
     for (int i = 0; i < 16; ++i) {
         vec2 o = turn * kPoissonDisc[i] * radius;
-        sum += texture(uShadowCubes, vec4(toPoint + o.x * u + o.y * v, layer), reference);
+        sum += texture(uShadowCubes, vec4(toPoint + o.x * u + o.y * v, layer), CUBE_REFERENCE(o));
     }
     return sum / 16.0;
 #else
-    return texture(uShadowCubes, vec4(toPoint, layer), reference);
+    return texture(uShadowCubes, vec4(toPoint, layer), CUBE_REFERENCE(vec2(0.0)));
 #endif
+#undef CUBE_REFERENCE
 }
 
 // One single-frustum map: orthographic or perspective, a light's own or one cascade's.
@@ -269,13 +388,26 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     // The light's map covers [0, uvScale] of the layer; keep every tap inside it.
     vec2 lo = vec2(0.5 * texelUv), hi = vec2(uvScale - 0.5 * texelUv);
     vec2 uv = coord.xy * uvScale;
-#if defined(FILTER_PCF)
+#if defined(RECEIVER_PLANE)
+    // Stored depth per unit of layer uv on the receiver's plane; `spread`: how far it moves
+    // between a tap's point and the centres of the texels a bilinear or nearest read uses.
+    vec2 g = receiverPlaneGradient(light, shadowCoord, coord, texelWorld, texelUv / uvScale,
+                                    wsToLight) / uvScale;
+    float spread = 0.5 * texelUv * (abs(g.x) + abs(g.y));
+#define TAP_REFERENCE(o) (reference + dot(g, (o)) - spread)
+#else
+#define TAP_REFERENCE(o) (reference)
+#endif
+#if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
+    (defined(FILTER_PCF) || defined(FILTER_HW2X2))
+    return gatherPcf(uv, layer, reference, g, texelUv, uvScale);
+#elif defined(FILTER_PCF)
     float sum = 0.0;
     const int r = PCF_SIZE / 2;
     for (int y = -r; y <= r; ++y) {
         for (int x = -r; x <= r; ++x) {
             vec2 tap = clamp(uv + vec2(x, y) * texelUv, lo, hi);
-            sum += compareDepth(tap, layer, reference);
+            sum += compareDepth(tap, layer, TAP_REFERENCE(tap - uv));
         }
     }
     return sum / float(PCF_SIZE * PCF_SIZE);
@@ -284,15 +416,24 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     float radius = 0.5 * float(PCF_SIZE) * texelUv;
     float sum = 0.0;
     for (int i = 0; i < 16; ++i) {
-        sum += compareDepth(clamp(uv + turn * kPoissonDisc[i] * radius, lo, hi), layer, reference);
+        vec2 tap = clamp(uv + turn * kPoissonDisc[i] * radius, lo, hi);
+        sum += compareDepth(tap, layer, TAP_REFERENCE(tap - uv));
     }
     return sum / 16.0;
 #elif defined(FILTER_PCSS)
-    return pcssMap(light, uv, layer, coord.z, reference, lo, hi, texelUv,
-                   light.shadow.z == kFrameOrthographic, surfaceSlope(wsNormal, wsToLight));
+#if defined(RECEIVER_PLANE)
+    vec3 plane = vec3(g, spread);
 #else
-    return compareDepth(clamp(uv, lo, hi), layer, reference);
+    vec3 plane = vec3(0.0, 0.0, -1.0);  // the tap-distance slope tolerance instead
 #endif
+    return pcssMap(light, uv, layer, coord.z, reference, lo, hi, texelUv,
+                   light.shadow.z == kFrameOrthographic, surfaceSlope(wsNormal, wsToLight),
+                   plane);
+#else
+    vec2 tap = clamp(uv, lo, hi);
+    return compareDepth(tap, layer, TAP_REFERENCE(tap - uv));
+#endif
+#undef TAP_REFERENCE
 }
 
 // Cascade of the last lookup, for --debug-view cascades (-1: none).

@@ -60,6 +60,9 @@ void RenderFlags::add(CLI::App& a) {
                  "polygon-offset factor in the depth pass (default " + str(s.biasSlope) + ")");
     a.add_option("--bias-units", biasUnits,
                  "polygon-offset units in the depth pass (default " + str(s.biasUnits) + ")");
+    a.add_option("--receiver-plane", receiverPlane,
+                 "on|off: compare each tap against the receiver's plane at the texel it reads "
+                 "(default on; off: one reference depth per lookup)");
     a.add_option("--normal-offset", normalOffset,
                  "lookup shift along the normal, in texels x the filter's reach x sin(light angle) "
                  "(default " +
@@ -148,6 +151,11 @@ void RenderFlags::apply(RenderOptions& o) const {
     if (given("--bias-depth-aware")) o.shadow.biasDepthAware = biasDepthAware;
     if (given("--bias-slope")) o.shadow.biasSlope = biasSlope;
     if (given("--bias-units")) o.shadow.biasUnits = biasUnits;
+    if (given("--receiver-plane")) {
+        if (receiverPlane != "on" && receiverPlane != "off")
+            bad("--receiver-plane", "expected on or off, got '" + receiverPlane + "'");
+        o.shadow.receiverPlane = receiverPlane == "on";
+    }
     if (given("--normal-offset")) o.shadow.normalOffset = normalOffset;
     if (given("--cull"))
         o.shadow.cull = parseEnum("--cull", cull, parseCullMode, "back, front, none");

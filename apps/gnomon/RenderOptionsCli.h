@@ -18,7 +18,7 @@ inline void printWarnings(const Scene& scene) {
 }
 
 struct RenderFlags {
-    std::string preset, debugView, size, shadows, outside, cull, filter, shadowed, depthFormat,
+    std::string preset, debugView, size, shadows, receiverPlane, outside, cull, filter, shadowed, depthFormat,
         mapFilter, blendShadows, outputEncoding;
     int lightOnly = -1, mapSize = 0, pcfSize = 3, cascades = 1;
     double time = 0.0;

@@ -591,6 +591,8 @@ private:
             flagTip("--bias-slope");
             changed(ImGui::DragFloat("bias-units", &s.biasUnits, 0.1f, 0.0f, 10000.0f));
             flagTip("--bias-units");
+            changed(ImGui::Checkbox("receiver-plane", &s.receiverPlane));
+            flagTip("--receiver-plane");
             changed(ImGui::DragFloat("normal-offset", &s.normalOffset, 0.05f, 0.0f, 100.0f));
             flagTip("--normal-offset");
             changed(enumCombo("cull", s.cull, {CullMode::Back, CullMode::Front, CullMode::None}));

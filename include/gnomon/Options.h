@@ -73,7 +73,14 @@ struct ShadowOptions {
     float biasDepthAware = 1.0f;  // + this many steps of the stored depth's spacing (S12)
     float biasSlope = 1.5f;       // glPolygonOffset factor in the depth pass, >= 0
     float biasUnits = 2.0f;       // glPolygonOffset units in the depth pass, >= 0
-    float normalOffset = 1.0f;  // lookup shift along the normal: texels x filter reach x sin(angle)
+    // Receiver-plane depth: each tap compares against the depth the receiver's own plane
+    // has at the texel it reads (Isidoro 2006; Dou et al. 2014), instead of one depth for
+    // every tap. Off: one reference depth per lookup (the textbooks').
+    bool receiverPlane = true;
+    // Lookup shift along the normal: texels x filter reach x sin(angle), 0..100. Not needed
+    // with receiverPlane (its tolerance already follows the surface); 1 is the classic
+    // companion of one reference depth per lookup.
+    float normalOffset = 0.0f;
     CullMode cull = CullMode::Back;           // faces culled in the depth pass
     ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
     int pcfSize = 3;                          // kernel width for Pcf and Poisson, odd, 1..9

@@ -35,14 +35,15 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     // Every choice that selects a variant, packed in one number: looking a program up costs
     // no allocation; the defines are spelled out only to build a new one.
     const ShadowOptions& so = options.shadow;
-    const std::uint64_t key =
-        std::uint64_t(visibilityPass) | std::uint64_t(so.enabled) << 1 |
-        std::uint64_t(so.outside) << 2 | std::uint64_t(so.filter) << 4 |
-        std::uint64_t(kernelFilter(so) ? so.pcfSize : 0) << 8 |
-        std::uint64_t(so.depthFormat) << 16 |
-        std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
-        std::uint64_t(in.shadowCubes != nullptr) << 21 | std::uint64_t(in.hasCascades) << 22 |
-        std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24;
+    const std::uint64_t key = std::uint64_t(visibilityPass) | std::uint64_t(so.enabled) << 1 |
+                              std::uint64_t(so.outside) << 2 | std::uint64_t(so.filter) << 4 |
+                              std::uint64_t(kernelFilter(so) ? so.pcfSize : 0) << 8 |
+                              std::uint64_t(so.depthFormat) << 16 |
+                              std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
+                              std::uint64_t(in.shadowCubes != nullptr) << 21 |
+                              std::uint64_t(in.hasCascades) << 22 |
+                              std::uint64_t(options.shading.shadowedRule) << 23 |
+                              std::uint64_t(material) << 24 | std::uint64_t(so.receiverPlane) << 25;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -85,6 +86,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
             break;
     }
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
+    if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
     if (in.shadowCubes) defines.push_back("HAS_CUBES");
     if (in.hasCascades) defines.push_back("HAS_CASCADES");
@@ -148,9 +150,11 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     glBindTextureUnit(1, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
     glBindSampler(0, mMapSampler.id());
     glBindSampler(1, mCubeSampler.id());
-    const bool pcss = so.filter == ShadowFilter::Pcss;
-    if (pcss) {
-        if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("shadow depth sampler (pcss)");
+    // Stored depths without comparison: PCSS's blocker search, and the receiver plane's
+    // gathers (each texel compared against its own reference).
+    const bool rawDepths = so.filter == ShadowFilter::Pcss || (so.receiverPlane && !hand);
+    if (rawDepths) {
+        if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
         glBindTextureUnit(2, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
         glBindTextureUnit(3, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
         glBindSampler(2, mRawSampler.id());
@@ -259,7 +263,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     }
     glBindSampler(0, 0);
     glBindSampler(1, 0);
-    if (pcss) {
+    if (rawDepths) {
         glBindSampler(2, 0);
         glBindSampler(3, 0);
     }

@@ -47,6 +47,7 @@ RenderOptions textbookSettings(RenderOptions o, DepthFormat format, MapFilter lo
     o.shadow.biasSlope = 0.0f;
     o.shadow.biasUnits = 0.0f;
     o.shadow.normalOffset = 0.0f;
+    o.shadow.receiverPlane = false;
     o.shadow.cull = CullMode::None;
     return o;
 }

@@ -167,6 +167,7 @@ RenderOptions presetOptions(const Scene& scene, Preset preset) {
     o.shadow.biasSlope = 0.0f;
     o.shadow.biasUnits = 0.0f;
     o.shadow.normalOffset = 0.0f;
+    o.shadow.receiverPlane = false;
     o.shadow.cull = CullMode::None;
     o.shadow.filter = ShadowFilter::None;
     o.shadow.mapFilter = MapFilter::Nearest;

@@ -670,12 +670,12 @@ Camera readCamera(const Reader& r, const Json& j, const std::string& path) {
 
 const std::vector<std::string>& optionKeys() {
     static const std::vector<std::string> k = {
-        "size",          "width",         "height",         "time",          "light-only",
-        "shadows",       "outside",       "map-size",       "bias-constant", "bias-depth-aware",
-        "bias-slope",    "bias-units",    "normal-offset",  "cull",          "filter",
-        "pcf-size",      "light-radius",  "light-angle",    "cascades",      "cascade-lambda",
-        "cascade-blend", "debug-view",    "depth-format",   "map-filter",    "blend-shadows",
-        "shadowed",      "shadow-factor", "output-encoding"};
+        "size",           "width",         "height",        "time",           "light-only",
+        "shadows",        "outside",       "map-size",      "bias-constant",  "bias-depth-aware",
+        "bias-slope",     "bias-units",    "normal-offset", "receiver-plane", "cull",
+        "filter",         "pcf-size",      "light-radius",  "light-angle",    "cascades",
+        "cascade-lambda", "cascade-blend", "debug-view",    "depth-format",   "map-filter",
+        "blend-shadows",  "shadowed",      "shadow-factor", "output-encoding"};
     return k;
 }
 
@@ -707,6 +707,7 @@ void applyOptions(const Reader& r, const Json& j, const std::string& path, Rende
     f.get("bias-slope", s.biasSlope);
     f.get("bias-units", s.biasUnits);
     f.get("normal-offset", s.normalOffset);
+    f.get("receiver-plane", s.receiverPlane);
     f.get("cull", s.cull, optionNames<CullMode>());
     f.get("filter", s.filter, optionNames<ShadowFilter>());
     f.get("pcf-size", s.pcfSize, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
@@ -1157,6 +1158,7 @@ OJson optionsJson(const RenderOptions& o) {
     j["bias-slope"] = number(s.biasSlope);
     j["bias-units"] = number(s.biasUnits);
     j["normal-offset"] = number(s.normalOffset);
+    j["receiver-plane"] = s.receiverPlane;
     j["cull"] = toString(s.cull);
     j["filter"] = toString(s.filter);
     j["pcf-size"] = s.pcfSize;

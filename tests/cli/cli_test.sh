@@ -57,7 +57,7 @@ score)
     grep -q '"false_shadow"' "$work/s/score.json" || fail "score.json lacks false_shadow"
     # No tolerance at all: acne everywhere, above any sensible bound: exit 3.
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --bias-constant 0 \
-        --bias-depth-aware 0 --bias-slope 0 --bias-units 0 --normal-offset 0 --cull none \
+        --bias-depth-aware 0 --bias-slope 0 --bias-units 0 --normal-offset 0 --cull none --receiver-plane off \
         --max-error 0.05
     expect 3 "exceeds --max-error"
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --max-error 2

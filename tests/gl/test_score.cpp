@@ -47,6 +47,7 @@ TEST(Score, NoBiasIsFalseShadowDefaultsAreNot) {
     bad.shadow.biasConstant = bad.shadow.biasDepthAware = 0.0f;
     bad.shadow.biasSlope = bad.shadow.biasUnits = bad.shadow.normalOffset = 0.0f;
     bad.shadow.cull = CullMode::None;
+    bad.shadow.receiverPlane = false;
     const ScoreResult acne = score(sharedRenderer(), s, bad);
     EXPECT_GT(acne.overall.falseShadow, 0.10);
     EXPECT_LT(acne.overall.leak, 0.001);

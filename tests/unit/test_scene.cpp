@@ -401,6 +401,7 @@ TEST(Presets, TextbookCarriesEachTextbooksNumbers) {
         // Only the constant tolerance: every other remedy is off.
         EXPECT_EQ(t.shadow.biasSlope, 0.0f);
         EXPECT_EQ(t.shadow.normalOffset, 0.0f);
+        EXPECT_FALSE(t.shadow.receiverPlane);
         EXPECT_EQ(t.shadow.biasDepthAware, 0.0f);
     }
 }

@@ -71,6 +71,7 @@ struct Compare {
         num(s.biasSlope, t.biasSlope, what + " biasSlope");
         num(s.biasUnits, t.biasUnits, what + " biasUnits");
         num(s.normalOffset, t.normalOffset, what + " normalOffset");
+        EXPECT_EQ(s.receiverPlane, t.receiverPlane) << what << " receiverPlane";
         EXPECT_EQ(s.cull, t.cull) << what << " cull";
         EXPECT_EQ(s.filter, t.filter) << what << " filter";
         EXPECT_EQ(s.pcfSize, t.pcfSize) << what << " pcfSize";
@@ -318,6 +319,7 @@ RenderOptions everyOptionChanged() {
     s.biasSlope = 0.7f;
     s.biasUnits = 3.1f;
     s.normalOffset = 0.35f;
+    s.receiverPlane = false;
     s.cull = CullMode::Front;
     s.filter = ShadowFilter::Poisson;
     s.pcfSize = 7;
