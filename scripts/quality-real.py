@@ -1,0 +1,323 @@
+#!/usr/bin/env python3
+"""Scores gnomon's shadows on real scenes: hard views of the glTF models in ../shared/scenes
+(beside the repository) and glmark2's horse, each against the ray-traced reference with
+`gnomon score`. Prints a markdown table; --out writes it as a doc page with the error maps.
+Run from anywhere after `make build`:
+
+    scripts/quality-real.py [--scenes DIR] [--size WxH] [--flags "--pcf-size 5"] [--only A,B]
+                            [--out docs/quality-real.md] [--out-dir DIR]
+    scripts/quality-real.py --list
+    scripts/quality-real.py --write-scene VIEW FILE   # exit 77 when VIEW's model is absent
+
+VIEWS below is the one list of views: tests/real/real_scenes_test.sh writes its scene files
+with --write-scene, so a view tuned here is the view tested there.
+"""
+import argparse
+import json
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+GNOMON = os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
+SCENES = os.path.join(os.path.dirname(ROOT), "shared", "scenes")
+SKIP = 77  # CTest's SKIP_RETURN_CODE in tests/real
+
+
+def sun(x, y, z, intensity=1.0):
+    return {"type": "directional", "direction": [x, y, z], "intensity": intensity}
+
+
+# Each view is a case where shadow maps are known to struggle, found by rendering and looking
+# at the error maps: contact shadows under ledges (bias and normal offset lift the shadow off),
+# thin and open geometry, long shadows that stretch one map over a large area, tiny world units
+# (fixed tolerances and near planes), point lights' cube faces. Keys:
+#   name, model (relative to --scenes, or absolute), why (one line for the doc),
+#   camera (a scene-file camera; absent: the file's, else gnomon frames the model),
+#   lights (scene-file lights; absent: the file's, else gnomon's default sun),
+#   ground (gnomon's grey ground under the model), transform (of the include), flags (extra
+#   `gnomon score` flags this view always needs).
+SPONZA = "DabrovicSponza/dabrovic_sponza.glb"
+LANTERN = "Lantern/Lantern.gltf"
+SUZANNE = "Suzanne/Suzanne.gltf"
+DRAGON = "StanfordDragon/stanford_dragon_vrip.gltf"
+TOYCAR = "ToyCar/ToyCar.gltf"
+LAMP = "LightsPunctualLamp/LightsPunctualLamp.gltf"
+SPHERES = "MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb"
+# glmark2-data (Debian) ships the horse of glmark2's shadow scene; scripts/deps.sh installs it.
+HORSE = "/usr/share/glmark2/models/horse.3ds"
+# assimp turns the 3DS file's Z-up into Y-up; glmark2 draws the raw coordinates with Y up (a
+# rearing horse), which is +90 degrees about X from assimp's pose.
+HORSE_POSE = {"rotate": {"axis": [1, 0, 0], "degrees": 90}}
+
+VIEWS = [
+    {"name": "sponza-atrium", "model": SPONZA, "ground": False,
+     "why": "inside the atrium at floor level looking along it; a steep sun (72 degrees) "
+            "through the open roof onto arcades, capitals and ledges",
+     "camera": {"eye": [-10.5, 1.6, -1.2], "centre": [10, 4.5, 0], "fovy": 65, "near": 0.05,
+                "far": 60},
+     "lights": [sun(0.2, -1, -0.25)]},
+    {"name": "sponza-gallery", "model": SPONZA, "ground": False,
+     "why": "from the first-floor gallery across the atrium: a sun and a spot light in the "
+            "gallery shining down between the columns",
+     "camera": {"eye": [-4.4, 8.0, 6.5], "centre": [3, 2, -2.5], "fovy": 65, "near": 0.05,
+                "far": 60},
+     "lights": [sun(0.3, -1, -0.35, 0.7),
+                {"type": "spot", "position": [4.4, 8.8, 6.5], "direction": [-0.3, -1, -1],
+                 "attenuation": [1, 0, 0.02], "inner-cone": 30, "outer-cone": 40}]},
+    {"name": "sponza-arcade-point", "model": SPONZA, "ground": False,
+     "why": "along the ground-floor arcade: a point light low between two columns, radial "
+            "column shadows over floor, vaults and walls",
+     "camera": {"eye": [-10, 1.7, 5.5], "centre": [3, 1.2, 2], "fovy": 70, "near": 0.05,
+                "far": 60},
+     "lights": [{"type": "point", "position": [-4.4, 1.0, 3.6], "attenuation": [1, 0, 0.1]}]},
+    {"name": "lantern-default", "model": LANTERN, "ground": True,
+     "why": "the framing camera and default sun: contact shadows under the metal bands"},
+    {"name": "lantern-lamp", "model": LANTERN, "ground": True,
+     "why": "close-up of the arm and hanging lamp: small overhangs and thin chain",
+     "camera": {"eye": [16, 22, 14], "centre": [6, 18, 0], "fovy": 45, "near": 0.2,
+                "far": 400}},
+    {"name": "lantern-base", "model": LANTERN, "ground": True,
+     "why": "close-up of the plinth: the ledge over its stone block and the ground contact",
+     "camera": {"eye": [6, 5, 9], "centre": [0, 1.5, 0], "fovy": 50, "near": 0.2, "far": 400}},
+    {"name": "lantern-low-sun", "model": LANTERN, "ground": True,
+     "why": "a sun 12.5 degrees high: a shadow about 115 units long (the post is 26) across "
+            "the ground",
+     "camera": {"eye": [70, 40, 50], "centre": [30, 0, -35], "fovy": 60, "near": 0.5,
+                "far": 400},
+     "lights": [sun(0.7, -0.22, -0.7)]},
+    {"name": "lantern-low-sun-eye", "model": LANTERN, "ground": True,
+     "why": "the same sun from eye level beside the plinth, looking along the long shadow",
+     "camera": {"eye": [-6, 5, 14], "centre": [30, 0, -30], "fovy": 60, "near": 0.2,
+                "far": 400},
+     "lights": [sun(0.7, -0.22, -0.7)]},
+    {"name": "suzanne-grazing", "model": SUZANNE, "ground": True,
+     "why": "smooth self-shadowing (brows, eye sockets, ears) under a sun 20 degrees high",
+     "camera": {"eye": [1.6, 0.8, 3.4], "centre": [0, -0.2, 0], "fovy": 45, "near": 0.05,
+                "far": 50},
+     "lights": [sun(0.8, -0.35, -0.5)]},
+    {"name": "suzanne-back", "model": SUZANNE, "ground": True,
+     "why": "from behind-left: the terminator over the curved skull and the ear's shadow",
+     "camera": {"eye": [-3.2, 0.4, -1.5], "centre": [0.3, -0.3, 0], "fovy": 45, "near": 0.05,
+                "far": 50},
+     "lights": [sun(0.8, -0.35, -0.5)]},
+    {"name": "dragon-grazing", "model": DRAGON, "ground": True,
+     "why": "a dense scanned mesh 0.2 units long: scales and folds shadowing each other, sun "
+            "24 degrees high",
+     "camera": {"eye": [0.15, 0.2, 0.3], "centre": [0, 0.11, 0], "fovy": 45, "near": 0.01,
+                "far": 5},
+     "lights": [sun(-0.8, -0.42, -0.45)]},
+    {"name": "dragon-spot", "model": DRAGON, "ground": True,
+     "why": "a spot light above and in front of the dragon, its shadow on the ground",
+     "camera": {"eye": [-0.18, 0.17, 0.22], "centre": [0, 0.1, 0], "fovy": 45, "near": 0.01,
+                "far": 5},
+     "lights": [{"type": "spot", "position": [0.05, 0.4, 0.25], "direction": [-0.05, -0.3, -0.25],
+                 "inner-cone": 22, "outer-cone": 30}]},
+    {"name": "toycar-file-camera", "model": TOYCAR, "ground": True,
+     "why": "the file's camera and default sun: a car a few centimetres long on a draped cloth"},
+    {"name": "toycar-side-low-sun", "model": TOYCAR, "ground": True,
+     "why": "close to the sills and wheels, sun 20 degrees high: contact shadows at millimetre "
+            "scale",
+     "camera": {"eye": [0.035, 0.012, 0.035], "centre": [0, 0, 0], "fovy": 50, "near": 0.001,
+                "far": 2},
+     "lights": [sun(-0.8, -0.35, 0.45)]},
+    {"name": "lamp-default", "model": LAMP, "ground": True,
+     "why": "the file's five point lights around the lamp, framing camera"},
+    {"name": "lamp-stem", "model": LAMP, "ground": True,
+     "why": "the file's five point lights, close to the curved stem and its base",
+     "camera": {"eye": [-0.9, 0.9, 1.4], "centre": [0.1, 0.6, 0], "fovy": 50, "near": 0.01,
+                "far": 20}},
+    {"name": "spheres-default", "model": SPHERES, "ground": True,
+     "why": "a 1M-triangle grid of spheres 7 mm across, framing camera and default sun"},
+    {"name": "spheres-grazing", "model": SPHERES, "ground": True,
+     "why": "the sphere grid under a sun 17 degrees high, with its labels' thin shadows",
+     "camera": {"eye": [0.009, 0.004, 0.009], "centre": [0.0028, 0.0025, -0.0015], "fovy": 45,
+                "near": 0.0005, "far": 1},
+     "lights": [sun(-0.9, -0.3, -0.3)]},
+    {"name": "horse-glmark2", "model": HORSE, "transform": HORSE_POSE, "ground": True,
+     "why": "glmark2's shadow scene: its camera (model centre + 2 + radius along z, near 2) "
+            "and its light at (0, 3, 2), here a point light",
+     "camera": {"eye": [0, 0, 3.13], "centre": [0, 0, 0], "fovy": 39.7, "near": 2, "far": 50},
+     "lights": [{"type": "point", "position": [0, 3, 2]}]},
+    {"name": "horse-spot", "model": HORSE, "transform": HORSE_POSE, "ground": True,
+     "why": "the same light as a spot light aimed at the model, seen from the front-right",
+     "camera": {"eye": [2.2, 0.2, 2.2], "centre": [0, -0.3, 0], "fovy": 45, "near": 0.1,
+                "far": 50},
+     "lights": [{"type": "spot", "position": [0, 3, 2], "direction": [0, -3, -2],
+                 "inner-cone": 25, "outer-cone": 35}]},
+]
+
+
+def model_path(view, scenes):
+    return view["model"] if os.path.isabs(view["model"]) else os.path.join(scenes, view["model"])
+
+
+def scene_document(view, scenes):
+    include = {"scene": os.path.abspath(model_path(view, scenes))}
+    if "transform" in view:
+        include["transform"] = view["transform"]
+    doc = {"gnomon-scene": 1, "name": view["name"], "description": view["why"],
+           "include": [include], "ground": view["ground"]}
+    for key in ("camera", "lights"):
+        if key in view:
+            doc[key] = view[key]
+    return doc
+
+
+def write_scene(view, scenes, path):
+    # Written beside the target and renamed, so a reader never sees half a file.
+    with open(path + ".tmp", "w") as f:
+        json.dump(scene_document(view, scenes), f, indent=1)
+        f.write("\n")
+    os.replace(path + ".tmp", path)
+
+
+def find_view(name):
+    for view in VIEWS:
+        if view["name"] == name:
+            return view
+    sys.exit(f"unknown view '{name}'; views: {', '.join(v['name'] for v in VIEWS)}")
+
+
+def score(scene_file, out_dir, flags):
+    args = [GNOMON, "score", "--scene", scene_file, "--out-dir", out_dir] + flags
+    result = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if result.returncode != 0:
+        sys.exit(f"{' '.join(shlex.quote(a) for a in args)} failed ({result.returncode}):\n"
+                 f"{result.stderr}")
+    with open(os.path.join(out_dir, "score.json")) as f:
+        return json.load(f)["overall"]
+
+
+def version():
+    # The commit the numbers belong to; "-dirty" when the working tree had changes.
+    result = subprocess.run(["git", "-C", ROOT, "describe", "--always", "--dirty"],
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    return result.stdout.strip() or "unknown"
+
+
+def pct(v):
+    return f"{100.0 * v:.3f}"
+
+
+def table(rows, link=False):
+    lines = ["| view | misclassified % | false shadow % | leak % "
+             "| false shadow outside band % | leak outside band % | error map |",
+             "|---|---|---|---|---|---|---|"]
+    for name, s, errors in rows:
+        if s is None:
+            lines.append(f"| {name} | skipped: {errors} | | | | | |")
+            continue
+        lines.append(f"| {name} | {pct(s['misclassified'])} | {pct(s['false_shadow'])} | "
+                     f"{pct(s['leak'])} | {pct(s['false_shadow_outside_band'])} | "
+                     f"{pct(s['leak_outside_band'])} | "
+                     f"{f'[errors.png]({errors})' if link else errors} |")
+    return lines
+
+
+def document(rows, views, size, flags):
+    lines = [
+        "# Shadow quality on real scenes",
+        "",
+        "Produced by `scripts/quality-real.py --out docs/quality-real.md` (do not edit by hand).",
+        "Each row is one `gnomon score` run of a hard view of a real model against the Embree",
+        f"reference at {size}, with gnomon's default options"
+        + (f" plus `{' '.join(flags)}`" if flags else "") + f" (gnomon {version()}).",
+        "The models come from `../shared/scenes` beside the repository, and the horse from",
+        "Debian's `glmark2-data`. Columns as in [quality.md](quality.md): percentages of the",
+        "pixels where a light's shadow can show, summed over lights; *outside band* leaves out",
+        "pixels within 2 map texels of a reference shadow edge. In the error maps false shadow",
+        "is red and leaks are blue (pale inside the band).",
+        "",
+        "`tests/real` (CTest) scores `sponza-gallery`, `lantern-low-sun` and `dragon-spot` at",
+        "192×192 and fails above misclassified 1 %, false shadow outside band 0.05 % or leak",
+        "outside band 0.1 %, the bounds every view is meant to meet. Not met yet: the",
+        "atrium's ledges need finer maps than one 1024² map over the whole building gives, the",
+        "lamp's stem and glmark2's horse are lit by point lights, whose cube maps leak there.",
+        "",
+    ] + table(rows, link=True) + ["", "## Views", ""]
+    for view in views:
+        lines.append(f"- **{view['name']}** (`{os.path.basename(view['model'])}`"
+                     f"{', ground' if view['ground'] else ''}): {view['why']}.")
+    # Three maps a row, as the README's gallery: a page of 20 full-width images is too long.
+    maps = [(name, errors) for name, s, errors in rows if s is not None]
+    lines += ["", "## Error maps", "", "| | | |", "|---|---|---|"]
+    for i in range(0, len(maps), 3):
+        cells = [f"![{n}]({e}) {n}" for n, e in maps[i:i + 3]]
+        lines.append("| " + " | ".join(cells + [""] * (3 - len(cells))) + " |")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--scenes", default=SCENES, help="the shared scenes folder")
+    parser.add_argument("--size", default="384x384", help="output size of every view")
+    parser.add_argument("--flags", default="", help="gnomon score flags added to every view")
+    parser.add_argument("--only", default="", help="comma-separated view names")
+    parser.add_argument("--out", help="write this markdown page, error maps beside it in "
+                                      "images/quality-real/")
+    parser.add_argument("--out-dir", default=os.path.join(ROOT, "out", "quality-real"),
+                        help="where each view's render.png, errors.png and score.json go")
+    parser.add_argument("--list", action="store_true", help="print the view names")
+    parser.add_argument("--write-scene", nargs=2, metavar=("VIEW", "FILE"),
+                        help="only write VIEW's scene file (exit 77 when its model is absent)")
+    args = parser.parse_args()
+
+    if args.list:
+        print("\n".join(v["name"] for v in VIEWS))
+        return
+    if args.write_scene:
+        view = find_view(args.write_scene[0])
+        model = model_path(view, args.scenes)
+        if not os.path.isfile(model):
+            print(f"skipped: {view['name']}: no {model}", file=sys.stderr)
+            sys.exit(SKIP)
+        write_scene(view, args.scenes, args.write_scene[1])
+        return
+    if not os.access(GNOMON, os.X_OK):
+        sys.exit(f"{GNOMON} not found: run `make build` first")
+
+    views = [find_view(n) for n in args.only.split(",")] if args.only else VIEWS
+    flags = shlex.split(args.flags)
+    out_dir = args.out_dir
+    images = None
+    if args.out:
+        images = os.path.join(os.path.dirname(os.path.abspath(args.out)), "images",
+                              "quality-real")
+        os.makedirs(images, exist_ok=True)
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        if args.out:
+            out_dir = os.path.join(work, "out")  # only the error maps are kept, in images/
+        for view in views:
+            model = model_path(view, args.scenes)
+            if not os.path.isfile(model):
+                print(f"quality-real: {view['name']}: skipped, no {model}", file=sys.stderr)
+                rows.append((view["name"], None, f"no {os.path.basename(model)}"))
+                continue
+            print(f"quality-real: {view['name']}", file=sys.stderr)
+            scene_file = os.path.join(work, view["name"] + ".json")
+            write_scene(view, args.scenes, scene_file)
+            view_dir = os.path.join(out_dir, view["name"])
+            s = score(scene_file, view_dir,
+                      ["--size", args.size] + view.get("flags", []) + flags)
+            errors = os.path.join(view_dir, "errors.png")
+            if images:
+                shutil.copyfile(errors, os.path.join(images, view["name"] + ".png"))
+                errors = f"images/quality-real/{view['name']}.png"
+            rows.append((view["name"], s, errors))
+
+    if args.out:
+        with open(args.out + ".tmp", "w") as f:
+            f.write("\n".join(document(rows, views, args.size, flags)) + "\n")
+        os.replace(args.out + ".tmp", args.out)
+        print(f"wrote {args.out}", file=sys.stderr)
+    else:
+        print("\n".join(table(rows)))
+
+
+if __name__ == "__main__":
+    main()
