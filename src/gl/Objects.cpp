@@ -42,6 +42,12 @@ Texture Texture::array2D(const std::string& label, GLenum internalFormat, int wi
     return Texture(n, internalFormat, width, height, layers);
 }
 
+bool Texture::allocated() const {
+    GLint immutable = GL_FALSE;
+    if (id() != 0) glGetTextureParameteriv(id(), GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+    return immutable == GL_TRUE;
+}
+
 Texture Texture::cubeArray(const std::string& label, GLenum internalFormat, int size, int cubes) {
     GLuint n = 0;
     glCreateTextures(GL_TEXTURE_CUBE_MAP_ARRAY, 1, &n);

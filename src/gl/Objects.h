@@ -73,6 +73,9 @@ public:
     // A 2D view of `source`'s first level in a compatible format (SRGB8_ALPHA8 as RGBA8:
     // the stored bytes, undecoded), sharing its storage; NEAREST filtering.
     static Texture view2D(const std::string& label, const Texture& source, GLenum viewFormat);
+    // False when the driver refused the storage (out of memory, or beyond its limits): the
+    // object exists but has no images. Checked by the texture itself, not the error queue.
+    bool allocated() const;
     int width() const { return mWidth; }
     int height() const { return mHeight; }
     int layers() const { return mLayers; }  // array layers; cube arrays: 6 per cube

@@ -1,10 +1,11 @@
 #include "render/ShadowPass.h"
 
 #include <algorithm>
-
 #include <chrono>
+#include <cstdio>
 
 #include "gl/Program.h"
+#include "gnomon/Error.h"
 #include "render/PassClock.h"
 #include "shadow/DepthPacking.h"
 
@@ -64,6 +65,28 @@ GLenum nativeFormat(DepthFormat format) {
     }
 }
 
+namespace {
+std::size_t texelBytes(GLenum format) {
+    return format == GL_DEPTH_COMPONENT16 ? 2 : 4;  // 24-bit depth is stored in 32 bits
+}
+
+// The driver would not store the maps a frame needs: one sentence with what was asked, its
+// size and what to lower, instead of an incomplete framebuffer later.
+[[noreturn]] void refused(const std::string& what, std::size_t bytes) {
+    char size[32];
+    std::snprintf(size, sizeof size, "%.2f GiB", double(bytes) / double(1u << 30));
+    GLint maxLayers = 0, maxSize = 0;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    throw Error(ErrorKind::InvalidInput,
+                "shadow maps: " + what + " need " + size +
+                    " in one texture, which the OpenGL driver refused (its limits: " +
+                    std::to_string(maxSize) + "² texels, " + std::to_string(maxLayers) +
+                    " layers, and the memory it can allocate); lower --map-size or the number "
+                    "of shadowed lights");
+}
+}  // namespace
+
 void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
     const bool colour = isColourFormat(format);
     mMapFormat = format;
@@ -76,6 +99,12 @@ void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
     } else {
         mMaps = gl::Texture::array2D("shadow maps", nativeFormat(format), size, size, layers);
         setCompare(mMaps.id());
+    }
+    if (!mMaps.allocated() || (colour && !mColourDepth.allocated())) {
+        const std::size_t perTexel = colour ? 8 : texelBytes(nativeFormat(format));
+        refused(
+            std::to_string(layers) + " maps of " + std::to_string(size) + "² " + toString(format),
+            std::size_t(size) * std::size_t(size) * std::size_t(layers) * perTexel);
     }
     for (int layer = 0; layer < layers; ++layer) {
         const std::string label = "shadow map layer " + std::to_string(layer);
@@ -96,6 +125,12 @@ void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
 
 void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
     mCubes = gl::Texture::cubeArray("point shadow cubes", nativeFormat(format), size, cubes);
+    if (!mCubes.allocated()) {
+        refused(std::to_string(cubes) + " cube maps of 6 x " + std::to_string(size) + "² " +
+                    toString(isColourFormat(format) ? DepthFormat::Depth32F : format),
+                std::size_t(size) * std::size_t(size) * 6u * std::size_t(cubes) *
+                    texelBytes(nativeFormat(format)));
+    }
     setCompare(mCubes.id());
     mCubeFaceFramebuffers.clear();
     if (mLayered) {
@@ -112,12 +147,6 @@ void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
     }
     mCubeLayers.assign(size_t(cubes), LayerState{});
 }
-
-namespace {
-std::size_t texelBytes(GLenum format) {
-    return format == GL_DEPTH_COMPONENT16 ? 2 : 4;  // 24-bit depth is stored in 32 bits
-}
-}  // namespace
 
 std::size_t ShadowPass::bytes() const {
     std::size_t total = 0;

@@ -17,6 +17,16 @@ skip_without_gl() {
 }
 
 case $case in
+map_memory)
+    # 14 maps of 8192^2 depth32f (3.5 GiB in one array): one sentence with the size and what to
+    # lower, exit 2, and no image left behind. llvmpipe refuses any texture over its size limit
+    # (well below 3.5 GiB); a driver that stored it would fail here with exit 0.
+    run render --scene mixed-lights --map-size 8192 --size 32x32 --out "$work/m.png"
+    skip_without_gl
+    expect 2 "need 3.50 GiB in one texture"
+    expect 2 "lower --map-size or the number of shadowed lights"
+    [[ ! -e "$work/m.png" ]] || fail "a refused render left m.png behind"
+    ;;
 bench)
     run bench --scene tutorial-room --size 64x64 --frames 2 --warmup 1 --out-dir "$work/b"
     skip_without_gl
