@@ -311,9 +311,9 @@ LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, flo
     return f;
 }
 
-// Six faces around the light reaching the farthest receiver corner; near as close as depth
-// precision allows (geometry nearer than near still casts: the pass clamps depth for fitted
-// lights).
+// Six faces around the light reaching the farthest receiver corner; near just before the
+// nearest caster, no nearer than depth precision allows (geometry nearer than near still
+// casts: the pass clamps depth for fitted lights).
 LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int mapSize) {
     LightCameraFrame f;
     f.kind = FrameKind::Cube;
@@ -325,11 +325,21 @@ LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int m
             farthest = std::max(farthest, glm::length(c - position));
     }
     if (!(farthest > 0.0f)) return f;
+    // A face's depth is the distance along its axis, the largest of |dx|, |dy|, |dz|, which is
+    // as small as 1/sqrt(3) of the Euclidean distance towards a face's corners. A near plane
+    // at the Euclidean distance cuts into casters there: depth clamp stores them at 0, the
+    // receivers they shadow also lie in front of near (same ray, same face), their reference
+    // depth is <= 0 too and the comparison passes: lit. So near is the nearest caster's
+    // depth along the axes. Clamping the light into the box minimises every |d| at once, so
+    // it also gives the box's smallest largest-component. Casters beyond every receiver
+    // (Euclidean) shadow none and are not waited for.
     float nearestCaster = std::numeric_limits<float>::max();
     for (const Aabb& c : *boxes.casters) {
         if (c.empty()) continue;
-        const float d = glm::length(glm::clamp(position, c.min, c.max) - position);
-        if (d <= farthest) nearestCaster = std::min(nearestCaster, d);
+        const glm::vec3 d = glm::abs(glm::clamp(position, c.min, c.max) - position);
+        if (glm::length(d) <= farthest) {
+            nearestCaster = std::min(nearestCaster, std::max({d.x, d.y, d.z}));
+        }
     }
     if (nearestCaster == std::numeric_limits<float>::max()) return f;
     f.valid = true;

@@ -70,7 +70,8 @@ struct FitScene {
 //   map nor make its edges shimmer;
 // - spot lights: the cone (fovy = 2 x outer angle), near at the nearest caster, far at the
 //   farthest receiver inside it;
-// - point lights: six faces reaching the farthest visible receiver.
+// - point lights: six faces reaching the farthest visible receiver, near before the nearest
+//   caster along the faces' axes (a face's depth is the largest of |dx|, |dy|, |dz|).
 // Invalid (no map needed) when no receiver is visible or no caster can shadow one.
 // `mapSize` sets texelWorldSize.
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const FitScene& scene,

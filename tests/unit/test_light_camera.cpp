@@ -363,6 +363,32 @@ TEST(LightCamera, PointFitFromInsideIsACubeHoldingEveryCorner) {
     expectCubeHolds(point, bounds);
 }
 
+// A cube face's depth runs along its axis: a caster towards a corner of the face is nearer
+// there than its Euclidean distance (here 1 against 1.41). A near plane beyond it flattens
+// the caster and the receiver behind it (1.25 along the axis) to depth 0 and the receiver
+// reads lit: glmark2's horse under a point light at (0, 3, 2) lost its head's shadow so.
+TEST(LightCamera, PointFitNearIsInFrontOfCastersTowardsAFaceCorner) {
+    Light point;
+    point.type = LightType::Point;
+    point.position = glm::vec3(0.0f);
+    Aabb caster, receiver;
+    caster.extend(glm::vec3(1.0f, 0.7f, 0.7f));
+    caster.extend(glm::vec3(1.05f, 0.9f, 0.9f));
+    receiver.extend(glm::vec3(1.25f, 0.5f, 0.5f));
+    receiver.extend(glm::vec3(1.3f, 1.2f, 1.2f));
+    shadow::FitScene scene;
+    scene.casters = {caster, receiver};
+    scene.receivers = {caster, receiver};
+    const auto f = shadow::lightCameraFrame(point, Camera{}, scene, 1024);
+    ASSERT_TRUE(f.valid);
+    ASSERT_EQ(f.kind, shadow::FrameKind::Cube);
+    EXPECT_LE(f.near, 1.0f) << "near cuts into the caster along the +X face's axis";
+    EXPECT_GE(f.near, 0.9f) << "near no longer hugs the nearest caster: precision wasted";
+    for (const glm::vec3& c : caster.corners()) {
+        EXPECT_GE(shadow::cubeStoredDepth(c - point.position, f.near, f.far), 0.0f);
+    }
+}
+
 // OpenGL 4.5 spec, table 8.19: for a direction r, the face of the major axis ma and
 // s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2 with, per face, (sc, tc) =
 // +X: (-rz, -ry)  -X: (+rz, -ry)  +Y: (+rx, +rz)  -Y: (+rx, -rz)  +Z: (+rx, -ry)  -Z: (-rx, -ry).
