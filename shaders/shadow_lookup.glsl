@@ -297,6 +297,12 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     // a perspective projection), and its half-texel spread for the bilinear comparisons.
     vec2 g = vec2(cubePlaneDepth(toPoint, u * step, near, far) - stored,
                   cubePlaneDepth(toPoint, v * step, near, far) - stored) / step;
+    // Capped as for single maps: no steeper than a surface tilted kPlaneMaxSlope, whose depth
+    // changes that many steps per step across the light.
+    float along = max(1.0 - kPlaneMaxSlope * step / length(toPoint), 1e-3);
+    float maxPerWorld = abs(stored - cubePlaneDepth(toPoint * along, vec3(0.0), near, far)) / step;
+    float steep = length(g);
+    if (steep > maxPerWorld) g *= maxPerWorld / steep;
     float spread = 0.5 * step * (abs(g.x) + abs(g.y));
 #define CUBE_REFERENCE(o) (reference + dot(g, (o)) - spread)
 #else
