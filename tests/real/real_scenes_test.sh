@@ -3,7 +3,8 @@
 # low sun, a spot light, point lights; its VIEWS are the one definition, written out with
 # --write-scene) scored against the ray-traced reference at 192x192. Fails when a view's
 # overall misclassified fraction reaches 1 %, its false shadow outside the aliasing band
-# 0.05 %, or its leak outside the band 0.1 %: those are errors a viewer sees (acne, peter-panning, missed casters), not the edge aliasing every map has.
+# 0.05 %, or its leak outside the band 0.1 %: those are errors a viewer sees (acne,
+# peter-panning, missed casters), not the edge aliasing every map has.
 # Usage: real_scenes_test.sh GNOMON_BINARY SHARED_SCENES_DIR WORKDIR
 # Exit 77 (skipped) without the shared scenes, one of the models, or a usable OpenGL.
 set -uo pipefail
