@@ -18,8 +18,8 @@ inline void printWarnings(const Scene& scene) {
 }
 
 struct RenderFlags {
-    std::string preset, debugView, size, shadows, receiverPlane, outside, cull, filter, shadowed, depthFormat,
-        mapFilter, blendShadows, outputEncoding;
+    std::string preset, debugView, size, shadows, receiverPlane, outside, cull, filter, shadowed,
+        depthFormat, mapFilter, blendShadows, outputEncoding;
     int lightOnly = -1, mapSize = 0, pcfSize = 3, cascades = 1;
     double time = 0.0;
     float cascadeLambda = 0, cascadeBlend = 0, lightRadius = 0, lightAngle = 0;
