@@ -1,4 +1,5 @@
-// `gnomon view`: the interactive shadow lab (SPEC S26-S27). A GLFW window with Dear ImGui:
+// `gnomon view`: the interactive shadow lab (W. Brown, Learn Computer Graphics using WebGL,
+// 12.6: an interactive shadow program). A GLFW window with Dear ImGui:
 // the camera's view beside the selected light's shadow map, a control for every render
 // option, live pass times, one-click ground-truth scores with an error overlay, presets,
 // save/load as scene files, and screenshots equal to `gnomon render`'s. docs/viewer.md.
