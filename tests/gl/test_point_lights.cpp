@@ -15,15 +15,21 @@
 namespace gnomon::test {
 namespace {
 
-// Light at the origin; on axis a: a caster near the light, offset along b, and a receiver
-// plate facing the light further out. Camera looking at plate `face` from beside the light.
-Scene sixAxes(int face) {
+// An empty scene with one light grey, double-sided material (plates lit from either side).
+Scene greyScene(const std::string& name) {
     Scene s;
-    s.name = "six axes";
+    s.name = name;
     Material m;
     m.baseColour = glm::vec3(0.9f);
     m.doubleSided = true;
     s.materials.push_back(m);
+    return s;
+}
+
+// Light at the origin; on axis a: a caster near the light, offset along b, and a receiver
+// plate facing the light further out. Camera looking at plate `face` from beside the light.
+Scene sixAxes(int face) {
+    Scene s = greyScene("six axes");
     const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (int i = 0; i < 6; ++i) {
         const glm::vec3 a = axes[i];
@@ -111,12 +117,7 @@ INSTANTIATE_TEST_SUITE_P(Faces, SixAxes, testing::Range(0, 6), faceName);
 // in front of the caster along the axis; at the caster's Euclidean distance the plate read
 // lit under the caster's shadow (the leak on glmark2's horse under a point light).
 Scene towardsAFaceCorner() {
-    Scene s;
-    s.name = "towards a face corner";
-    Material m;
-    m.baseColour = glm::vec3(0.9f);
-    m.doubleSided = true;
-    s.materials.push_back(m);
+    Scene s = greyScene("towards a face corner");
     s.meshes.push_back(mesh::box("caster", {1.025f, 0.8f, 0.8f}, {0.05f, 0.2f, 0.2f}));
     s.objects.push_back({"caster", 0, 0, glm::mat4(1.0f), {}, true, true});
     s.meshes.push_back(mesh::box("plate", {1.275f, 0.85f, 0.85f}, {0.05f, 0.7f, 0.7f}));
