@@ -139,17 +139,13 @@ const int kGatherRadius = PCF_SIZE / 2;
 #else
 const int kGatherRadius = 0;
 #endif
-float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, float texelUv,
-                float uvScale) {
+float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, float spread,
+                float texelUv, float uvScale) {
     const int r = kGatherRadius;
     vec2 s = uv / texelUv - 0.5;  // in texels of the layer: texel i's centre is at i
     vec2 base = floor(s);
     vec2 f = s - base;
     vec2 g = gradientUv * texelUv;  // stored depth per texel along the layer's axes
-    // Half a texel of the plane's slope, as the bilinear paths allow: the rasteriser's depth
-    // at a texel differs from the exact plane by up to that much near the edges of steep
-    // casters (measured: a quarter texel is not enough on the tutorial room's walls).
-    float margin = 0.5 * (abs(g.x) + abs(g.y));
     float last = floor(uvScale / texelUv + 0.5) - 2.0;  // the map's last 2x2 block start
     float sum = 0.0;
     for (int my = 0; my <= r; ++my) {
@@ -162,7 +158,7 @@ float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, float te
             // z (k+1, k), w (k, k) as (column, row).
             vec4 d = textureGather(uShadowDepths, vec3((vec2(kx, ky) + 1.0) * texelUv, layer));
             vec4 along = dot(g, vec2(kx, ky) - s) + vec4(g.y, g.x + g.y, g.x, 0.0);
-            vec4 refs = reference + along - margin;
+            vec4 refs = reference + along - spread;
             vec4 w = vec4(wx.x * wy.y, wx.y * wy.y, wx.y * wy.x, wx.x * wy.x);
             sum += dot(step(refs, d), w);
         }
@@ -397,6 +393,9 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 #if defined(RECEIVER_PLANE)
     // Stored depth per unit of layer uv on the receiver's plane; `spread`: how far it moves
     // between a tap's point and the centres of the texels a bilinear or nearest read uses.
+    // The gathers, which compare at texel centres, keep it too: measured, without it (or with
+    // a quarter texel) single pixels darken along lines on the tutorial room's lit walls; the
+    // cause was not pinned down.
     vec2 g = receiverPlaneGradient(light, shadowCoord, coord, texelWorld, texelUv / uvScale,
                                     wsToLight) / uvScale;
     float spread = 0.5 * texelUv * (abs(g.x) + abs(g.y));
@@ -406,7 +405,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 #endif
 #if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
     (defined(FILTER_PCF) || defined(FILTER_HW2X2))
-    return gatherPcf(uv, layer, reference, g, texelUv, uvScale);
+    return gatherPcf(uv, layer, reference, g, spread, texelUv, uvScale);
 #elif defined(FILTER_PCF)
     float sum = 0.0;
     const int r = PCF_SIZE / 2;
