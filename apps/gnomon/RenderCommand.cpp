@@ -82,8 +82,13 @@ void RenderFlags::add(CLI::App& a) {
                  "pcss: angular radius of directional lights, degrees 0..20 (default " +
                      str(s.lightAngle) + ")");
     a.add_option("--cascades", cascades,
-                 "fitted directional lights: 1..4 cascaded maps along the view (default " +
-                     str(s.cascades) + ")");
+                 "fitted directional lights: auto|1..4 cascaded maps along the view; auto: one "
+                 "per factor of 8 in the depth the view sees (default auto)");
+    a.add_option("--fit-to", fitTo,
+                 "view-depth|boxes: what fitted directional and area lights' maps cover: the "
+                 "points a coarse depth pre-pass of the view sees, or the visible receivers' "
+                 "boxes (default " +
+                     std::string(toString(s.fitTo)) + ")");
     a.add_option(
         "--cascade-lambda", cascadeLambda,
         "cascade splits: 0 uniform .. 1 logarithmic (default " + str(s.cascadeLambda) + ")");
@@ -165,7 +170,17 @@ void RenderFlags::apply(RenderOptions& o) const {
     if (given("--pcf-size")) o.shadow.pcfSize = pcfSize;
     if (given("--light-radius")) o.shadow.lightRadius = lightRadius;
     if (given("--light-angle")) o.shadow.lightAngle = lightAngle;
-    if (given("--cascades")) o.shadow.cascades = cascades;
+    if (given("--cascades")) {
+        if (cascades == "auto") {
+            o.shadow.cascades = 0;
+        } else if (cascades.size() == 1 && cascades[0] >= '1' && cascades[0] <= '4') {
+            o.shadow.cascades = cascades[0] - '0';
+        } else {
+            bad("--cascades", "expected auto or 1..4, got '" + cascades + "'");
+        }
+    }
+    if (given("--fit-to"))
+        o.shadow.fitTo = parseEnum("--fit-to", fitTo, parseFitTo, "view-depth, boxes");
     if (given("--cascade-lambda")) o.shadow.cascadeLambda = cascadeLambda;
     if (given("--cascade-blend")) o.shadow.cascadeBlend = cascadeBlend;
     if (given("--debug-view")) {

@@ -19,8 +19,8 @@ inline void printWarnings(const Scene& scene) {
 
 struct RenderFlags {
     std::string preset, debugView, size, shadows, receiverPlane, outside, cull, filter, shadowed,
-        depthFormat, mapFilter, blendShadows, outputEncoding;
-    int lightOnly = -1, mapSize = 0, pcfSize = 3, cascades = 1;
+        depthFormat, mapFilter, blendShadows, outputEncoding, cascades, fitTo;
+    int lightOnly = -1, mapSize = 0, pcfSize = 3;
     double time = 0.0;
     float cascadeLambda = 0, cascadeBlend = 0, lightRadius = 0, lightAngle = 0;
     float biasConstant = 0, biasDepthAware = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0,

@@ -618,8 +618,11 @@ private:
             flagTip("--blend-shadows");
         }
         if (ImGui::CollapsingHeader("Cascades")) {
-            changed(ImGui::SliderInt("cascades", &s.cascades, 1, 4));
+            changed(
+                ImGui::SliderInt("cascades", &s.cascades, 0, 4, s.cascades == 0 ? "auto" : "%d"));
             flagTip("--cascades");
+            changed(enumCombo("fit-to", s.fitTo, {FitTo::ViewDepth, FitTo::Boxes}));
+            flagTip("--fit-to");
             changed(ImGui::SliderFloat("cascade-lambda", &s.cascadeLambda, 0.0f, 1.0f));
             flagTip("--cascade-lambda");
             changed(ImGui::SliderFloat("cascade-blend", &s.cascadeBlend, 0.0f, 0.5f));

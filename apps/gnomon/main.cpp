@@ -92,6 +92,12 @@ int runRender(const RenderArgs& args, bool verbose) {
                      (unsigned long long)stats.shadowTriangles, stats.castersCulled,
                      (unsigned long long)stats.mainTriangles,
                      double(stats.shadowMapBytes) / (1024.0 * 1024.0));
+        for (const gnomon::MapUsage& u : renderer.mapUsage()) {
+            std::fprintf(stderr, "gnomon: light %d%s: %d² map, the view uses %.0f %% of it\n",
+                         u.light,
+                         u.cascade >= 0 ? (" cascade " + std::to_string(u.cascade)).c_str() : "",
+                         u.mapSize, 100.0 * double(u.share));
+        }
     }
     return 0;
 }

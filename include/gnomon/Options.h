@@ -59,6 +59,13 @@ enum class BlendShadows {
                // filtered lookups see partial shadow; the reference transmits 1 - alpha
 };
 
+// What a fitted directional (or area) light's map is made to cover.
+enum class FitTo {
+    ViewDepth,  // the points the view's depth buffer sees, from a coarse depth pre-pass
+                // (sample distribution shadow maps, Lauritzen et al. 2011)
+    Boxes,      // the bounding boxes of the receivers inside the view frustum
+};
+
 // Where a render's options start (CLI --preset); flags given after it override.
 enum class Preset {
     Default,   // gnomon's best: the scene's authored options with gnomon's bias defaults
@@ -87,9 +94,12 @@ struct ShadowOptions {
     float lightRadius = 0.25f;  // Pcss: emitter radius of spot, point and area lights, world units
     float lightAngle = 1.0f;    // Pcss: angular radius of directional lights, degrees, 0..20
     int mapSize = 0;            // texels per side for every light, 64..8192; 0 = each light's own
-    int cascades = 1;           // directional lights (fitted): 1..4 maps along the view
-    float cascadeLambda = 0.75f;  // splits: 0 uniform .. 1 logarithmic (SPEC S22)
-    float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
+    // Fitted directional lights: 1..4 maps along the view; 0 = auto: with fitTo ViewDepth,
+    // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
+    int cascades = 0;
+    FitTo fitTo = FitTo::ViewDepth;  // what fitted directional and area lights cover
+    float cascadeLambda = 0.75f;     // splits: 0 uniform .. 1 logarithmic (SPEC S22)
+    float cascadeBlend = 0.1f;       // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
     BlendShadows blendShadows = BlendShadows::Dithered;  // shadows of blended materials
@@ -145,6 +155,7 @@ const char* toString(MapFilter v);
 const char* toString(Preset v);
 const char* toString(DebugView v);
 const char* toString(BlendShadows v);
+const char* toString(FitTo v);
 const char* toString(OutputEncoding v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
@@ -155,6 +166,7 @@ std::optional<MapFilter> parseMapFilter(const std::string& s);
 std::optional<Preset> parsePreset(const std::string& s);
 std::optional<DebugView> parseDebugView(const std::string& s);
 std::optional<BlendShadows> parseBlendShadows(const std::string& s);
+std::optional<FitTo> parseFitTo(const std::string& s);
 std::optional<OutputEncoding> parseOutputEncoding(const std::string& s);
 // True for the formats stored in colour channels (r8 and the RGBA8 packings).
 bool isColourFormat(DepthFormat v);

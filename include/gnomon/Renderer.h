@@ -52,6 +52,15 @@ struct FrameStats {
     std::vector<PassTiming> passes;     // with setPassTiming(true): each pass drawn, in order
 };
 
+// How much of one shadow map of the last frame the view uses: the share of the map's area
+// (in 64 x 64 squares, a cube's faces each) that the view's pixels look up.
+struct MapUsage {
+    int light = 0;     // index into Scene::lights
+    int cascade = -1;  // cascade index for cascaded directional lights, else -1
+    int mapSize = 0;   // texels per side
+    float share = 0.0f;
+};
+
 // Per pixel and light, what the main pass's shadow lookups returned (gnomon score): values at
 // [(y * width + x) * lights + light], rows top first. Lights without a lookup at a pixel
 // (off, not shadowed, a non-receiver, nothing drawn) read visibility 1 and texel size 0.
@@ -87,11 +96,14 @@ public:
     // The shadow maps of the last frame, one per shadowed light.
     std::vector<ShadowMapImage> shadowMaps();
     FrameStats lastFrameStats() const;
+    // For each map of the last frame, the share of it the view uses (measured from a coarse
+    // depth pass of the view: the fit's own when it had one, else drawn now).
+    std::vector<MapUsage> mapUsage();
     // Measure each pass (glFinish() between passes, so a little slower overall): fills
     // FrameStats::passes. Off by default.
     void setPassTiming(bool on);
-    // Forget every kept shadow map: the next frame renders them all (benchmarks of a frame
-    // whose lights all moved).
+    // Forget every kept shadow map and the view depth samples fitted maps follow: the next
+    // frame renders them all (benchmarks of a frame whose lights and camera all moved).
     void invalidateShadowMaps();
     // Wall time of a bare depth-only draw of every caster into a size x size depth buffer
     // through the first shadowed light's camera of the last frame (back faces culled; no

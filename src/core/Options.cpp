@@ -57,6 +57,9 @@ const std::pair<const char*, BlendShadows> kBlendShadows[] = {{"opaque", BlendSh
                                                               {"none", BlendShadows::None},
                                                               {"dithered", BlendShadows::Dithered}};
 
+const std::pair<const char*, FitTo> kFitTo[] = {{"view-depth", FitTo::ViewDepth},
+                                                {"boxes", FitTo::Boxes}};
+
 const std::pair<const char*, OutputEncoding> kOutputs[] = {{"linear", OutputEncoding::Linear},
                                                            {"srgb", OutputEncoding::Srgb}};
 
@@ -120,6 +123,12 @@ const char* toString(BlendShadows v) {
 std::optional<BlendShadows> parseBlendShadows(const std::string& s) {
     return lookup(s, kBlendShadows);
 }
+const char* toString(FitTo v) {
+    return nameOf(v, kFitTo);
+}
+std::optional<FitTo> parseFitTo(const std::string& s) {
+    return lookup(s, kFitTo);
+}
 const char* toString(OutputEncoding v) {
     return nameOf(v, kOutputs);
 }
@@ -147,8 +156,8 @@ std::vector<std::string> RenderOptions::validate() const {
              std::to_string(s.biasConstant));
     need(finite(s.biasDepthAware) && s.biasDepthAware >= 0.0f && s.biasDepthAware <= 1000.0f,
          "bias-depth-aware must be in [0, 1000] steps, got " + std::to_string(s.biasDepthAware));
-    need(s.cascades >= 1 && s.cascades <= 4,
-         "cascades must be in 1..4, got " + std::to_string(s.cascades));
+    need(s.cascades >= 0 && s.cascades <= 4,
+         "cascades must be auto (0) or in 1..4, got " + std::to_string(s.cascades));
     need(finite(s.cascadeLambda) && s.cascadeLambda >= 0.0f && s.cascadeLambda <= 1.0f,
          "cascade-lambda must be in [0, 1], got " + std::to_string(s.cascadeLambda));
     need(finite(s.cascadeBlend) && s.cascadeBlend >= 0.0f && s.cascadeBlend <= 0.5f,

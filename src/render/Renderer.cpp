@@ -1,5 +1,6 @@
-// Orchestrates a frame (SPEC S1): validate, sync the GPU scene, place each shadowed light's
-// camera, render the shadow maps, render the main pass into an offscreen target, read back.
+// Orchestrates a frame: validate, sync the GPU scene, sample the view's depth where fitted
+// lights need it, plan the lights (render/LightPlan), render the shadow maps, render the main
+// pass into an offscreen target, read back.
 #include "gnomon/Renderer.h"
 
 #include <algorithm>
@@ -10,9 +11,11 @@
 #include "gnomon/Error.h"
 #include "render/DebugPass.h"
 #include "render/GpuScene.h"
+#include "render/LightPlan.h"
 #include "render/MainPass.h"
 #include "render/PassClock.h"
 #include "render/ShadowPass.h"
+#include "render/ViewDepthPass.h"
 #include "scene/SceneUtil.h"
 
 namespace gnomon {
@@ -23,21 +26,6 @@ constexpr bool kDebugBuild = false;
 #else
 constexpr bool kDebugBuild = true;
 #endif
-
-// LightData.vsPosition.w in shaders/lights.glsl.
-int lightTypeCode(LightType type) {
-    switch (type) {
-        case LightType::Directional:
-            return 0;
-        case LightType::Spot:
-            return 1;
-        case LightType::Point:
-            return 2;
-        case LightType::Area:
-            return 3;
-    }
-    return 0;
-}
 
 [[noreturn]] void invalid(const std::vector<std::string>& problems) {
     std::string message;
@@ -61,14 +49,10 @@ struct Renderer::Impl {
     gl::Texture colourView;   // the colour target as RGBA8 (no sRGB decode), for display
     gl::Texture panelColour;  // drawShadowMapPanel's target
     gl::Framebuffer panelTarget;
-    std::vector<render::ShadowedLight> shadowed;
-    std::vector<render::GpuLight> lights;          // scene lights, then cascade records
-    std::vector<render::GpuLight> cascadeRecords;  // reused every frame
-    std::vector<render::GpuLight> ordered;         // reused every frame
-    std::vector<int> remap;                        // scene light -> record, reused
-    std::vector<std::uint8_t> hasMap;              // scene light has a map this frame
-    glm::ivec4 ranges{0};                          // ends of the record kinds
-    shadow::FitScene fit;                          // reused every frame
+    render::ViewDepthPass viewDepth;
+    render::LightPlan plan;
+    Camera lastCamera;  // the last frame's view and size, for mapUsage()
+    int lastWidth = 1, lastHeight = 1;
     FrameStats stats;
     bool passTiming = false;
     std::unique_ptr<render::PassClock> clock;  // made when timing is first switched on
@@ -112,168 +96,6 @@ struct Renderer::Impl {
         target.checkComplete();
     }
 
-    // Every light's record for the main pass, and the light cameras of those that cast
-    // shadows this frame (map layers are assigned by the shadow pass, see finishLights).
-    void planLights(const Scene& s, const RenderOptions& options, const glm::mat4& viewFromWorld) {
-        shadowed.clear();
-        lights.clear();
-        cascadeRecords.clear();
-        const float aspect = float(options.width) / float(options.height);
-        // What fitted light cameras look at: the items' boxes and the view (SPEC S8).
-        fit.casters.clear();
-        fit.receivers.clear();
-        for (const render::DrawItem& item : scene.items()) {
-            if (item.indexCount == 0) continue;
-            if (render::castsShadow(item, options.shadow)) fit.casters.push_back(item.bounds);
-            if (item.receives) fit.receivers.push_back(item.bounds);
-        }
-        fit.viewKnown = true;
-        fit.viewClipFromWorld = shadow::clipFromView(s.camera, aspect) * viewFromWorld;
-        for (size_t i = 0; i < s.lights.size(); ++i) {
-            const Light& light = s.lights[i];
-            render::GpuLight g;
-            const glm::vec3 direction = glm::length(light.direction) > 0.0f
-                                            ? glm::normalize(light.direction)
-                                            : glm::vec3(0, -1, 0);
-            g.vsPosition = glm::vec4(glm::vec3(viewFromWorld * glm::vec4(light.position, 1.0f)),
-                                     float(lightTypeCode(light.type)));
-            // w: 0 off; on: the range (point, spot), or -1 for none.
-            const bool ranged = light.range > 0.0f &&
-                                (light.type == LightType::Point || light.type == LightType::Spot);
-            g.vsDirection =
-                glm::vec4(glm::mat3(viewFromWorld) * direction, !lightIsOn(s, options, i) ? 0.0f
-                                                                : ranged ? light.range
-                                                                         : -1.0f);
-            g.colour = glm::vec4(light.colour * light.intensity, -1.0f);
-            g.attenuation = {light.attenuation.constant, light.attenuation.linear,
-                             light.attenuation.quadratic,
-                             std::cos(glm::radians(light.outerConeDegrees))};
-            g.shadow.x = std::cos(glm::radians(light.innerConeDegrees));
-            g.soft.w = float(i);  // the scene's index, for the visibility pass
-            const int mapSize =
-                options.shadow.mapSize > 0 ? options.shadow.mapSize : light.shadowMapSize;
-            const bool shadowing =
-                options.shadow.enabled && light.castsShadows && g.vsDirection.w != 0.0f;
-            g.shadowBias.x = options.shadow.biasConstant;
-            g.shadowBias.y = options.shadow.normalOffset;
-            if (shadowing && light.type == LightType::Directional &&
-                light.shadowCamera.policy == ShadowCameraPolicy::Fit &&
-                options.shadow.cascades > 1 && !scene.bounds().empty()) {
-                planCascades(s, options, i, direction, mapSize, aspect, g);
-            } else if (shadowing) {
-                const shadow::LightCameraFrame frame =
-                    shadow::lightCameraFrame(light, s.camera, fit, mapSize);
-                if (frame.valid) {
-                    fillShadowRecord(g, frame, light, options.shadow);
-                    g.soft.w = float(i);
-                    if (frame.kind == shadow::FrameKind::Cube) {
-                        g.wsPosition = glm::vec4(light.position, frame.near);
-                    }
-                    shadowed.push_back({int(i), mapSize, frame,
-                                        light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
-                                        int(i), -1});
-                }
-            }
-            lights.push_back(g);
-        }
-        orderLights(s.lights.size());
-    }
-
-    // Orders the records by kind for the main pass's loops (shaders/lights.glsl): lights
-    // that are off are dropped; unshadowed, single-map, cube and cascaded lights follow each
-    // other, then the cascade records. Indices into the records (shadowed lights, cascaded
-    // lights' first cascade) are rewritten to match.
-    void orderLights(std::size_t sceneLights) {
-        ordered.clear();
-        remap.assign(sceneLights, -1);
-        hasMap.assign(sceneLights, 0);
-        for (const render::ShadowedLight& sl : shadowed)
-            hasMap[std::size_t(sl.light)] = 1;
-        // (Map layers are assigned later, by the shadow pass: colour.w says nothing yet.)
-        auto kindOf = [&](std::size_t i) {
-            const render::GpuLight& g = lights[i];
-            if (g.vsDirection.w == 0.0f) return -1;
-            if (!hasMap[i]) return 0;
-            return g.shadow.z == 2.0f ? 2 : g.shadow.z == 3.0f ? 3 : 1;
-        };
-        for (int kind = 0; kind < 4; ++kind) {
-            for (std::size_t i = 0; i < sceneLights; ++i) {
-                if (kindOf(i) != kind) continue;
-                remap[i] = int(ordered.size());
-                ordered.push_back(lights[i]);
-            }
-            ranges[kind] = int(ordered.size());
-        }
-        const int base = int(ordered.size());
-        for (render::GpuLight& g : ordered) {
-            if (g.shadow.z == 3.0f) g.wsPosition.x += float(base) - float(sceneLights);
-        }
-        ordered.insert(ordered.end(), cascadeRecords.begin(), cascadeRecords.end());
-        for (render::ShadowedLight& sl : shadowed) {
-            sl.record = sl.cascade >= 0 ? sl.record - int(sceneLights) + base
-                                        : remap[std::size_t(sl.record)];
-        }
-        lights.swap(ordered);
-    }
-
-    // The map-related fields of a light record for a single-frustum or cube frame.
-    static void fillShadowRecord(render::GpuLight& g, const shadow::LightCameraFrame& frame,
-                                 const Light& light, const ShadowOptions& options) {
-        g.shadow.y = frame.texelWorldSize;
-        g.wsPosition.w = frame.near;
-        g.shadowBias.w = frame.far;
-        // PCSS's emitter: a disc of lightRadius at the light (area lights: on their plane,
-        // which may lie off the map's depth origin), or the directional light's angle.
-        if (light.type == LightType::Directional) {
-            g.soft = glm::vec4(std::tan(glm::radians(options.lightAngle)), 1.0f, 0.0f, 0.0f);
-        } else {
-            const glm::vec3 eye = glm::vec3(glm::inverse(frame.lightFromWorld)[3]);
-            const float offset =
-                light.type == LightType::Area && glm::length(light.direction) > 0.0f
-                    ? glm::dot(eye - light.position, glm::normalize(light.direction))
-                    : 0.0f;
-            g.soft = glm::vec4(options.lightRadius, 0.0f, offset, 0.0f);
-        }
-        g.shadow.z = frame.kind == shadow::FrameKind::Cube           ? 2.0f
-                     : frame.kind == shadow::FrameKind::Orthographic ? 1.0f
-                                                                     : 0.0f;
-        if (frame.kind != shadow::FrameKind::Cube) {
-            g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
-        }
-    }
-
-    // SPEC S22: `cascades` stabilised maps along the view, from the camera's near plane to
-    // where the scene ends (or the camera's far plane).
-    void planCascades(const Scene& s, const RenderOptions& options, size_t lightIndex,
-                      const glm::vec3& direction, int mapSize, float aspect, render::GpuLight& g) {
-        const Camera& cam = s.camera;
-        const glm::vec3 forward = glm::normalize(cam.centre - cam.eye);
-        float farthest = cam.near * 2.0f;
-        for (const glm::vec3& c : scene.bounds().corners()) {
-            farthest = std::max(farthest, glm::dot(c - cam.eye, forward));
-        }
-        const float far = std::min(cam.far, farthest);
-        const int count = options.shadow.cascades;
-        const std::vector<float> splits =
-            shadow::cascadeSplits(cam.near, far, count, options.shadow.cascadeLambda);
-        const int first = int(s.lights.size() + cascadeRecords.size());
-        g.shadow.z = 3.0f;
-        g.colour.w = 0.0f;  // has shadows; the maps are the cascade records'
-        g.wsPosition = glm::vec4(float(first), float(count), options.shadow.cascadeBlend, 0.0f);
-        for (int k = 0; k < count; ++k) {
-            const shadow::LightCameraFrame frame =
-                shadow::cascadeFrame(direction, cam, aspect, splits[size_t(k)],
-                                     splits[size_t(k) + 1], scene.bounds(), mapSize);
-            render::GpuLight c = g;
-            fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
-            c.soft.w = float(lightIndex);
-            c.attenuation.x = splits[size_t(k) + 1];
-            c.wsPosition = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
-            cascadeRecords.push_back(c);
-            shadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k});
-        }
-    }
-
     // The visibility pass's layers as ShadowVisibility's interleaved, top-down values. With
     // the shadow-map debug view nothing was drawn: every pixel reads lit.
     void readVisibility(const Scene& s, const RenderOptions& options, ShadowVisibility& out) {
@@ -305,18 +127,6 @@ struct Renderer::Impl {
         }
     }
 
-    // After the shadow pass placed each map: layer, and the map's share of its array.
-    void finishLights() {
-        for (const render::ShadowedLight& sl : shadowed) {
-            render::GpuLight& g = lights[size_t(sl.record)];
-            const bool cube = sl.frame.kind == shadow::FrameKind::Cube;
-            const int arraySize = cube ? shadowPass.cubes().width() : shadowPass.mapArraySize();
-            g.colour.w = float(sl.layer);
-            g.shadow.w = float(sl.mapSize) / float(arraySize);
-            g.shadowBias.z = 1.0f / float(arraySize);
-        }
-    }
-
     // The frame in `target`, not read back.
     void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
         if (auto problems = options.validate(); !problems.empty()) invalid(problems);
@@ -337,29 +147,38 @@ struct Renderer::Impl {
 
         const float aspect = float(options.width) / float(options.height);
         const glm::mat4 viewFromWorld = shadow::viewFromWorld(s.camera);
-        planLights(s, options, viewFromWorld);
-        if (lights.size() > std::size_t(mainPass.maxLights())) {
-            throw Error(ErrorKind::InvalidInput,
-                        "scene '" + s.name + "' needs " + std::to_string(lights.size()) +
-                            " light records with its cascades; this OpenGL driver allows " +
-                            std::to_string(mainPass.maxLights()));
-        }
-
         std::vector<PassTiming> keep = std::move(stats.passes);
         keep.clear();
         stats = {};
         stats.passes = std::move(keep);  // keeps its capacity
         render::PassClock* timer = passTiming ? clock.get() : nullptr;
+        const shadow::ViewSamples* samples = nullptr;
+        if (render::LightPlan::wantsViewSamples(s, options)) {
+            if (timer) timer->start();
+            samples = &viewDepth.sample(scene, s.camera, options.width, options.height);
+            if (timer) stats.passes.push_back(timer->stop("view depth", -1, 0));
+        }
+        plan.plan(s, options, scene, viewFromWorld, samples);
+        lastCamera = s.camera;
+        lastWidth = options.width;
+        lastHeight = options.height;
+        if (plan.records().size() > std::size_t(mainPass.maxLights())) {
+            throw Error(ErrorKind::InvalidInput,
+                        "scene '" + s.name + "' needs " + std::to_string(plan.records().size()) +
+                            " light records with its cascades; this OpenGL driver allows " +
+                            std::to_string(mainPass.maxLights()));
+        }
+
         const render::ShadowPassStats passStats =
-            shadowPass.render(scene, shadowed, options.shadow, timer, &stats.passes);
+            shadowPass.render(scene, plan.shadowed(), options.shadow, timer, &stats.passes);
         stats.shadowPasses = passStats.rendered;
         stats.shadowTriangles = passStats.triangles;
         stats.castersCulled = passStats.culled;
-        stats.shadowMaps = int(shadowed.size());
+        stats.shadowMaps = int(plan.shadowed().size());
         for (const render::DrawItem& item : scene.items())
             stats.mainTriangles += item.indexCount / 3;
-        stats.shadowMapBytes = shadowed.empty() ? 0 : shadowPass.bytes();
-        finishLights();
+        stats.shadowMapBytes = plan.shadowed().empty() ? 0 : shadowPass.bytes();
+        plan.finish(shadowPass);
 
         ensureTarget(options.width, options.height, options.shading.output);
         glBindFramebuffer(GL_FRAMEBUFFER, target.id());
@@ -372,11 +191,12 @@ struct Renderer::Impl {
         in.viewFromWorld = viewFromWorld;
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
         in.ambient = s.ambient;
-        in.lights = &lights;
-        in.lightRanges = ranges;
-        in.hasCascades = !cascadeRecords.empty();
+        in.lights = &plan.records();
+        in.lightRanges = plan.ranges();
+        in.hasCascades = plan.hasCascades();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
+        const std::vector<render::ShadowedLight>& shadowed = plan.shadowed();
         for (const render::ShadowedLight& sl : shadowed) {
             (sl.frame.kind == shadow::FrameKind::Cube ? anyCube : any2D) = true;
         }
@@ -437,8 +257,9 @@ struct Renderer::Impl {
         glViewport(0, 0, width, height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         glClearNamedFramebufferfv(panelTarget.id(), GL_COLOR, 0, black);
-        return debugPass.drawMaps(shadowPass, shadowed, light, width, height) ? panelColour.id()
-                                                                              : 0;
+        return debugPass.drawMaps(shadowPass, plan.shadowed(), light, width, height)
+                   ? panelColour.id()
+                   : 0;
     }
 
     Image render(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
@@ -494,7 +315,7 @@ unsigned Renderer::drawShadowMapPanel(int light, int width, int height) {
 std::vector<ShadowMapImage> Renderer::shadowMaps() {
     mImpl->makeCurrent();
     std::vector<ShadowMapImage> out;
-    for (const render::ShadowedLight& sl : mImpl->shadowed) {
+    for (const render::ShadowedLight& sl : mImpl->plan.shadowed()) {
         out.push_back({sl.light, sl.cascade, mImpl->shadowPass.readBack(sl)});
     }
     return out;
@@ -502,6 +323,21 @@ std::vector<ShadowMapImage> Renderer::shadowMaps() {
 
 FrameStats Renderer::lastFrameStats() const {
     return mImpl->stats;
+}
+
+std::vector<MapUsage> Renderer::mapUsage() {
+    Impl& m = *mImpl;
+    std::vector<MapUsage> out;
+    if (m.plan.shadowed().empty()) return out;
+    m.makeCurrent();
+    const shadow::ViewSamples& samples =
+        m.viewDepth.sample(m.scene, m.lastCamera, m.lastWidth, m.lastHeight);
+    for (const render::ShadowedLight& sl : m.plan.shadowed()) {
+        out.push_back(
+            {sl.light, sl.cascade, sl.mapSize,
+             shadow::mapShareUsed(samples, sl.frame, sl.mapSize, sl.depthFrom, sl.depthTo)});
+    }
+    return out;
 }
 
 void Renderer::setPassTiming(bool on) {
@@ -512,6 +348,7 @@ void Renderer::setPassTiming(bool on) {
 
 void Renderer::invalidateShadowMaps() {
     mImpl->shadowPass.invalidate();
+    mImpl->viewDepth.invalidate();
 }
 
 double Renderer::measureBareDepthPass(int size) {
@@ -520,7 +357,7 @@ double Renderer::measureBareDepthPass(int size) {
                     "bare depth pass size must be in 1..16384, got " + std::to_string(size));
     }
     mImpl->makeCurrent();
-    for (const render::ShadowedLight& sl : mImpl->shadowed) {
+    for (const render::ShadowedLight& sl : mImpl->plan.shadowed()) {
         if (sl.frame.kind == shadow::FrameKind::Cube) continue;
         return mImpl->shadowPass.bareDepthPass(mImpl->scene, sl.frame.clipFromWorld(), size);
     }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "gl/Objects.h"
@@ -26,6 +27,9 @@ struct ShadowedLight {
     int layer = 0;            // 2D array layer, or cube index in the cube-map array
     int record = 0;           // the main pass light record this map belongs to
     int cascade = -1;         // cascade index of a directional light, -1 if not cascaded
+    // The view depths whose pixels read this map (a cascade's slice and the previous
+    // cascade's blend band; every depth for the others).
+    float depthFrom = 0.0f, depthTo = std::numeric_limits<float>::max();
 };
 
 struct ShadowPassStats {

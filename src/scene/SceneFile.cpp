@@ -669,13 +669,36 @@ Camera readCamera(const Reader& r, const Json& j, const std::string& path) {
 }
 
 const std::vector<std::string>& optionKeys() {
-    static const std::vector<std::string> k = {
-        "size",           "width",         "height",        "time",           "light-only",
-        "shadows",        "outside",       "map-size",      "bias-constant",  "bias-depth-aware",
-        "bias-slope",     "bias-units",    "normal-offset", "receiver-plane", "cull",
-        "filter",         "pcf-size",      "light-radius",  "light-angle",    "cascades",
-        "cascade-lambda", "cascade-blend", "debug-view",    "depth-format",   "map-filter",
-        "blend-shadows",  "shadowed",      "shadow-factor", "output-encoding"};
+    static const std::vector<std::string> k = {"size",
+                                               "width",
+                                               "height",
+                                               "time",
+                                               "light-only",
+                                               "shadows",
+                                               "outside",
+                                               "map-size",
+                                               "bias-constant",
+                                               "bias-depth-aware",
+                                               "bias-slope",
+                                               "bias-units",
+                                               "normal-offset",
+                                               "receiver-plane",
+                                               "cull",
+                                               "filter",
+                                               "pcf-size",
+                                               "light-radius",
+                                               "light-angle",
+                                               "cascades",
+                                               "cascade-lambda",
+                                               "cascade-blend",
+                                               "debug-view",
+                                               "depth-format",
+                                               "map-filter",
+                                               "blend-shadows",
+                                               "shadowed",
+                                               "shadow-factor",
+                                               "output-encoding",
+                                               "fit-to"};
     return k;
 }
 
@@ -713,7 +736,15 @@ void applyOptions(const Reader& r, const Json& j, const std::string& path, Rende
     f.get("pcf-size", s.pcfSize, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
     f.get("light-radius", s.lightRadius);
     f.get("light-angle", s.lightAngle);
-    f.get("cascades", s.cascades, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+    if (const Json* c = f.find("cascades"); c && c->is_string()) {
+        if (r.string(*c, f.at("cascades")) != "auto")
+            r.fail(f.at("cascades"), "expected \"auto\" or a count 1..4, got " + preview(*c));
+        s.cascades = 0;
+    } else {
+        f.get("cascades", s.cascades, std::numeric_limits<int>::min(),
+              std::numeric_limits<int>::max());
+    }
+    f.get("fit-to", s.fitTo, optionNames<FitTo>());
     f.get("cascade-lambda", s.cascadeLambda);
     f.get("cascade-blend", s.cascadeBlend);
     f.get("debug-view", o.debugView, optionNames<DebugView>());
@@ -1164,7 +1195,12 @@ OJson optionsJson(const RenderOptions& o) {
     j["pcf-size"] = s.pcfSize;
     j["light-radius"] = number(s.lightRadius);
     j["light-angle"] = number(s.lightAngle);
-    j["cascades"] = s.cascades;
+    if (s.cascades == 0) {
+        j["cascades"] = "auto";
+    } else {
+        j["cascades"] = s.cascades;
+    }
+    j["fit-to"] = toString(s.fitTo);
     j["cascade-lambda"] = number(s.cascadeLambda);
     j["cascade-blend"] = number(s.cascadeBlend);
     j["debug-view"] = toString(o.debugView);

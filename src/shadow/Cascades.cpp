@@ -25,6 +25,12 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda)
     return splits;
 }
 
+int autoCascadeCount(float nearest, float farthest) {
+    if (!(nearest > 0.0f) || !(farthest > nearest)) return 1;
+    const float octaves = std::log2(farthest / nearest) / 3.0f;  // factors of 8
+    return std::clamp(1 + int(std::floor(octaves)), 1, 4);
+}
+
 LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& view, float aspect,
                               float splitNear, float splitFar, const Aabb& sceneBounds,
                               int mapSize) {

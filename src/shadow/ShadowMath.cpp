@@ -175,10 +175,12 @@ std::array<glm::vec3, 8> frustumCorners(const glm::mat4& clipFromWorld) {
     return c;
 }
 
-FitBoxes visibleReceivers(const FitScene& scene) {
+// `receivers` false: only the casters (a fit to view samples needs no receiver boxes).
+FitBoxes visibleReceivers(const FitScene& scene, bool receivers = true) {
     FitBoxes f;
     f.casters = &scene.casters;
     f.snap = scene.viewKnown;
+    if (!receivers) return f;
     std::array<glm::vec3, 8> frustum{};
     if (scene.viewKnown) frustum = frustumCorners(scene.viewClipFromWorld);
     for (const Aabb& r : scene.receivers) {
@@ -201,20 +203,21 @@ float quantizeUp(float x) {
     return std::ceil(x / step) * step;
 }
 
-// Orthographic camera along `direction`: across the light, the receivers' extent where a
-// caster overlaps it; in depth, from the nearest such caster to the farthest receiver.
-LightCameraFrame fitOrthographic(const glm::vec3& direction, const FitBoxes& boxes, int mapSize) {
+// The rotation from world into a directional light's space: a turn only, so a snapped
+// origin stays on one grid whatever the view does.
+glm::mat4 lightRotation(const glm::vec3& direction) {
+    return safeLookAt(glm::vec3(0.0f), glm::normalize(direction), glm::vec3(0, 1, 0));
+}
+
+// Orthographic camera through `rotation`: across the light, the receivers' extent
+// (`receivers`, in light space) where a caster overlaps it; in depth, from the nearest such
+// caster to the farthest receiver.
+LightCameraFrame fitOrthographic(const glm::mat4& rotation, const Aabb& receivers,
+                                 const FitBoxes& boxes, int mapSize) {
     LightCameraFrame f;
     f.orthographic = true;
     f.kind = FrameKind::Orthographic;
     f.valid = false;
-    // Rotation only: light space differs from world space by a turn, so a snapped origin
-    // stays on one grid whatever the view does.
-    const glm::mat4 rotation =
-        safeLookAt(glm::vec3(0.0f), glm::normalize(direction), glm::vec3(0, 1, 0));
-    Aabb receivers;
-    for (const Aabb& r : boxes.receivers)
-        receivers.extend(r.transformed(rotation));
     if (receivers.empty()) return f;
     Aabb casters;
     for (const Aabb& c : *boxes.casters) {
@@ -266,6 +269,20 @@ LightCameraFrame fitOrthographic(const glm::vec3& direction, const FitBoxes& box
     f.clipFromLight = glm::ortho(lo.x, hi.x, lo.y, hi.y, f.near, f.far);
     f.texelWorldSize = std::max(size.x, size.y) / float(mapSize);
     return f;
+}
+
+constexpr float kNoEnd = std::numeric_limits<float>::max();
+
+// What a directional light's map must cover, in its light space: with view samples, those
+// whose view depth lies in [depthFrom, depthTo]; without, the visible receivers' boxes.
+Aabb receiversInLight(const FitScene& scene, const FitBoxes& boxes, const glm::vec3& direction,
+                      float depthFrom, float depthTo) {
+    const glm::mat4 rotation = lightRotation(direction);
+    if (scene.samples) return samplesInLight(*scene.samples, rotation, depthFrom, depthTo);
+    Aabb receivers;
+    for (const Aabb& r : boxes.receivers)
+        receivers.extend(r.transformed(rotation));
+    return receivers;
 }
 
 // Perspective camera from `eye` along `axis` with fovy: far at the farthest receiver corner
@@ -408,13 +425,16 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
         case ShadowCameraPolicy::Fit:
             break;
     }
-    const FitBoxes boxes = visibleReceivers(scene);
+    const bool parallel = light.type == LightType::Directional || light.type == LightType::Area;
+    const FitBoxes boxes = visibleReceivers(scene, !(parallel && scene.samples));
     switch (light.type) {
         case LightType::Directional:
         case LightType::Area:
             // Area lights have parallel rays like the sun: the same orthographic fit (the
             // plane only sets the falloff).
-            return fitOrthographic(light.direction, boxes, mapSize);
+            return fitOrthographic(lightRotation(light.direction),
+                                   receiversInLight(scene, boxes, light.direction, 0.0f, kNoEnd),
+                                   boxes, mapSize);
         case LightType::Spot:
             return fitPerspective(
                 light.position, glm::normalize(light.direction),
@@ -424,6 +444,14 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
             return fitCube(light.position, boxes, mapSize);
     }
     return {};
+}
+
+LightCameraFrame sampledCascadeFrame(const glm::vec3& direction, const FitScene& scene,
+                                     float depthFrom, float depthTo, int mapSize) {
+    const FitBoxes boxes = visibleReceivers(scene, scene.samples == nullptr);
+    return fitOrthographic(lightRotation(direction),
+                           receiversInLight(scene, boxes, direction, depthFrom, depthTo), boxes,
+                           mapSize);
 }
 
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const Aabb& bounds,

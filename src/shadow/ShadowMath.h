@@ -9,6 +9,7 @@
 
 #include "core/Aabb.h"
 #include "gnomon/Scene.h"
+#include "shadow/ViewSamples.h"
 
 namespace gnomon::shadow {
 
@@ -51,14 +52,16 @@ glm::mat4 textureFromClip();
 // the world axis least aligned with the direction).
 glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::vec3& up);
 
-// What the Fit policy looks at (SPEC S8): world boxes of the shadow casters and of the
-// receivers and, when known, the view camera, whose frustum decides which receivers are
-// visible (without it every receiver counts).
+// What the Fit policy looks at: world boxes of the shadow casters and of the receivers and,
+// when known, the view camera, whose frustum decides which receivers are visible (without it
+// every receiver counts). With `samples` (what the view's depth buffer sees), directional
+// and area lights cover those points instead of the receivers' boxes.
 struct FitScene {
     std::vector<Aabb> casters;
     std::vector<Aabb> receivers;
     bool viewKnown = false;
     glm::mat4 viewClipFromWorld{1.0f};
+    const ViewSamples* samples = nullptr;
 };
 
 // The light camera of `light` for a frame: Manual and Course use the light's numbers; Fit
@@ -103,6 +106,16 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda)
 LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& view, float aspect,
                               float splitNear, float splitFar, const Aabb& sceneBounds,
                               int mapSize);
+
+// Sample distribution cascades (Lauritzen et al. 2011): how many cascades a view needs whose
+// samples span view depths [nearest, farthest]: one per factor of 8 in depth, 1..4.
+int autoCascadeCount(float nearest, float farthest);
+// The orthographic camera of one cascade of a directional light when `scene` has samples:
+// it covers the samples whose view depth lies in [depthFrom, depthTo] (and the casters that
+// can shadow them), squared and snapped as the single-map fit is. Invalid when no sample or
+// no caster is there.
+LightCameraFrame sampledCascadeFrame(const glm::vec3& direction, const FitScene& scene,
+                                     float depthFrom, float depthTo, int mapSize);
 
 // View-camera matrices for an output of `aspect` (width / height).
 glm::mat4 viewFromWorld(const Camera& camera);

@@ -41,7 +41,7 @@ for k in ["frame_ms", "shadow_ms", "main_ms", "shadows_off_ms", "bare_depth_ms"]
 for k in ["map_size", "maps", "shadow_map_bytes", "shadow_triangles", "main_triangles"]:
     assert k in r, k
 names = [p["name"] for p in r["passes"]]
-assert names == ["shadow light 0", "main", "read-back"], names
+assert names == ["view depth", "shadow light 0", "main", "read-back"], names
 for p in r["passes"]:
     assert set(p) == {"name", "ms", "triangles", "fragments"}, p
 PY
@@ -155,6 +155,19 @@ bad_enum)
     run render --scene book-triangle --filter blurry --out "$work/a.png"
     expect 2 "--filter: expected one of none, hw2x2, pcf, poisson, pcss, got 'blurry'"
     ;;
+cascades)
+    # Auto and explicit counts, the share of each map the view uses, and bad values.
+    run --verbose render --scene tutorial-room --cascades 4 --size 64x64 --out "$work/c.png"
+    skip_without_gl
+    expect 0 "light 0 cascade 3: 2048² map, the view uses"
+    run render --scene tutorial-room --cascades 5 --size 64x64 --out "$work/c5.png"
+    expect 2 "--cascades: expected auto or 1..4, got '5'"
+    [[ ! -e "$work/c5.png" ]] || fail "a refused render left c5.png behind"
+    run render --scene tutorial-room --fit-to nowhere --size 64x64 --out "$work/c.png"
+    expect 2 "--fit-to: expected one of view-depth, boxes, got 'nowhere'"
+    run render --scene tutorial-room --cascades auto --fit-to boxes --size 64x64 --out "$work/c.png"
+    [[ $(cat "$work/code") == 0 && -s "$work/c.png" ]] || fail "auto cascades with boxes: $(cat "$work/stderr")"
+    ;;
 bad_light)
     run render --scene book-triangle --light-only 3 --out "$work/a.png"
     expect 2 "has 1 light(s)"
@@ -165,7 +178,7 @@ help)
     for flag in --size --time --light-only --shadow-maps --outside --map-size --bias-constant \
                 --bias-depth-aware --preset \
                 --bias-slope --bias-units --normal-offset --cull --filter --pcf-size \
-                --light-radius --light-angle --cascades --cascade-lambda --cascade-blend \
+                --light-radius --light-angle --cascades --fit-to --cascade-lambda --cascade-blend \
                 --debug-view --shadowed --shadow-factor --depth-format --map-filter; do
         grep -qF -- "$flag" "$work/stdout" || fail "help lacks $flag"
     done

@@ -1,6 +1,6 @@
-// The instruments gnomon bench stands on: per-pass timing lists each map drawn, the main
-// pass and the read-back; invalidating maps forces a full shadow frame; the bare depth pass
-// measures something where a 2D map exists.
+// The instruments gnomon bench stands on: per-pass timing lists the view depth pass, each
+// map drawn, the main pass and the read-back; invalidating maps forces a full shadow frame; the
+// bare depth pass measures something where a 2D map exists.
 #include <gtest/gtest.h>
 
 #include "GlTest.h"
@@ -19,18 +19,22 @@ TEST(PassTiming, ListsEveryPassInOrder) {
     const FrameStats stats = r.lastFrameStats();
     r.setPassTiming(false);
     ASSERT_EQ(stats.shadowPasses, 16);
-    ASSERT_EQ(stats.passes.size(), 18u);
+    // The view depth pass (its sun is fitted to what the view sees), 16 maps, main, read-back.
+    ASSERT_EQ(stats.passes.size(), 19u);
+    EXPECT_EQ(stats.passes[0].name, "view depth");
+    EXPECT_EQ(stats.passes[0].light, -1);
     std::uint64_t triangles = 0;
     for (int i = 0; i < 16; ++i) {
-        EXPECT_EQ(stats.passes[size_t(i)].name, "shadow light " + std::to_string(i));
-        EXPECT_EQ(stats.passes[size_t(i)].light, i);
-        EXPECT_GT(stats.passes[size_t(i)].milliseconds, 0.0);
-        triangles += stats.passes[size_t(i)].triangles;
+        const PassTiming& p = stats.passes[size_t(i) + 1];
+        EXPECT_EQ(p.name, "shadow light " + std::to_string(i));
+        EXPECT_EQ(p.light, i);
+        EXPECT_GT(p.milliseconds, 0.0);
+        triangles += p.triangles;
     }
     EXPECT_EQ(triangles, stats.shadowTriangles);
-    EXPECT_EQ(stats.passes[16].name, "main");
-    EXPECT_EQ(stats.passes[16].triangles, stats.mainTriangles);
-    EXPECT_EQ(stats.passes[17].name, "read-back");
+    EXPECT_EQ(stats.passes[17].name, "main");
+    EXPECT_EQ(stats.passes[17].triangles, stats.mainTriangles);
+    EXPECT_EQ(stats.passes[18].name, "read-back");
     // Timing off: no passes listed.
     r.render(s, o);
     EXPECT_TRUE(r.lastFrameStats().passes.empty());

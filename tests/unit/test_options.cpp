@@ -30,6 +30,8 @@ TEST(Options, DefaultsMatchTheDocumentedValues) {
     EXPECT_EQ(o.shadow.pcfSize, 3);
     EXPECT_EQ(o.shadow.mapSize, 0);
     EXPECT_EQ(o.shadow.cull, CullMode::Back);
+    EXPECT_EQ(o.shadow.cascades, 0);  // auto
+    EXPECT_EQ(o.shadow.fitTo, FitTo::ViewDepth);
     EXPECT_EQ(o.shading.shadowedRule, ShadowedRule::AmbientOnly);
     EXPECT_FLOAT_EQ(o.shading.shadowFactor, 0.7f);  // the WebGL book's factor
 }
@@ -80,6 +82,8 @@ INSTANTIATE_TEST_SUITE_P(
         InvalidCase{"pcf-size=4-even", [](RenderOptions& o) { o.shadow.pcfSize = 4; }, "pcf-size"},
         InvalidCase{"pcf-size=11", [](RenderOptions& o) { o.shadow.pcfSize = 11; }, "pcf-size"},
         InvalidCase{"map-size=8", [](RenderOptions& o) { o.shadow.mapSize = 8; }, "map-size"},
+        InvalidCase{"cascades=5", [](RenderOptions& o) { o.shadow.cascades = 5; }, "cascades"},
+        InvalidCase{"cascades=-1", [](RenderOptions& o) { o.shadow.cascades = -1; }, "cascades"},
         InvalidCase{"map-size=-1", [](RenderOptions& o) { o.shadow.mapSize = -1; }, "map-size"},
         InvalidCase{"map-size=32", [](RenderOptions& o) { o.shadow.mapSize = 32; }, "map-size"},
         InvalidCase{"map-size=16384", [](RenderOptions& o) { o.shadow.mapSize = 16384; },

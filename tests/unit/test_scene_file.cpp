@@ -79,6 +79,7 @@ struct Compare {
         num(s.lightAngle, t.lightAngle, what + " lightAngle");
         EXPECT_EQ(s.mapSize, t.mapSize) << what << " mapSize";
         EXPECT_EQ(s.cascades, t.cascades) << what << " cascades";
+        EXPECT_EQ(s.fitTo, t.fitTo) << what << " fitTo";
         num(s.cascadeLambda, t.cascadeLambda, what + " cascadeLambda");
         num(s.cascadeBlend, t.cascadeBlend, what + " cascadeBlend");
         EXPECT_EQ(s.depthFormat, t.depthFormat) << what << " depthFormat";
@@ -327,6 +328,7 @@ RenderOptions everyOptionChanged() {
     s.lightAngle = 2.5f;
     s.mapSize = 768;
     s.cascades = 3;
+    s.fitTo = FitTo::Boxes;
     s.cascadeLambda = 0.3f;
     s.cascadeBlend = 0.2f;
     s.depthFormat = DepthFormat::Rgba8Packed256;
@@ -633,6 +635,12 @@ TEST(SceneFile, MoreMistakesAreRefusedWithThePath) {
          "bad.json: camera.far: the number 1e+300 is too large for a 32-bit float"},
         {R"({"gnomon-scene": 1, "camera": {"projection": "fisheye"}})",
          "bad.json: camera.projection: expected one of perspective, orthographic, got \"fisheye\""},
+        {R"({"gnomon-scene": 1, "options": {"cascades": "many"}})",
+         "bad.json: options.cascades: expected \"auto\" or a count 1..4, got \"many\""},
+        {R"({"gnomon-scene": 1, "options": {"cascades": 5}})",
+         "bad.json: options: cascades must be auto (0) or in 1..4, got 5"},
+        {R"({"gnomon-scene": 1, "options": {"fit-to": "sky"}})",
+         "bad.json: options.fit-to: expected one of view-depth, boxes, got \"sky\""},
         {R"({"gnomon-scene": 1, "options": {"filter": "blurry"}})",
          "bad.json: options.filter: expected one of none, hw2x2, pcf, poisson, pcss, got "
          "\"blurry\""},

@@ -1,0 +1,246 @@
+#include "render/LightPlan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "scene/SceneUtil.h"
+
+namespace gnomon::render {
+
+namespace {
+// LightData.vsPosition.w in shaders/lights.glsl.
+int lightTypeCode(LightType type) {
+    switch (type) {
+        case LightType::Directional:
+            return 0;
+        case LightType::Spot:
+            return 1;
+        case LightType::Point:
+            return 2;
+        case LightType::Area:
+            return 3;
+    }
+    return 0;
+}
+
+bool casts(const Scene& s, const RenderOptions& options, std::size_t i) {
+    return options.shadow.enabled && s.lights[i].castsShadows && lightIsOn(s, options, i);
+}
+
+// The map-related fields of a light record for a single-frustum or cube frame.
+void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const Light& light,
+                      const ShadowOptions& options) {
+    g.shadow.y = frame.texelWorldSize;
+    g.wsPosition.w = frame.near;
+    g.shadowBias.w = frame.far;
+    // PCSS's emitter: a disc of lightRadius at the light (area lights: on their plane,
+    // which may lie off the map's depth origin), or the directional light's angle.
+    if (light.type == LightType::Directional) {
+        g.soft = glm::vec4(std::tan(glm::radians(options.lightAngle)), 1.0f, 0.0f, 0.0f);
+    } else {
+        const glm::vec3 eye = glm::vec3(glm::inverse(frame.lightFromWorld)[3]);
+        const float offset = light.type == LightType::Area && glm::length(light.direction) > 0.0f
+                                 ? glm::dot(eye - light.position, glm::normalize(light.direction))
+                                 : 0.0f;
+        g.soft = glm::vec4(options.lightRadius, 0.0f, offset, 0.0f);
+    }
+    g.shadow.z = frame.kind == shadow::FrameKind::Cube           ? 2.0f
+                 : frame.kind == shadow::FrameKind::Orthographic ? 1.0f
+                                                                 : 0.0f;
+    if (frame.kind != shadow::FrameKind::Cube) {
+        g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
+    }
+}
+}  // namespace
+
+bool LightPlan::wantsViewSamples(const Scene& s, const RenderOptions& options) {
+    if (options.shadow.fitTo != FitTo::ViewDepth) return false;
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        const Light& l = s.lights[i];
+        if ((l.type == LightType::Directional || l.type == LightType::Area) &&
+            l.shadowCamera.policy == ShadowCameraPolicy::Fit && casts(s, options, i)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
+                     const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples) {
+    mShadowed.clear();
+    mLights.clear();
+    mCascadeRecords.clear();
+    const float aspect = float(options.width) / float(options.height);
+    // What fitted light cameras look at: the items' boxes, the view and what it sees.
+    mFit.casters.clear();
+    mFit.receivers.clear();
+    for (const DrawItem& item : scene.items()) {
+        if (item.indexCount == 0) continue;
+        if (castsShadow(item, options.shadow)) mFit.casters.push_back(item.bounds);
+        if (item.receives) mFit.receivers.push_back(item.bounds);
+    }
+    mFit.viewKnown = true;
+    mFit.viewClipFromWorld = shadow::clipFromView(s.camera, aspect) * viewFromWorld;
+    mFit.samples = samples;
+    for (std::size_t i = 0; i < s.lights.size(); ++i) {
+        const Light& light = s.lights[i];
+        GpuLight g;
+        const glm::vec3 direction = glm::length(light.direction) > 0.0f
+                                        ? glm::normalize(light.direction)
+                                        : glm::vec3(0, -1, 0);
+        g.vsPosition = glm::vec4(glm::vec3(viewFromWorld * glm::vec4(light.position, 1.0f)),
+                                 float(lightTypeCode(light.type)));
+        // w: 0 off; on: the range (point, spot), or -1 for none.
+        const bool ranged =
+            light.range > 0.0f && (light.type == LightType::Point || light.type == LightType::Spot);
+        g.vsDirection =
+            glm::vec4(glm::mat3(viewFromWorld) * direction, !lightIsOn(s, options, i) ? 0.0f
+                                                            : ranged                  ? light.range
+                                                                                      : -1.0f);
+        g.colour = glm::vec4(light.colour * light.intensity, -1.0f);
+        g.attenuation = {light.attenuation.constant, light.attenuation.linear,
+                         light.attenuation.quadratic,
+                         std::cos(glm::radians(light.outerConeDegrees))};
+        g.shadow.x = std::cos(glm::radians(light.innerConeDegrees));
+        g.soft.w = float(i);  // the scene's index, for the visibility pass
+        const int mapSize =
+            options.shadow.mapSize > 0 ? options.shadow.mapSize : light.shadowMapSize;
+        const bool shadowing = casts(s, options, i);
+        g.shadowBias.x = options.shadow.biasConstant;
+        g.shadowBias.y = options.shadow.normalOffset;
+        const bool cascadable = shadowing && light.type == LightType::Directional &&
+                                light.shadowCamera.policy == ShadowCameraPolicy::Fit &&
+                                !scene.bounds().empty();
+        int cascades = options.shadow.cascades;
+        if (cascades == 0) {
+            cascades = samples && !samples->empty()
+                           ? shadow::autoCascadeCount(samples->nearest, samples->farthest)
+                           : 1;
+        }
+        if (cascadable && cascades > 1 && !(samples && samples->empty())) {
+            planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds(), g);
+        } else if (shadowing) {
+            const shadow::LightCameraFrame frame =
+                shadow::lightCameraFrame(light, s.camera, mFit, mapSize);
+            if (frame.valid) {
+                fillShadowRecord(g, frame, light, options.shadow);
+                g.soft.w = float(i);
+                if (frame.kind == shadow::FrameKind::Cube) {
+                    g.wsPosition = glm::vec4(light.position, frame.near);
+                }
+                mShadowed.push_back({int(i), mapSize, frame,
+                                     light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
+                                     int(i), -1});
+            }
+        }
+        mLights.push_back(g);
+    }
+    orderLights(s.lights.size());
+}
+
+// Orders the records by kind for the main pass's loops (shaders/lights.glsl): lights that
+// are off are dropped; unshadowed, single-map, cube and cascaded lights follow each other,
+// then the cascade records. Indices into the records (shadowed lights, cascaded lights'
+// first cascade) are rewritten to match.
+void LightPlan::orderLights(std::size_t sceneLights) {
+    mOrdered.clear();
+    mRemap.assign(sceneLights, -1);
+    mHasMap.assign(sceneLights, 0);
+    for (const ShadowedLight& sl : mShadowed)
+        mHasMap[std::size_t(sl.light)] = 1;
+    // (Map layers are assigned later, by the shadow pass: colour.w says nothing yet.)
+    auto kindOf = [&](std::size_t i) {
+        const GpuLight& g = mLights[i];
+        if (g.vsDirection.w == 0.0f) return -1;
+        if (!mHasMap[i]) return 0;
+        return g.shadow.z == 2.0f ? 2 : g.shadow.z == 3.0f ? 3 : 1;
+    };
+    for (int kind = 0; kind < 4; ++kind) {
+        for (std::size_t i = 0; i < sceneLights; ++i) {
+            if (kindOf(i) != kind) continue;
+            mRemap[i] = int(mOrdered.size());
+            mOrdered.push_back(mLights[i]);
+        }
+        mRanges[kind] = int(mOrdered.size());
+    }
+    const int base = int(mOrdered.size());
+    for (GpuLight& g : mOrdered) {
+        if (g.shadow.z == 3.0f) g.wsPosition.x += float(base) - float(sceneLights);
+    }
+    mOrdered.insert(mOrdered.end(), mCascadeRecords.begin(), mCascadeRecords.end());
+    for (ShadowedLight& sl : mShadowed) {
+        sl.record =
+            sl.cascade >= 0 ? sl.record - int(sceneLights) + base : mRemap[std::size_t(sl.record)];
+    }
+    mLights.swap(mOrdered);
+}
+
+// `count` maps along the view (Zhang et al. 2006, Parallel-Split Shadow Maps). With view
+// samples: split over the depth range they span, each cascade fitted to the samples that
+// may read it (its own slice and the previous cascade's blend band). Without: from the
+// camera's near plane to where the scene ends, each a stabilised sphere around its slice.
+void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
+                             const glm::vec3& direction, int mapSize, int count, float aspect,
+                             const Aabb& sceneBounds, GpuLight& g) {
+    const Camera& cam = s.camera;
+    const shadow::ViewSamples* samples = mFit.samples;
+    float near = cam.near, far = cam.far;
+    if (samples) {
+        // The samples' pad: the surface between them may come a little nearer or go farther.
+        near = std::max(cam.near, samples->nearest - samples->pad(samples->nearest));
+        far = samples->farthest + samples->pad(samples->farthest);
+    } else {
+        const glm::vec3 forward = glm::normalize(cam.centre - cam.eye);
+        float farthest = cam.near * 2.0f;
+        for (const glm::vec3& c : sceneBounds.corners())
+            farthest = std::max(farthest, glm::dot(c - cam.eye, forward));
+        far = std::min(cam.far, farthest);
+    }
+    const float blend = options.shadow.cascadeBlend;
+    const std::vector<float> splits =
+        shadow::cascadeSplits(near, far, count, options.shadow.cascadeLambda);
+    const int first = int(s.lights.size() + mCascadeRecords.size());
+    g.shadow.z = 3.0f;
+    g.colour.w = 0.0f;  // has shadows; the maps are the cascade records'
+    g.wsPosition = glm::vec4(float(first), float(count), blend, 0.0f);
+    for (int k = 0; k < count; ++k) {
+        const float from = splits[std::size_t(k)], to = splits[std::size_t(k) + 1];
+        shadow::LightCameraFrame frame;
+        frame.valid = false;
+        // Where the previous cascade starts blending into this one (shadow_lookup.glsl's
+        // cascadeVisibility: the first cascade's band is measured from depth 0).
+        const float previous = k >= 2 ? splits[std::size_t(k) - 1] : 0.0f;
+        const float reach = k == 0 ? 0.0f : from - blend * (from - previous);
+        if (samples) {
+            frame = shadow::sampledCascadeFrame(
+                direction, mFit, reach, k + 1 == count ? std::numeric_limits<float>::max() : to,
+                mapSize);
+        }
+        // No sample or no caster in this slice: a sphere around it still shadows correctly.
+        if (!frame.valid) {
+            frame = shadow::cascadeFrame(direction, cam, aspect, from, to, sceneBounds, mapSize);
+        }
+        GpuLight c = g;
+        fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
+        c.soft.w = float(lightIndex);
+        c.attenuation.x = to;
+        c.wsPosition = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
+        mCascadeRecords.push_back(c);
+        mShadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k, reach,
+                             k + 1 == count ? std::numeric_limits<float>::max() : to});
+    }
+}
+
+void LightPlan::finish(const ShadowPass& pass) {
+    for (const ShadowedLight& sl : mShadowed) {
+        GpuLight& g = mLights[std::size_t(sl.record)];
+        const bool cube = sl.frame.kind == shadow::FrameKind::Cube;
+        const int arraySize = cube ? pass.cubes().width() : pass.mapArraySize();
+        g.colour.w = float(sl.layer);
+        g.shadow.w = float(sl.mapSize) / float(arraySize);
+        g.shadowBias.z = 1.0f / float(arraySize);
+    }
+}
+
+}  // namespace gnomon::render

@@ -1,0 +1,56 @@
+// The lights of one frame as the passes need them: each light's main-pass record, ordered
+// by kind for the shader's loops (shaders/lights.glsl), and the light cameras of those that
+// cast shadows this frame. Fitted cameras cover what the view sees: the visible receivers'
+// boxes, or, for directional and area lights with FitTo::ViewDepth, the view's depth samples
+// (which also choose cascade splits and, with `cascades` 0, their count). No drawing: the
+// samples come in from the view depth pass.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gnomon/Options.h"
+#include "gnomon/Scene.h"
+#include "render/GpuScene.h"
+#include "render/MainPass.h"
+#include "render/ShadowPass.h"
+#include "shadow/ShadowMath.h"
+
+namespace gnomon::render {
+
+class LightPlan {
+public:
+    // Does planning `s` with `options` use view samples (a fitted directional or area light
+    // that casts shadows, with FitTo::ViewDepth)?
+    static bool wantsViewSamples(const Scene& s, const RenderOptions& options);
+
+    // Plans every light of `s` (the GPU copy `scene` gives the items' world boxes).
+    // `samples`: what the view sees, or null to fit to boxes.
+    void plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
+              const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples);
+    // After the shadow pass placed each map: its layer and its share of its array.
+    void finish(const ShadowPass& pass);
+
+    const std::vector<ShadowedLight>& shadowed() const { return mShadowed; }
+    std::vector<ShadowedLight>& shadowed() { return mShadowed; }
+    const std::vector<GpuLight>& records() const { return mLights; }
+    glm::ivec4 ranges() const { return mRanges; }  // ends of the record kinds
+    bool hasCascades() const { return !mCascadeRecords.empty(); }
+
+private:
+    void orderLights(std::size_t sceneLights);
+    void planCascades(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
+                      const glm::vec3& direction, int mapSize, int count, float aspect,
+                      const Aabb& sceneBounds, GpuLight& g);
+
+    std::vector<ShadowedLight> mShadowed;
+    std::vector<GpuLight> mLights;          // scene lights, then cascade records
+    std::vector<GpuLight> mCascadeRecords;  // reused every frame
+    std::vector<GpuLight> mOrdered;         // reused every frame
+    std::vector<int> mRemap;                // scene light -> record, reused
+    std::vector<std::uint8_t> mHasMap;      // scene light has a map this frame
+    glm::ivec4 mRanges{0};
+    shadow::FitScene mFit;  // reused every frame
+};
+
+}  // namespace gnomon::render
