@@ -21,7 +21,7 @@ void ViewDepthPass::draw(const GpuScene& scene, const glm::mat4& clipFromWorld) 
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
     const float one = 1.0f;
     glClearNamedFramebufferfv(mTarget.id(), GL_DEPTH, 0, &one);
-    glViewport(0, 0, mGrid.x, mGrid.y);
+    glViewport(0, 0, mGrid.size.x, mGrid.size.y);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
@@ -68,30 +68,57 @@ void ViewDepthPass::draw(const GpuScene& scene, const glm::mat4& clipFromWorld) 
     glDisable(GL_CULL_FACE);
 }
 
+void ViewDepthPass::allocate(const shadow::SampleGrid& grid) {
+    mDepth = gl::Texture::plain2D("view depth", GL_DEPTH_COMPONENT32F, grid.size.x, grid.size.y);
+    mTarget = gl::Framebuffer("view depth");
+    glNamedFramebufferDrawBuffer(mTarget.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(mTarget.id(), GL_NONE);
+    glNamedFramebufferTexture(mTarget.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
+    mTarget.checkComplete();
+    mRanges = gl::Texture::plain2D("view depth ranges", GL_RG32F, grid.cells.x, grid.cells.y);
+    mRangeTarget = gl::Framebuffer("view depth ranges");
+    glNamedFramebufferTexture(mRangeTarget.id(), GL_COLOR_ATTACHMENT0, mRanges.id(), 0);
+    glNamedFramebufferDrawBuffer(mRangeTarget.id(), GL_COLOR_ATTACHMENT0);
+    mRangeTarget.checkComplete();
+}
+
+void ViewDepthPass::reduce() {
+    if (!mReduce) {
+        mReduce = gl::buildProgram("view depth reduction",
+                                   {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                    {GL_FRAGMENT_SHADER, "depth_reduce.frag.glsl"}});
+        mEmpty = gl::VertexArray("view depth reduction (no attributes)");
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, mRangeTarget.id());
+    glViewport(0, 0, mGrid.cells.x, mGrid.cells.y);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(mReduce.id());
+    glUniform2i(0, mGrid.block, mGrid.block);
+    glUniform2i(1, mGrid.size.x, mGrid.size.y);
+    glBindTextureUnit(0, mDepth.id());
+    glBindSampler(0, 0);  // the main pass's comparing sampler would make texelFetch undefined
+    glBindVertexArray(mEmpty.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEnable(GL_DEPTH_TEST);
+}
+
 const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Camera& camera,
                                                  int width, int height) {
     const float aspect = float(width) / float(height);
-    const glm::ivec2 grid = shadow::sampleGridSize(width, height, kGridLimit);
-    const glm::mat4 clipFromWorld = shadow::sampleGridScale(grid) *
-                                    shadow::clipFromView(camera, aspect) *
-                                    shadow::viewFromWorld(camera);
-    if (mValid && mRevision == scene.revision() && mClipFromWorld == clipFromWorld &&
-        mGrid == grid) {
+    const shadow::SampleGrid grid = shadow::sampleGrid(width, height, kGridLimit);
+    const glm::mat4 clipFromWorld =
+        shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
+    const bool sameGrid = grid.size == mGrid.size && grid.block == mGrid.block;
+    if (mValid && sameGrid && mRevision == scene.revision() && mClipFromWorld == clipFromWorld) {
         return mSamples;
     }
-    if (mGrid != grid || !mTarget) {
-        mDepth = gl::Texture::plain2D("view depth samples", GL_DEPTH_COMPONENT32F, grid.x, grid.y);
-        mTarget = gl::Framebuffer("view depth samples");
-        glNamedFramebufferDrawBuffer(mTarget.id(), GL_NONE);
-        glNamedFramebufferReadBuffer(mTarget.id(), GL_NONE);
-        glNamedFramebufferTexture(mTarget.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
-        mTarget.checkComplete();
-    }
+    if (!sameGrid || !mTarget) allocate(grid);
     mGrid = grid;
     draw(scene, clipFromWorld);
-    mRead.resize(std::size_t(grid.x) * std::size_t(grid.y));
-    glGetTextureImage(mDepth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                      GLsizei(mRead.size() * sizeof(float)), mRead.data());
+    reduce();
+    mRead.resize(std::size_t(grid.cells.x) * std::size_t(grid.cells.y));
+    glGetTextureImage(mRanges.id(), 0, GL_RG, GL_FLOAT, GLsizei(mRead.size() * sizeof(glm::vec2)),
+                      mRead.data());
     shadow::viewSamples(mRead, grid, camera, aspect, mSamples);
     mValid = true;
     mRevision = scene.revision();

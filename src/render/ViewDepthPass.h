@@ -1,10 +1,12 @@
-// The view's depth at a coarse grid, drawn before the shadow maps so fitted directional
-// lights can cover what the view really sees (sample distribution shadow maps, Lauritzen,
-// Salvi and Lefohn, I3D 2011). Depth only: opaque and alpha-masked items as the main pass
+// The view's depth, drawn before the shadow maps so fitted directional lights can cover what
+// the view really sees (sample distribution shadow maps, Lauritzen, Salvi and Lefohn, I3D
+// 2011). Depth only, at the output's size: opaque and alpha-masked items as the main pass
 // draws them (same culling, masked texels cut); blended ones hide nothing and are skipped.
-// The depth is read back and turned into world points on the CPU: at ≤ 256 samples a side
-// that is a few hundred kilobytes, and the reduction then runs once per light and cascade
-// without another pass. The samples are kept while the camera and the scene are unchanged.
+// A second pass reduces it to a grid of at most kGridLimit cells a side, each the nearest
+// and farthest depth of its block of pixels (nothing between two samples is lost: a grazing
+// floor's farthest pixel before the horizon is its block's farthest depth). The grid is
+// read back and turned into world points on the CPU, where each light and cascade takes the
+// box of the points it needs. Kept while the camera, the size and the scene are unchanged.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +20,7 @@ namespace gnomon::render {
 
 class ViewDepthPass {
 public:
-    // Samples along the grid's longer side.
+    // Cells along the grid's longer side.
     static constexpr int kGridLimit = 128;
 
     // The samples of `camera`'s view of `scene` for an output of width x height (drawn
@@ -30,18 +32,23 @@ public:
 
 private:
     const gl::Program& program(bool alphaTested);
+    void allocate(const shadow::SampleGrid& grid);
     void draw(const GpuScene& scene, const glm::mat4& clipFromWorld);
+    void reduce();
 
-    gl::Program mPrograms[2];
-    gl::Texture mDepth;
+    gl::Program mPrograms[2], mReduce;
+    gl::Texture mDepth;  // the view's depth at the output's size
     gl::Framebuffer mTarget;
-    std::vector<float> mRead;
+    gl::Texture mRanges;  // RG32F: (nearest, farthest) per cell
+    gl::Framebuffer mRangeTarget;
+    gl::VertexArray mEmpty;  // the reduction's full-screen triangle has no attributes
+    std::vector<glm::vec2> mRead;
     shadow::ViewSamples mSamples;
     // What mSamples were taken from.
     bool mValid = false;
     std::uint64_t mRevision = 0;
     glm::mat4 mClipFromWorld{0.0f};
-    glm::ivec2 mGrid{0};
+    shadow::SampleGrid mGrid{{0, 0}, 0, {0, 0}};
 };
 
 }  // namespace gnomon::render

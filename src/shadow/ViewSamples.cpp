@@ -9,57 +9,56 @@
 
 namespace gnomon::shadow {
 
-glm::ivec2 sampleGridSize(int width, int height, int limit) {
-    const int longer = std::max(width, height);
-    const double scale = longer > limit ? double(limit) / double(longer) : 1.0;
-    return {std::max(2, int(std::lround(width * scale))),
-            std::max(2, int(std::lround(height * scale)))};
+SampleGrid sampleGrid(int width, int height, int limit) {
+    SampleGrid g;
+    g.size = {std::max(1, width), std::max(1, height)};
+    const int longer = std::max(g.size.x, g.size.y);
+    g.block = std::max(1, (longer + limit - 1) / limit);
+    g.cells = (g.size + g.block - 1) / g.block;
+    return g;
 }
 
-glm::mat4 sampleGridScale(glm::ivec2 grid) {
-    // Pixel centres of n pixels sit at NDC (2i + 1) / n - 1; scaling clip x by (n - 1) / n
-    // moves the first and last onto -1 and +1.
-    glm::mat4 s(1.0f);
-    s[0][0] = float(grid.x - 1) / float(grid.x);
-    s[1][1] = float(grid.y - 1) / float(grid.y);
-    return s;
-}
-
-void viewSamples(const std::vector<float>& depth, glm::ivec2 grid, const Camera& camera,
+void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, const Camera& camera,
                  float aspect, ViewSamples& out) {
     out.points.clear();
     out.padConstant = out.padPerDepth = 0.0f;
-    const glm::mat4 view = viewFromWorld(camera);
-    const glm::mat4 clip = sampleGridScale(grid) * clipFromView(camera, aspect);
-    const glm::mat4 worldFromClip = glm::inverse(clip * view);
+    const glm::mat4 clip = clipFromView(camera, aspect);
+    const glm::mat4 worldFromClip = glm::inverse(clip * viewFromWorld(camera));
     const glm::mat4 viewFromClip = glm::inverse(clip);
-    // Sample spacing: the view's extent over (n - 1) gaps, the larger of the two axes.
+    // One cell's width in world units (the larger axis; cells at the far edges may be
+    // partial, which only makes this generous).
+    const glm::vec2 cellNdc = 2.0f * float(grid.block) / glm::vec2(grid.size);
     if (camera.projection == Projection::Orthographic) {
-        out.padConstant = std::max((camera.right - camera.left) / float(grid.x - 1),
-                                   (camera.top - camera.bottom) / float(grid.y - 1));
+        out.padConstant = std::max(0.5f * (camera.right - camera.left) * cellNdc.x,
+                                   0.5f * (camera.top - camera.bottom) * cellNdc.y);
     } else {
         const float tanY = std::tan(0.5f * glm::radians(camera.fovyDegrees));
         const float a = camera.aspect > 0.0f ? camera.aspect : aspect;
-        out.padPerDepth =
-            std::max(2.0f * tanY * a / float(grid.x - 1), 2.0f * tanY / float(grid.y - 1));
+        out.padPerDepth = std::max(tanY * a * cellNdc.x, tanY * cellNdc.y);
     }
     out.nearest = std::numeric_limits<float>::max();
     out.farthest = 0.0f;
-    out.points.reserve(depth.size());
-    for (int y = 0; y < grid.y; ++y) {
-        for (int x = 0; x < grid.x; ++x) {
-            const float d = depth[std::size_t(y) * std::size_t(grid.x) + std::size_t(x)];
-            if (!(d < 1.0f) || !(d >= 0.0f)) continue;  // the clear value (or garbage): empty
-            const glm::vec4 ndc((2.0f * float(x) + 1.0f) / float(grid.x) - 1.0f,
-                                (2.0f * float(y) + 1.0f) / float(grid.y) - 1.0f, 2.0f * d - 1.0f,
-                                1.0f);
-            const glm::vec4 world = worldFromClip * ndc;
-            const glm::vec4 viewPoint = viewFromClip * ndc;
-            if (!(std::abs(world.w) > 0.0f) || !(std::abs(viewPoint.w) > 0.0f)) continue;
-            const float viewDepth = -viewPoint.z / viewPoint.w;
-            out.points.emplace_back(glm::vec3(world) / world.w, viewDepth);
-            out.nearest = std::min(out.nearest, viewDepth);
-            out.farthest = std::max(out.farthest, viewDepth);
+    out.points.reserve(2 * ranges.size());
+    auto add = [&](const glm::vec2& ndcXy, float depth) {
+        const glm::vec4 ndc(ndcXy, 2.0f * depth - 1.0f, 1.0f);
+        const glm::vec4 world = worldFromClip * ndc;
+        const glm::vec4 viewPoint = viewFromClip * ndc;
+        if (!(std::abs(world.w) > 0.0f) || !(std::abs(viewPoint.w) > 0.0f)) return;
+        const float viewDepth = -viewPoint.z / viewPoint.w;
+        out.points.emplace_back(glm::vec3(world) / world.w, viewDepth);
+        out.nearest = std::min(out.nearest, viewDepth);
+        out.farthest = std::max(out.farthest, viewDepth);
+    };
+    for (int y = 0; y < grid.cells.y; ++y) {
+        for (int x = 0; x < grid.cells.x; ++x) {
+            const glm::vec2 r = ranges[std::size_t(y) * std::size_t(grid.cells.x) + std::size_t(x)];
+            if (!(r.x < 1.0f) || !(r.x >= 0.0f) || !(r.y <= 1.0f)) continue;  // nothing there
+            // The cell's centre: the middle of its pixels (a last cell may be partial).
+            const glm::vec2 first = glm::vec2(x, y) * float(grid.block);
+            const glm::vec2 end = glm::min(first + float(grid.block), glm::vec2(grid.size));
+            const glm::vec2 centre = (first + end) / glm::vec2(grid.size) - 1.0f;
+            add(centre, r.x);
+            if (r.y > r.x) add(centre, r.y);
         }
     }
     if (out.points.empty()) out.nearest = 0.0f;

@@ -28,20 +28,23 @@ struct ViewSamples {
     float pad(float depth) const { return padConstant + padPerDepth * depth; }
 };
 
-// The sample grid's size for an output of width x height: the same shape, at most `limit`
-// samples along its longer side (never more than the output has pixels), at least 2.
-glm::ivec2 sampleGridSize(int width, int height, int limit);
+// The view depth pass draws the view's depth at full size and reduces it to a grid of
+// block x block pixel cells, each keeping the nearest and farthest depth it covers. `block`
+// makes the grid at most `limit` cells along its longer side; grid() is its size in cells.
+struct SampleGrid {
+    glm::ivec2 size{1};   // the output's pixels
+    int block = 1;        // pixels per cell side
+    glm::ivec2 cells{1};  // ceil(size / block)
+};
+SampleGrid sampleGrid(int width, int height, int limit);
 
-// The clip-space scale that puts the outermost pixel centres of a w x h grid on the edges of
-// the view (a pixel centre of an unscaled grid sits half a pixel inside): multiply the view's
-// clipFromWorld by it to draw the sample grid, so the grid reaches the view's borders.
-glm::mat4 sampleGridScale(glm::ivec2 grid);
-
-// The points of a depth buffer drawn through sampleGridScale(grid) * clip(camera) * view:
-// `depth` holds grid.x * grid.y window depths in [0, 1], rows bottom-up as OpenGL returns
-// them; 1 (the clear value) is empty. `aspect`: the output's width / height. Fills `out`
+// The points of a reduced depth buffer: `ranges` holds grid.cells.x * grid.cells.y (nearest,
+// farthest) window depths in [0, 1], rows bottom-up as OpenGL returns them; (1, 1) is a cell
+// with nothing. Each cell gives a point on its centre ray at each of its two depths; its pad
+// (one cell's width at that depth) reaches over the whole cell, so every pixel the view
+// drew lies within a pad of the points. `aspect`: the output's width / height. Fills `out`
 // (keeping its storage: a moving camera does not allocate every frame).
-void viewSamples(const std::vector<float>& depth, glm::ivec2 grid, const Camera& camera,
+void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, const Camera& camera,
                  float aspect, ViewSamples& out);
 
 // The light-space box (through `lightFromWorld`, a rotation) of the samples whose view depth

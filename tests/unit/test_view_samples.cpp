@@ -1,6 +1,7 @@
-// Sample distribution fitting (Lauritzen et al. 2011) without GL: the sample grid reaches the
-// view's borders, depth samples unproject onto the surface they came from, and directional
-// light cameras fitted to samples cover every sample with a smaller map than the boxes give.
+// Sample distribution fitting (Lauritzen et al. 2011) without GL: the reduced grid keeps
+// each block's nearest and farthest depth, samples unproject onto the surface they came from, and
+// directional light cameras fitted to samples cover every sample with a smaller map than the boxes
+// give.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,21 +14,16 @@
 namespace gnomon {
 namespace {
 
-TEST(ViewSamples, GridKeepsTheOutputShapeUpToTheLimit) {
-    EXPECT_EQ(shadow::sampleGridSize(1920, 1080, 256), glm::ivec2(256, 144));
-    EXPECT_EQ(shadow::sampleGridSize(1080, 1920, 256), glm::ivec2(144, 256));
-    EXPECT_EQ(shadow::sampleGridSize(100, 50, 256), glm::ivec2(100, 50));
-    EXPECT_EQ(shadow::sampleGridSize(1, 1, 256), glm::ivec2(2, 2));
-}
-
-TEST(ViewSamples, GridScalePutsTheOuterPixelCentresOnTheBorders) {
-    const glm::ivec2 grid(4, 8);
-    const glm::mat4 s = shadow::sampleGridScale(grid);
-    // The first pixel centre of an n-pixel viewport is at NDC 1/n - 1: the border maps there.
-    const glm::vec4 corner = s * glm::vec4(-1.0f, 1.0f, 0.3f, 1.0f);
-    EXPECT_FLOAT_EQ(corner.x, 1.0f / 4.0f - 1.0f);
-    EXPECT_FLOAT_EQ(corner.y, 1.0f - 1.0f / 8.0f);
-    EXPECT_FLOAT_EQ(corner.z, 0.3f);
+TEST(ViewSamples, GridBlocksKeepTheCellsUnderTheLimit) {
+    const shadow::SampleGrid wide = shadow::sampleGrid(1920, 1080, 128);
+    EXPECT_EQ(wide.block, 15);
+    EXPECT_EQ(wide.cells, glm::ivec2(128, 72));
+    const shadow::SampleGrid odd = shadow::sampleGrid(129, 50, 128);
+    EXPECT_EQ(odd.block, 2);
+    EXPECT_EQ(odd.cells, glm::ivec2(65, 25));  // the last column of cells is half full
+    const shadow::SampleGrid small = shadow::sampleGrid(100, 50, 128);
+    EXPECT_EQ(small.block, 1);
+    EXPECT_EQ(small.cells, glm::ivec2(100, 50));
 }
 
 Camera groundCamera() {
@@ -40,17 +36,17 @@ Camera groundCamera() {
     return c;
 }
 
-// The depth buffer of the ground plane y = 0 (|x|, |z| <= 10) seen by `camera` through the
-// sample grid, as the view depth pass would draw it.
-std::vector<float> groundDepth(const Camera& camera, glm::ivec2 grid, float aspect) {
-    const glm::mat4 clip = shadow::sampleGridScale(grid) * shadow::clipFromView(camera, aspect) *
-                           shadow::viewFromWorld(camera);
+// The depth buffer of the ground plane y = 0 (|x|, |z| <= 10) seen by `camera` at `size`,
+// reduced to (nearest, farthest) per block as the view depth pass's reduction does.
+std::vector<glm::vec2> groundRanges(const Camera& camera, const shadow::SampleGrid& grid,
+                                    float aspect) {
+    const glm::mat4 clip = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
     const glm::mat4 worldFromClip = glm::inverse(clip);
-    std::vector<float> depth(std::size_t(grid.x * grid.y), 1.0f);
-    for (int y = 0; y < grid.y; ++y) {
-        for (int x = 0; x < grid.x; ++x) {
-            const glm::vec2 ndc((2.0f * x + 1.0f) / grid.x - 1.0f,
-                                (2.0f * y + 1.0f) / grid.y - 1.0f);
+    std::vector<glm::vec2> ranges(std::size_t(grid.cells.x * grid.cells.y), glm::vec2(1.0f, 0.0f));
+    for (int y = 0; y < grid.size.y; ++y) {
+        for (int x = 0; x < grid.size.x; ++x) {
+            const glm::vec2 ndc((2.0f * x + 1.0f) / grid.size.x - 1.0f,
+                                (2.0f * y + 1.0f) / grid.size.y - 1.0f);
             glm::vec4 a = worldFromClip * glm::vec4(ndc, -1.0f, 1.0f);
             glm::vec4 b = worldFromClip * glm::vec4(ndc, 1.0f, 1.0f);
             const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
@@ -58,24 +54,36 @@ std::vector<float> groundDepth(const Camera& camera, glm::ivec2 grid, float aspe
             const glm::vec3 hit = p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
             if (std::abs(hit.x) > 10.0f || std::abs(hit.z) > 10.0f) continue;
             const glm::vec4 c = clip * glm::vec4(hit, 1.0f);
-            depth[std::size_t(y * grid.x + x)] = 0.5f * c.z / c.w + 0.5f;
+            const float d = 0.5f * c.z / c.w + 0.5f;
+            glm::vec2& r = ranges[std::size_t((y / grid.block) * grid.cells.x + x / grid.block)];
+            r = glm::vec2(std::min(r.x, d), std::max(r.y, d));
         }
     }
-    return depth;
+    for (glm::vec2& r : ranges) {
+        if (r.x >= 1.0f) r = glm::vec2(1.0f);
+    }
+    return ranges;
+}
+
+// View depth of the ground plane's points seen at the view's lower border.
+float lowerBorderDepth(const Camera& camera) {
+    const float down = std::atan2(camera.eye.y, glm::length(glm::vec2(camera.eye.x, camera.eye.z)));
+    const float lowerBorder = down + 0.5f * glm::radians(camera.fovyDegrees);
+    return camera.eye.y / std::sin(lowerBorder) * std::cos(lowerBorder - down);
 }
 
 TEST(ViewSamples, DepthSamplesLandOnTheSurfaceTheyCameFrom) {
     const Camera camera = groundCamera();
-    const glm::ivec2 grid(64, 48);
+    const shadow::SampleGrid grid = shadow::sampleGrid(64, 48, 128);  // one pixel per cell
     const float aspect = 4.0f / 3.0f;
-    const std::vector<float> depth = groundDepth(camera, grid, aspect);
+    const std::vector<glm::vec2> ranges = groundRanges(camera, grid, aspect);
     shadow::ViewSamples samples;
-    shadow::viewSamples(depth, grid, camera, aspect, samples);
+    shadow::viewSamples(ranges, grid, camera, aspect, samples);
     std::size_t covered = 0;
-    for (float d : depth)
-        covered += d < 1.0f ? 1u : 0u;
+    for (const glm::vec2& r : ranges)
+        covered += r.x < 1.0f ? 1u : 0u;
     ASSERT_GT(covered, 100u);
-    ASSERT_EQ(samples.points.size(), covered);
+    ASSERT_EQ(samples.points.size(), covered);  // one depth per cell: one point each
     const glm::mat4 view = shadow::viewFromWorld(camera);
     for (const glm::vec4& p : samples.points) {
         EXPECT_NEAR(p.y, 0.0f, 2e-3f * p.w);
@@ -83,13 +91,36 @@ TEST(ViewSamples, DepthSamplesLandOnTheSurfaceTheyCameFrom) {
         EXPECT_GE(p.w, samples.nearest);
         EXPECT_LE(p.w, samples.farthest);
     }
-    // The bottom row looks at the ground just in front of the camera: the nearest sample is
-    // where the view's lower border meets the ground.
-    const float lowerBorder = std::atan(2.0f / 6.0f) + glm::radians(30.0f);
-    const float nearestAlongRay = 2.0f / std::sin(lowerBorder);
-    const float nearestDepth = nearestAlongRay * std::cos(lowerBorder - std::atan(2.0f / 6.0f));
-    EXPECT_NEAR(samples.nearest, nearestDepth, 0.01f * nearestDepth);
-    EXPECT_GT(samples.pad(samples.farthest), samples.pad(samples.nearest));
+    // The bottom row's centres are half a pixel above the view's lower border: the nearest
+    // ground the view shows lies between the nearest sample and a pad before it.
+    const float border = lowerBorderDepth(camera);
+    EXPECT_LE(samples.nearest - samples.pad(samples.nearest), border);
+    EXPECT_GE(samples.nearest, border);
+}
+
+TEST(ViewSamples, BlocksKeepTheirNearestAndFarthestPixels) {
+    // 8 x 8 pixel blocks: the farthest ground pixel before the horizon is not lost between
+    // two samples, and the view's nearest ground is within a pad of the nearest sample.
+    Camera camera = groundCamera();
+    const float aspect = 4.0f / 3.0f;
+    const shadow::SampleGrid fine = shadow::sampleGrid(256, 192, 256);
+    const shadow::SampleGrid coarse = shadow::sampleGrid(256, 192, 32);
+    ASSERT_EQ(coarse.block, 8);
+    shadow::ViewSamples all, blocks;
+    shadow::viewSamples(groundRanges(camera, fine, aspect), fine, camera, aspect, all);
+    shadow::viewSamples(groundRanges(camera, coarse, aspect), coarse, camera, aspect, blocks);
+    EXPECT_FLOAT_EQ(blocks.farthest, all.farthest);
+    EXPECT_FLOAT_EQ(blocks.nearest, all.nearest);
+    EXPECT_GT(blocks.points.size(), std::size_t(coarse.cells.x * coarse.cells.y) / 4);
+    EXPECT_LT(blocks.points.size(), all.points.size() / 16);
+    // Every pixel's point lies within a pad of a block point: the light-space box of the
+    // blocks' points holds every pixel's.
+    const Aabb coarseBox = shadow::samplesInLight(blocks, glm::mat4(1.0f), 0.0f, 1e9f);
+    for (const glm::vec4& p : all.points) {
+        EXPECT_TRUE(glm::all(glm::greaterThanEqual(glm::vec3(p), coarseBox.min)) &&
+                    glm::all(glm::lessThanEqual(glm::vec3(p), coarseBox.max)))
+            << p.x << " " << p.y << " " << p.z;
+    }
 }
 
 TEST(ViewSamples, LightSpaceBoxHoldsTheWindowsSamplesWithTheirPad) {
@@ -125,10 +156,10 @@ TEST(ViewSamples, SunFittedToSamplesCoversThemWithSmallerTexels) {
     // A 200 x 200 ground with a post on it, seen close up: the boxes span the whole ground.
     Camera camera = groundCamera();
     camera.far = 30.0f;
-    const glm::ivec2 grid(64, 48);
+    const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
     const float aspect = 4.0f / 3.0f;
     shadow::ViewSamples samples;
-    shadow::viewSamples(groundDepth(camera, grid, aspect), grid, camera, aspect, samples);
+    shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
     shadow::FitScene scene;
     scene.receivers = {Aabb{{-100.0f, 0.0f, -100.0f}, {100.0f, 0.0f, 100.0f}}};
     scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
