@@ -9,7 +9,8 @@ layout(binding = 0) uniform sampler2DArray uMaps;  // NEAREST, no comparison
 layout(location = 0) uniform ivec2 uGrid;          // columns, rows
 layout(location = 1) uniform vec3 uRect;           // lower-left corner (pixels), panel size
 layout(location = 2) uniform int uPanels;
-layout(location = 3) uniform vec2 uPanel[6];       // layer, share of the layer the map covers
+layout(location = 3) uniform vec4 uPanel[6];  // layer, share of the layer the map covers,
+                                              // the map's origin in the layer (uv)
 
 layout(location = 0) out vec4 fragColour;
 
@@ -21,7 +22,7 @@ void main() {
         fragColour = vec4(0.1, 0.1, 0.15, 1.0);
         return;
     }
-    vec2 uv = fract(p) * uPanel[panel].y;
+    vec2 uv = uPanel[panel].zw + fract(p) * uPanel[panel].y;
     float depth = unpackDepth(texture(uMaps, vec3(uv, uPanel[panel].x)));
     fragColour = vec4(vec3(clamp(depth, 0.0, 1.0)), 1.0);
 }

@@ -24,7 +24,8 @@ struct LightData {
     vec4 shadow;            // x cos(inner cone), y texel world size, z frame kind, w uv scale
     vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv,
                             // w the map's far plane
-    vec4 wsPosition;        // xyz world position (cube lookups), w the map's near plane
+    vec4 wsPosition;        // xyz world position (cube lookups); 2D maps: xy the map's
+                            // lower-left corner in its layer (uv); w the map's near plane
     vec4 soft;              // PCSS: x emitter radius (world; directional: tan of its angular
                             // radius), y 1 = angular, z emitter distance at map depth 0;
                             // w the light's index in the scene

@@ -140,19 +140,21 @@ const int kGatherRadius = PCF_SIZE / 2;
 const int kGatherRadius = 0;
 #endif
 float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, float spread,
-                float texelUv, float uvScale) {
+                float texelUv, vec2 originUv, float uvScale) {
     const int r = kGatherRadius;
     vec2 s = uv / texelUv - 0.5;  // in texels of the layer: texel i's centre is at i
     vec2 base = floor(s);
     vec2 f = s - base;
     vec2 g = gradientUv * texelUv;  // stored depth per texel along the layer's axes
-    float last = floor(uvScale / texelUv + 0.5) - 2.0;  // the map's last 2x2 block start
+    // The map's first texel and its last 2x2 block's start, in texels of the layer.
+    vec2 first = floor(originUv / texelUv + 0.5);
+    vec2 last = first + floor(uvScale / texelUv + 0.5) - 2.0;
     float sum = 0.0;
     for (int my = 0; my <= r; ++my) {
-        float ky = clamp(base.y - float(r - 2 * my), 0.0, last);
+        float ky = clamp(base.y - float(r - 2 * my), first.y, last.y);
         vec2 wy = vec2(my == 0 ? 1.0 - f.y : 1.0, my == r ? f.y : 1.0);
         for (int mx = 0; mx <= r; ++mx) {
-            float kx = clamp(base.x - float(r - 2 * mx), 0.0, last);
+            float kx = clamp(base.x - float(r - 2 * mx), first.x, last.x);
             vec2 wx = vec2(mx == 0 ? 1.0 - f.x : 1.0, mx == r ? f.x : 1.0);
             // Gathered at the corner the four texels share: x (k, k+1), y (k+1, k+1),
             // z (k+1, k), w (k, k) as (column, row).
@@ -387,9 +389,10 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     }
 #endif
     float reference = coord.z - depthTolerance(light, coord.z, uDepthAware.y);
-    // The light's map covers [0, uvScale] of the layer; keep every tap inside it.
-    vec2 lo = vec2(0.5 * texelUv), hi = vec2(uvScale - 0.5 * texelUv);
-    vec2 uv = coord.xy * uvScale;
+    // The light's map covers [origin, origin + uvScale] of the layer; keep every tap inside.
+    vec2 origin = light.wsPosition.xy;
+    vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);
+    vec2 uv = origin + coord.xy * uvScale;
 #if defined(RECEIVER_PLANE)
     // Stored depth per unit of layer uv on the receiver's plane; `spread`: how far it moves
     // between a tap's point and the centres of the texels a bilinear or nearest read uses.
@@ -405,7 +408,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 #endif
 #if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
     (defined(FILTER_PCF) || defined(FILTER_HW2X2))
-    return gatherPcf(uv, layer, reference, g, spread, texelUv, uvScale);
+    return gatherPcf(uv, layer, reference, g, spread, texelUv, origin, uvScale);
 #elif defined(FILTER_PCF)
     float sum = 0.0;
     const int r = PCF_SIZE / 2;

@@ -47,7 +47,7 @@ const gl::Program& DebugPass::mapsProgram(DepthFormat format) {
 bool DebugPass::drawMaps(const ShadowPass& maps, const std::vector<ShadowedLight>& shadowed,
                          int light, int width, int height) {
     // This light's maps: one, its cascades, or its cube's six faces.
-    float panels[12];
+    float panels[24];  // per panel: layer, share of the layer the map covers, its origin
     int count = 0;
     bool cube = false;
     for (const ShadowedLight& sl : shadowed) {
@@ -55,14 +55,17 @@ bool DebugPass::drawMaps(const ShadowPass& maps, const std::vector<ShadowedLight
         cube = sl.frame.kind == shadow::FrameKind::Cube;
         if (cube) {
             for (int face = 0; face < 6; ++face) {
-                panels[2 * face] = float(6 * sl.layer + face);
-                panels[2 * face + 1] = float(sl.mapSize) / float(maps.cubes().width());
+                const float share = float(sl.mapSize) / float(maps.cubes().width());
+                const float panel[4] = {float(6 * sl.layer + face), share, 0.0f, 0.0f};
+                std::copy(panel, panel + 4, panels + 4 * face);
             }
             count = 6;
             break;
         }
-        panels[2 * count] = float(sl.layer);
-        panels[2 * count + 1] = float(sl.mapSize) / float(maps.mapArraySize());
+        const float size = float(maps.mapArraySize());
+        const float panel[4] = {float(sl.layer), float(sl.mapSize) / size,
+                                float(sl.origin.x) / size, float(sl.origin.y) / size};
+        std::copy(panel, panel + 4, panels + 4 * count);
         ++count;
     }
     if (count == 0) return false;
@@ -88,7 +91,7 @@ bool DebugPass::drawMaps(const ShadowPass& maps, const std::vector<ShadowedLight
     glUniform2i(0, columns, rows);
     glUniform3f(1, x0, y0, panel);
     glUniform1i(2, count);
-    glUniform2fv(3, count, panels);
+    glUniform4fv(3, count, panels);
     glBindTextureUnit(0, texture);
     glBindSampler(0, mRawSampler.id());
     glDisable(GL_DEPTH_TEST);

@@ -240,6 +240,10 @@ void LightPlan::finish(const ShadowPass& pass) {
         g.colour.w = float(sl.layer);
         g.shadow.w = float(sl.mapSize) / float(arraySize);
         g.shadowBias.z = 1.0f / float(arraySize);
+        // A 2D map's square in its layer (lights.glsl: wsPosition.xy, which only cubes use
+        // otherwise).
+        if (!cube)
+            g.wsPosition = glm::vec4(glm::vec2(sl.origin) / float(arraySize), 0.0f, g.wsPosition.w);
     }
 }
 

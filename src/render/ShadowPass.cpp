@@ -120,7 +120,7 @@ void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
         fb.checkComplete();
         mFramebuffers.push_back(std::move(fb));
     }
-    mLayers.assign(size_t(layers), LayerState{});
+    mLayers.clear();  // every map is drawn again into the new texture
 }
 
 void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
@@ -283,15 +283,23 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
 ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
                                    const ShadowOptions& options, PassClock* clock,
                                    std::vector<PassTiming>* timings) {
-    int size2D = 0, sizeCube = 0, count2D = 0, countCube = 0;
+    int size2D = 0, sizeCube = 0, countCube = 0;
+    mSizes.clear();
     for (ShadowedLight& l : lights) {
         if (l.frame.kind == shadow::FrameKind::Cube) {
             sizeCube = std::max(sizeCube, l.mapSize);
             l.layer = countCube++;
         } else {
             size2D = std::max(size2D, l.mapSize);
-            l.layer = count2D++;
+            mSizes.push_back(l.mapSize);
         }
+    }
+    const int count2D = shadow::packMaps(mSizes, size2D, mSlots);
+    std::size_t next2D = 0;
+    for (ShadowedLight& l : lights) {
+        if (l.frame.kind == shadow::FrameKind::Cube) continue;
+        l.layer = mSlots[next2D].layer;
+        l.origin = mSlots[next2D++].origin;
     }
     const DepthFormat format = options.depthFormat;
     const GLenum cubeFormat = nativeFormat(format);
@@ -299,6 +307,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         (!mMaps || mMaps.width() != size2D || mMaps.layers() != count2D || mMapFormat != format)) {
         allocate2D(size2D, count2D, format);
     }
+    mLayers.resize(mSizes.size());
     if (countCube > 0 && (!mCubes || mCubes.width() != sizeCube ||
                           mCubes.layers() != 6 * countCube || mCubes.format() != cubeFormat)) {
         allocateCubes(sizeCube, countCube, format);
@@ -308,17 +317,20 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
     mCulled = 0;
     bool any = false;
     const float one = 1.0f;
+    std::size_t index2D = 0;
     for (const ShadowedLight& light : lights) {
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
-        LayerState want{{},
-                        light.mapSize,
-                        collectCasters(scene, light, options),
-                        options.cull,
-                        options.biasSlope,
-                        options.biasUnits,
-                        light.depthClamp,
-                        format,
-                        options.blendShadows};
+        LayerState want{
+            {},
+            light.mapSize,
+            cube ? glm::ivec3(0, 0, light.layer) : glm::ivec3(light.origin, light.layer),
+            collectCasters(scene, light, options),
+            options.cull,
+            options.biasSlope,
+            options.biasUnits,
+            light.depthClamp,
+            format,
+            options.blendShadows};
         if (cube) {
             for (int face = 0; face < 6; ++face) {
                 want.clipFromWorld[size_t(face)] = light.frame.faceClipFromWorld(face);
@@ -326,7 +338,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         } else {
             want.clipFromWorld[0] = light.frame.clipFromWorld();
         }
-        LayerState& have = (cube ? mCubeLayers : mLayers)[size_t(light.layer)];
+        LayerState& have = cube ? mCubeLayers[size_t(light.layer)] : mLayers[index2D++];
         if (have == want) continue;  // nothing changed: keep the map
         have = want;
         if (clock) clock->start();
@@ -335,7 +347,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
             any = true;
         }
         setDepthState(options, light.depthClamp);
-        glViewport(0, 0, light.mapSize, light.mapSize);
+        glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
         const std::array<glm::mat4, 6>& m = have.clipFromWorld;
         if (!cube) {
             const bool colour = isColourFormat(format);
@@ -345,13 +357,18 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
                                                                         : kColour + 2;
             const GLuint fb = mFramebuffers[size_t(light.layer)].id();
             glBindFramebuffer(GL_FRAMEBUFFER, fb);
-            // Clear the whole layer (clears ignore the viewport): no stale depth is ever read.
-            // Encoded depth clears to all ones, which every packing decodes as >= 1 (far).
+            // Clear this map's square only (clears ignore the viewport but not the scissor):
+            // the other maps of the layer stay. Lookups never leave the square, so no stale
+            // depth is read. Encoded depth clears to all ones, which every packing decodes as
+            // >= 1 (far).
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
             glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &one);
             if (colour) {
                 const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
                 glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
             }
+            glDisable(GL_SCISSOR_TEST);
             drawCasters(scene, options, variant, 1,
                         [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]); });
         } else {
@@ -422,9 +439,10 @@ Image16 ShadowPass::readBack(const ShadowedLight& light) const {
     for (int face = 0; face < faces; ++face) {
         const GLuint texture = cube ? mCubes.id() : mMaps.id();
         const int layer = cube ? 6 * light.layer + face : light.layer;
+        const int x = cube ? 0 : light.origin.x, y = cube ? 0 : light.origin.y;
         if (colour) {
             // Decoded on the CPU by the same scheme the shaders use (shadow/DepthPacking).
-            glGetTextureSubImage(texture, 0, 0, 0, layer, size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+            glGetTextureSubImage(texture, 0, x, y, layer, size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
                                  GLsizei(encoded.size()), encoded.data());
             for (size_t i = 0; i < depth.size(); ++i) {
                 const glm::vec4 c(encoded[4 * i], encoded[4 * i + 1], encoded[4 * i + 2],
@@ -432,7 +450,7 @@ Image16 ShadowPass::readBack(const ShadowedLight& light) const {
                 depth[i] = shadow::decodeDepth(mMapFormat, c / 255.0f);
             }
         } else {
-            glGetTextureSubImage(texture, 0, 0, 0, layer, size, size, 1, GL_DEPTH_COMPONENT,
+            glGetTextureSubImage(texture, 0, x, y, layer, size, size, 1, GL_DEPTH_COMPONENT,
                                  GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
         }
         toGrey(depth, size, out, face * size);

@@ -1,6 +1,7 @@
 // The shadow pass (SPEC S1, S3, S14, S21): one depth-only rendering per shadowed light.
-// Single-frustum lights (directional, spot, area, textbook point cameras) each own a layer of
-// a DEPTH_COMPONENT32F 2D array (a light's map in the layer's lower-left mapSize^2 texels);
+// Single-frustum lights (directional, spot, area, textbook point cameras) each own a square of
+// a layer of a 2D array (layers as large as the largest map; smaller maps share layers,
+// placed by shadow::packMaps);
 // omnidirectional point lights own six layers of a cube-map array, drawn in one instanced
 // pass with gl_Layer from the vertex shader, or six passes where the driver cannot.
 // Casters outside a light's volume are not drawn into its map, and a map is re-rendered
@@ -15,6 +16,7 @@
 #include "gnomon/Options.h"
 #include "gnomon/Renderer.h"
 #include "render/GpuScene.h"
+#include "shadow/MapAtlas.h"
 #include "shadow/ShadowMath.h"
 
 namespace gnomon::render {
@@ -30,6 +32,7 @@ struct ShadowedLight {
     // The view depths whose pixels read this map (a cascade's slice and the previous
     // cascade's blend band; every depth for the others).
     float depthFrom = 0.0f, depthTo = std::numeric_limits<float>::max();
+    glm::ivec2 origin{0};  // 2D maps: the map's lower-left texel in its layer (shadow pass)
 };
 
 struct ShadowPassStats {
@@ -70,6 +73,7 @@ private:
     struct LayerState {
         std::array<glm::mat4, 6> clipFromWorld{};  // one (2D map) or six (cube) used
         int mapSize = 0;
+        glm::ivec3 place{-1};               // 2D maps: origin and layer
         std::uint64_t castersHash = ~0ull;  // geometry + the casters in the volume
         CullMode cull = CullMode::Back;
         float slope = -1.0f, units = -1.0f;
@@ -105,9 +109,11 @@ private:
     std::vector<gl::Framebuffer> mFramebuffers;          // one per 2D layer
     gl::Framebuffer mCubeFramebuffer;                    // layered: the whole cube array
     std::vector<gl::Framebuffer> mCubeFaceFramebuffers;  // fallback: one per cube face
-    std::vector<LayerState> mLayers, mCubeLayers;
-    std::vector<std::uint32_t> mVisible;  // reused every frame
-    gl::Texture mBareDepth;               // bareDepthPass's target
+    std::vector<LayerState> mLayers, mCubeLayers;        // per 2D map (in lights' order), per cube
+    std::vector<int> mSizes;                             // reused every frame
+    std::vector<shadow::MapSlot> mSlots;                 // reused every frame
+    std::vector<std::uint32_t> mVisible;                 // reused every frame
+    gl::Texture mBareDepth;                              // bareDepthPass's target
     gl::Framebuffer mBareFramebuffer;
     int mCulled = 0;
 };
