@@ -1,5 +1,5 @@
 #version 450 core
-// Shadow pass (SPEC S1): scene casters seen from the light camera; only depth is written.
+// Shadow pass: scene casters seen from the light camera; only depth is written.
 // ALPHA_TEST: also the texture coordinates and alpha rule of masked and blended casters.
 #include "scene_data.glsl"
 

@@ -1,5 +1,5 @@
 #version 450 core
-// Shadow pass for colour formats (SPEC S10): the fragment's window depth gl_FragCoord.z,
+// Shadow pass for colour formats: the fragment's window depth gl_FragCoord.z,
 // encoded into an RGBA8 target (a depth attachment still does the depth test).
 #include "depth_packing.glsl"
 #ifdef ALPHA_TEST

@@ -1,5 +1,5 @@
 #version 450 core
-// Point-light shadow pass (SPEC S21): all six cube faces in one instanced draw; instance i
+// Point-light shadow pass: all six cube faces in one instanced draw; instance i
 // renders face i into layer uBaseLayer + i of the cube-map array (gl_Layer written here, not
 // in a geometry shader: those are slow on llvmpipe). Only depth is written.
 #extension GL_ARB_shader_viewport_layer_array : require

@@ -1,4 +1,4 @@
-// Depth in 8-bit colour channels (SPEC S10), the GPU side of src/shadow/DepthPacking.cpp:
+// Depth in 8-bit colour channels, the GPU side of src/shadow/DepthPacking.cpp:
 // PACK_R8 (red only), PACK_256 (the WebGL book's base), PACK_255 (the tutorial's base);
 // none of them: a native depth texture, whose red channel is the depth.
 #if defined(PACK_256)

@@ -1,4 +1,4 @@
-// Lights as the main pass sees them: one record per light (SPEC S3; up to MAX_LIGHTS, set
+// Lights as the main pass sees them: one record per light (up to MAX_LIGHTS, set
 // from GL_MAX_UNIFORM_BLOCK_SIZE), positions and directions already in view space, plus the
 // light's shadow transform. A uniform block, not a storage buffer: indexed by the loop
 // counter (dynamically uniform) its reads are scalar, where llvmpipe gathers storage-buffer

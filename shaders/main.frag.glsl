@@ -1,5 +1,5 @@
 #version 450 core
-// Main pass shading (SPEC S4): ambient + Blinn-Phong diffuse and specular per light in view
+// Main pass shading: ambient + Blinn-Phong diffuse and specular per light in view
 // space, attenuation 1/(c0 + c1 d + c2 d^2) (area lights: d from the light's plane), spot
 // cones, and per-light shadow visibility.
 // A shadowed fragment keeps ambient only (SHADOWED_FACTOR undefined) or has its colour

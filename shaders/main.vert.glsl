@@ -1,5 +1,5 @@
 #version 450 core
-// Main pass (SPEC S1, S2): carries each surface point in world space (shadow lookups) and
+// Main pass: carries each surface point in world space (shadow lookups) and
 // view space (lighting), and to clip space for the rasteriser.
 #include "scene_data.glsl"
 

@@ -1,4 +1,4 @@
-// Shadow map lookup (SPEC S2, S9, S13, S17): world point -> light texture space, divide by
+// Shadow map lookup: world point -> light texture space, divide by
 // w, compare with the stored depth plus tolerance. Single-frustum maps of all lights live in
 // one texture array (one layer per light, a light's map in the layer's lower-left corner);
 // point lights' cube maps in one cube-map array.
@@ -8,7 +8,7 @@
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
-// Depth-aware tolerance (SPEC S12): x steps of the stored depth's spacing; y, z that spacing
+// Depth-aware tolerance: x steps of the stored depth's spacing; y, z that spacing
 // for the 2D maps and the cubes (< 0: one float ulp of the stored depth, which grows with it).
 layout(location = 7) uniform vec3 uDepthAware;
 
@@ -268,7 +268,7 @@ float cubePlaneDepth(vec3 p, vec3 offset, float near, float far) {
     return 0.5 * ndc + 0.5;
 }
 
-// Point lights (SPEC S21): the cube face of the direction light -> point holds the depth
+// Point lights: the cube face of the direction light -> point holds the depth
 // along that face's axis; compare against the same depth of this point. PCF taps lie in the
 // face's plane (a 2-D kernel on the face, not the tutorial's 3-D grid of directions: the
 // same footprint for k^2 instead of k^3 lookups).
@@ -447,7 +447,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 // Cascade of the last lookup, for --debug-view cascades (-1: none).
 int gCascade = -1;
 
-// Cascaded directional light (SPEC S22): the first cascade whose far split lies beyond the
+// Cascaded directional light: the first cascade whose far split lies beyond the
 // fragment's view depth; within the last `blend` fraction of a cascade, a mix with the next
 // one hides the seam. Beyond the last cascade nothing is shadowed.
 // The cascade is chosen first and looked up after: llvmpipe would run a lookup placed in

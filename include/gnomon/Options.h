@@ -9,22 +9,22 @@
 
 namespace gnomon {
 
-// What a shadowed fragment keeps (SPEC S4).
+// What a shadowed fragment keeps.
 enum class ShadowedRule {
     AmbientOnly,  // the light's diffuse and specular terms are dropped (course text)
     Factor,       // the fragment's colour is multiplied by shadowFactor (WebGL book: 0.7)
 };
 
-// A fragment outside a light's shadow map (SPEC S9).
+// A fragment outside a light's shadow map.
 enum class OutsidePolicy {
     Lit,    // correct: nothing in the map can shadow it
     Clamp,  // the textbooks' clamp-to-edge lookup, shows the error they warn about
 };
 
-// Faces drawn in the depth pass (SPEC S14).
+// Faces drawn in the depth pass.
 enum class CullMode { Back, Front, None };
 
-// How the shadow map is sampled (SPEC S13, S17).
+// How the shadow map is sampled.
 enum class ShadowFilter {
     None,     // one lookup filtered by mapFilter, compared by hand: hard, aliased edges
     Hw2x2,    // comparison sampler with LINEAR: 2x2 bilinear PCF (colour formats: one lookup)
@@ -34,7 +34,7 @@ enum class ShadowFilter {
               // penumbra of a light of lightRadius (lightAngle for directional lights)
 };
 
-// How a shadow map stores depth (SPEC S10). Colour formats write gl_FragCoord.z from the
+// How a shadow map stores depth. Colour formats write gl_FragCoord.z from the
 // fragment shader into an 8-bit RGBA target and compare by hand in the main pass; native
 // formats are depth attachments compared by the sampler. Point-light cubes always use a
 // native format (depth32f when a colour format is chosen).
@@ -47,7 +47,7 @@ enum class DepthFormat {
     Depth32F,
 };
 
-// Filtering of the stored depth before a comparison by hand (SPEC S13): every lookup of a
+// Filtering of the stored depth before a comparison by hand: every lookup of a
 // colour format, and --filter none on native depth (the course text's LINEAR lookups).
 enum class MapFilter { Nearest, Linear };
 
@@ -98,9 +98,9 @@ struct ShadowOptions {
     // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
     int cascades = 0;
     FitTo fitTo = FitTo::ViewDepth;  // what fitted directional and area lights cover
-    float cascadeLambda = 0.75f;     // splits: 0 uniform .. 1 logarithmic (SPEC S22)
+    float cascadeLambda = 0.75f;     // splits: 0 uniform .. 1 logarithmic
     float cascadeBlend = 0.1f;       // fraction of each cascade blended into the next, 0..0.5
-    DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps (SPEC S10)
+    DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
     BlendShadows blendShadows = BlendShadows::Dithered;  // shadows of blended materials
 

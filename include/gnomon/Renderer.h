@@ -22,7 +22,7 @@ struct ContextOptions {
     bool currentContext = false;
 };
 
-// One light's shadow map read back from the GPU (SPEC S26: grey, darker = nearer).
+// One light's shadow map read back from the GPU (grey, darker = nearer).
 struct ShadowMapImage {
     int light = 0;     // index into Scene::lights
     int cascade = -1;  // cascade index for cascaded directional lights, else -1
@@ -40,7 +40,7 @@ struct PassTiming {
     std::int64_t fragments = -1;  // fragment shader invocations; -1: the driver cannot count
 };
 
-// What a frame cost (SPEC S25): N shadowed lights cost up to N shadow renderings plus the
+// What a frame cost: N shadowed lights cost up to N shadow renderings plus the
 // main one, and N maps of memory; maps whose light and casters did not change are kept.
 struct FrameStats {
     int shadowPasses = 0;               // shadow maps rendered this frame (kept ones: 0)

@@ -1,6 +1,6 @@
 // The scene model (no GL): meshes, materials, objects placing meshes in the world, the view
 // camera, lights with their shadow settings, and the options the scene was authored with.
-// Built-in scenes reproduce the textbooks' set-ups with their exact numbers (SPEC section 8).
+// Built-in scenes reproduce the textbooks' set-ups with their exact numbers.
 #pragma once
 
 #include <cstdint>
@@ -60,7 +60,7 @@ struct Material {
     float alphaCutoff = 0.5f;  // Mask: cut below this alpha
 };
 
-// A constant rotation over time about an axis through `pivot` (SPEC S27).
+// A constant rotation over time about an axis through `pivot`.
 struct Spin {
     glm::vec3 axis{0.0f, 1.0f, 0.0f};
     float degreesPerSecond = 0.0f;
@@ -73,8 +73,8 @@ struct Object {
     std::uint32_t material = 0;  // index into Scene::materials
     glm::mat4 worldFromModel{1.0f};
     Spin spin;                    // applied after worldFromModel, at RenderOptions::time
-    bool castsShadows = true;     // drawn into shadow maps (SPEC S23)
-    bool receivesShadows = true;  // looks up shadow maps in the main pass (SPEC S23)
+    bool castsShadows = true;     // drawn into shadow maps
+    bool receivesShadows = true;  // looks up shadow maps in the main pass
 
     glm::mat4 worldFromModelAt(double seconds) const;
 };
@@ -94,15 +94,15 @@ struct Camera {
 };
 
 enum class LightType {
-    Directional,  // parallel rays along `direction`, no falloff (SPEC S18)
-    Spot,         // from `position` along `direction` inside a cone, falls off (SPEC S19)
-    Point,        // from `position` in all directions, falls off (SPEC S21)
+    Directional,  // parallel rays along `direction`, no falloff
+    Spot,         // from `position` along `direction` inside a cone, falls off
+    Point,        // from `position` in all directions, falls off
     Area,         // the tutorial's simplified area light: parallel rays along `direction`
                   // from the plane through `position`, falling off with the distance from
-                  // that plane (SPEC S20)
+                  // that plane
 };
 
-// How a light's shadow camera is placed (SPEC S6-S8).
+// How a light's shadow camera is placed.
 enum class ShadowCameraPolicy {
     Fit,     // holds the visible receivers that casters can shadow, and those casters:
              // orthographic for directional and area lights (squared and texel-snapped),
@@ -124,7 +124,7 @@ struct ShadowCamera {
     float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;  // orthographic
 };
 
-// Distance falloff 1 / (c0 + c1 d + c2 d^2) (SPEC S4).
+// Distance falloff 1 / (c0 + c1 d + c2 d^2).
 struct Attenuation {
     float constant = 1.0f;
     float linear = 0.0f;
@@ -161,7 +161,7 @@ struct Scene {
     Camera camera;
     glm::vec3 ambient{0.1f};  // ambient light colour, times the material colour
     RenderOptions options;    // the options the scene was authored with; callers start here
-    // The textbook's own settings for this scene (SPEC section 8), if it comes from one.
+    // The textbook's own settings for this scene, if it comes from one.
     std::optional<RenderOptions> textbookOptions;
     // What a loader ignored or repaired (unsupported extensions, generated normals, skipped
     // triangles, added lights or camera), one sentence each.

@@ -1,4 +1,4 @@
-// Axis-aligned bounding boxes: the unit of shadow-camera fitting (SPEC S8).
+// Axis-aligned bounding boxes: the unit of shadow-camera fitting.
 #pragma once
 
 #include <array>

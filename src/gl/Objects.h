@@ -1,5 +1,5 @@
 // The GL object wrappers gnomon uses: buffers, vertex arrays, textures, samplers,
-// framebuffers (completeness reported in words, SPEC S5), shaders/programs and queries.
+// framebuffers (completeness reported in words), shaders/programs and queries.
 // All creation is DSA; every object gets a debug label so captures and KHR_debug read well.
 #pragma once
 
@@ -102,7 +102,7 @@ class Framebuffer : public Object<FramebufferDeleter> {
 public:
     Framebuffer() = default;
     explicit Framebuffer(const std::string& label);
-    // Throws gnomon::Error naming the completeness status in words (SPEC S5).
+    // Throws gnomon::Error naming the completeness status in words.
     void checkComplete() const;
 
 private:

@@ -1,4 +1,4 @@
-// The main pass (SPEC S1, S2, S4): the scene from the view camera, lit per light in view
+// The main pass: the scene from the view camera, lit per light in view
 // space, each fragment looking up every shadowed light's map. Program variants (filter,
 // outside policy, shadowed rule, shadows off) are #defines injected into one shader file,
 // compiled once and cached.

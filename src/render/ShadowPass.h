@@ -1,4 +1,4 @@
-// The shadow pass (SPEC S1, S3, S14, S21): one depth-only rendering per shadowed light.
+// The shadow pass: one depth-only rendering per shadowed light.
 // Single-frustum lights (directional, spot, area, textbook point cameras) each own a square of
 // a layer of a 2D array (layers as large as the largest map; smaller maps share layers,
 // placed by shadow::packMaps);

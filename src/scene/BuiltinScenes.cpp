@@ -1,7 +1,7 @@
-// The built-in scenes: the textbooks' set-ups with their exact numbers (SPEC section 8).
+// The built-in scenes: the textbooks' set-ups with their exact numbers.
 // book-*: the WebGL book's Shadow / Shadow_highp samples; course-*: the course text's
 // two-light experiment (models of seeds/models rebuilt from their numbers); tutorial-room*:
-// the tutorial's sun over a room, with thick (boxes) or thin (single quads) walls (SPEC S15).
+// the tutorial's sun over a room, with thick (boxes) or thin (single quads) walls.
 #include <cmath>
 #include <functional>
 
@@ -35,7 +35,7 @@ Object& addObject(Scene& s, const std::string& name, std::uint32_t mesh, std::ui
 }
 
 // WebGL book, Shadow.js / Shadow_highp.js.
-// A textbook's way: one constant tolerance and nothing else (SPEC S14's remedies off).
+// A textbook's way: one constant tolerance and nothing else (the depth pass's remedies off).
 RenderOptions textbookSettings(RenderOptions o, DepthFormat format, MapFilter lookup, int boxSize,
                                float tolerance) {
     o.shadow.depthFormat = format;
@@ -195,7 +195,7 @@ void addCubes(Scene& s, const glm::mat4& at) {
     }
 }
 
-// The tutorial's lights (SPEC S18-S21, its numbers). Its sun direction; the sun's camera eye
+// The tutorial's lights (its numbers). Its sun direction; the sun's camera eye
 // (-9, 27, -18) lies 33.7 units back along it, which is why the tutorial's near 25 / far 40
 // enclose the scene; the area light's plane passes through the same point.
 const glm::vec3 kSunDirection = glm::normalize(glm::vec3(0.267f, -0.802f, 0.535f));
@@ -345,7 +345,7 @@ Scene tutorialLight(LightType type, const std::string& name, const std::string& 
     return s;
 }
 
-// Every light type at once, 16 of them casting shadows into one main pass (SPEC S3).
+// Every light type at once, 16 of them casting shadows into one main pass.
 Scene mixedLights(const std::string& name, const std::string& description) {
     Scene s = tutorialRoom(false, name, description);
     s.lights.clear();
@@ -407,8 +407,7 @@ const std::vector<Builtin>& builtins() {
         {"tutorial-room",
          "tutorial's sun (0.267, -0.802, 0.535) over a room with thick walls and floor",
          [](const std::string& n, const std::string& d) { return tutorialRoom(false, n, d); }},
-        {"tutorial-room-thin",
-         "the same room with zero-thickness walls and floor (peter-panning, SPEC S15)",
+        {"tutorial-room-thin", "the same room with zero-thickness walls and floor (peter-panning)",
          [](const std::string& n, const std::string& d) { return tutorialRoom(true, n, d); }},
         {"tutorial-directional",
          "tutorial's sun with its own light camera: orthographic, eye (-9, 27, -18), near 25, far "

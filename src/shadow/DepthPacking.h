@@ -1,4 +1,4 @@
-// Depth stored in 8-bit colour channels (SPEC S10, S11), mirrored on the CPU exactly as the
+// Depth stored in 8-bit colour channels, mirrored on the CPU exactly as the
 // GPU does it, so the precision of each scheme can be tested without a GPU. Encoding writes
 // channel values in [0, 1]; an RGBA8 target then keeps round(v * 255) / 255 of each.
 //   r8:        depth in red only: 256 levels.
@@ -28,7 +28,7 @@ float depthRoundTripBound(DepthFormat format);
 
 namespace gnomon::shadow {
 
-// Spacing of representable stored depths around stored depth `stored` [0, 1] (SPEC S12):
+// Spacing of representable stored depths around stored depth `stored` [0, 1]:
 // 1 / (2^bits - 1) for fixed-point storage (r8, depth16, depth24; packed-256 is only as good
 // as its red channel's 255ths), one float ulp of the stored value for depth32f (growing with
 // the stored depth, which is where perspective depths crowd, near 1), and two float epsilons

@@ -319,7 +319,7 @@ LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, flo
     }
     if (nearestCaster == std::numeric_limits<float>::max()) return f;
     // The light may sit inside the bounds: keep near positive, at most 1/1000 of far,
-    // so depth precision stays usable (SPEC S12).
+    // so depth precision stays usable.
     f.valid = true;
     f.far = std::max(farthest * 1.01f, 1e-3f);
     f.near = std::clamp(nearestCaster * 0.99f, f.far * 1e-3f, f.far * 0.999f);

@@ -1,4 +1,4 @@
-// Pure shadow-mapping math (no GL): the light camera of each light (SPEC S6-S8), the
+// Pure shadow-mapping math (no GL): the light camera of each light, the
 // clip -> texture mapping of S2, and texel sizes for normal offset. Matrices are named
 // bFromA: `lightFromWorld` takes world points into the light camera's view space.
 #pragma once
@@ -16,7 +16,7 @@ namespace gnomon::shadow {
 enum class FrameKind {
     Perspective,   // one frustum (spot lights; point lights with a manual/course camera)
     Orthographic,  // one box (directional and area lights; textbook cameras)
-    Cube,          // six 90-degree frusta around a point light (SPEC S21)
+    Cube,          // six 90-degree frusta around a point light
 };
 
 struct LightCameraFrame {
@@ -45,7 +45,7 @@ glm::mat4 cubeFaceRotation(int face);
 float cubeStoredDepth(const glm::vec3& lightToPoint, float near, float far);
 
 // Maps clip-space x, y, z in [-1, 1] (after the divide) to [0, 1] texture coordinates and
-// stored depth (SPEC S2): textureFromClip * (x, y, z, 1) = (x/2 + 1/2, ...).
+// stored depth: textureFromClip * (x, y, z, 1) = (x/2 + 1/2, ...).
 glm::mat4 textureFromClip();
 
 // A right-handed look-at that survives `up` parallel to the view direction (it then picks
@@ -93,7 +93,7 @@ bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ign
 // True when `box` cannot cast into any face of a cube frame (beyond its far sphere).
 bool outsideCube(const Aabb& box, const LightCameraFrame& cube);
 
-// Cascade split distances along the view direction (SPEC S22): count + 1 values from near to
+// Cascade split distances along the view direction: count + 1 values from near to
 // far, each the blend lambda * log + (1 - lambda) * uniform split ("practical split scheme",
 // Zhang et al. 2006, Parallel-Split Shadow Maps).
 std::vector<float> cascadeSplits(float near, float far, int count, float lambda);

@@ -1,4 +1,4 @@
-// Cascaded shadow maps (SPEC S22) on the GPU: with 2 to 4 cascades the room's shadows are
+// Cascaded shadow maps on the GPU: with 2 to 4 cascades the room's shadows are
 // still exactly where its geometry says (selection, blend band and depth reach are right),
 // and the debug view shows each visible cascade in its own tint.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Depth storage (SPEC S10, S11, S13): every format renders shadows where the geometry says;
+// Depth storage: every format renders shadows where the geometry says;
 // the WebGL book's precision failure is reproduced (the far light loses its shadow with depth
 // in the red channel, keeps it with packed RGBA and native depth), and maps read back the
 // same depth whatever the format, within the format's precision.
@@ -107,7 +107,7 @@ TEST(PrecisionFailure, FarLightLosesItsShadowInTheRedChannelOnly) {
     const Scene near = builtinScene("book-triangle"), far = builtinScene("book-triangle-far");
     EXPECT_GT(shadowCoverage(near, bookSettings(near, DepthFormat::R8)), 0.99);
     EXPECT_LT(shadowCoverage(far, bookSettings(far, DepthFormat::R8)), 0.01)
-        << "SPEC S11: at (0, 40, 2) the red channel cannot hold the depth difference";
+        << "at (0, 40, 2) the red channel cannot hold the depth difference";
     EXPECT_GT(shadowCoverage(far, bookSettings(far, DepthFormat::Rgba8Packed256)), 0.99);
     EXPECT_GT(shadowCoverage(far, bookSettings(far, DepthFormat::Rgba8Packed255)), 0.99);
     EXPECT_GT(shadowCoverage(far, bookSettings(far, DepthFormat::Depth32F)), 0.99);
@@ -160,7 +160,7 @@ int acnePixels(const Scene& scene, const RenderOptions& o) {
     return acne;
 }
 
-// SPEC S13: the course text's tolerance of 0.00001 holds with LINEAR lookups of its depth
+// the course text's tolerance of 0.00001 holds with LINEAR lookups of its depth
 // texture (interpolating a plane's depth gives the plane's depth) and fails with NEAREST.
 TEST(Lookups, LinearDepthLookupsCureTheCourseTextsAcne) {
     const Scene s = builtinScene("course-two-lights");

@@ -105,7 +105,7 @@ TEST(DepthPass, AnimationRerendersTheMap) {
 namespace gnomon::test {
 namespace {
 
-// SPEC S23-S25: casters outside a light's volume are not drawn into its map, and moving
+// casters outside a light's volume are not drawn into its map, and moving
 // them does not re-render it; moving a caster inside the volume does.
 TEST(Cost, MapsFollowOnlyTheCastersInTheirVolume) {
     Scene s = builtinScene("course-two-lights");

@@ -1,4 +1,4 @@
-// PCSS (SPEC S17, contact hardening): the penumbra grows with the distance between caster
+// PCSS (contact hardening): the penumbra grows with the distance between caster
 // and receiver, as wide as a light of the given size makes it, while the umbra stays dark
 // and open floor stays lit; PCF's penumbra does not depend on that distance.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Omnidirectional point lights (SPEC S21): a caster on each of the six axes, offset to one
+// Omnidirectional point lights: a caster on each of the six axes, offset to one
 // side so a face rendered with the wrong orientation would put its shadow on the mirrored
 // side, must shadow the receiver behind it exactly where rays from the light say; so must a
 // caster towards a corner of a face. The six-pass fallback must write the same cube maps as

@@ -82,7 +82,7 @@ TEST(Shadows, PerspectiveCourseCameras) {
     expectShadowsMatchGeometry(scene, scene.options);
 }
 
-// SPEC S3: at least 16 shadowed lights in one main pass, each with its own map.
+// at least 16 shadowed lights in one main pass, each with its own map.
 TEST(Shadows, SixteenSpotLightsEachCastTheirShadow) {
     Scene scene;
     scene.name = "sixteen spots";

@@ -1,4 +1,4 @@
-// core/Aabb.h, the unit of shadow-camera fitting (SPEC S8): a default box is empty, extend()
+// core/Aabb.h, the unit of shadow-camera fitting: a default box is empty, extend()
 // grows it by points and boxes (an empty box adds nothing), corners() lists all eight
 // combinations, transformed() bounds a rotated box (90 and 45 degrees about y, by hand).
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Cascaded shadow maps (SPEC S22): the uniform/log split blend, and stabilised cascade
+// Cascaded shadow maps: the uniform/log split blend, and stabilised cascade
 // cameras: every point of the view slice inside the cascade, a size that does not change as
 // the view turns, and an origin that moves in whole texels as the view moves.
 #include <gtest/gtest.h>

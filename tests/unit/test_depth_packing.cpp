@@ -1,4 +1,4 @@
-// Depth in 8-bit colour channels (SPEC S10, S11): each scheme's CPU round trip through RGBA8
+// Depth in 8-bit colour channels: each scheme's CPU round trip through RGBA8
 // storage stays within its stated bound, and the bounds order as the textbooks say: r8 is
 // coarse (1/256-ish, hence the book's 0.005), packed-256 is good to the book's 0.0015, and
 // packed-255, matching 8-bit storage, is far finer.
@@ -55,7 +55,7 @@ TEST(DepthPacking, ChannelsStayInTheStorableRange) {
     }
 }
 
-// SPEC S11 in numbers: with the light at (0, 40, 2), far 200, the triangle and the plane are
+// In numbers: with the light at (0, 40, 2), far 200, the triangle and the plane are
 // about 0.0034 apart in stored depth; r8 cannot tell them apart by more than its 0.005
 // tolerance, packed formats can by more than theirs.
 TEST(DepthPacking, BookFarLightDepthsAreBelowR8Resolution) {
@@ -93,7 +93,7 @@ TEST(DepthPacking, NamesRoundTrip) {
 namespace gnomon {
 namespace {
 
-// SPEC S12, checked against a naive reference: step the stored depth through its
+// checked against a naive reference: step the stored depth through its
 // representable values and measure the gap directly.
 TEST(DepthAware, SpacingMatchesNaiveStepping) {
     for (float s : {0.01f, 0.25f, 0.5f, 0.97f, 0.999f}) {

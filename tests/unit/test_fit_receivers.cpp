@@ -1,4 +1,4 @@
-// The Fit policy with a view (SPEC S8): the light camera holds the visible receivers that
+// The Fit policy with a view: the light camera holds the visible receivers that
 // casters can shadow, and those casters, and no more; it is invalid when nothing can be
 // shadowed; a view-following fit does not change for small camera moves.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// shadow::lightCameraFrame, the light camera of SPEC S6-S8: Manual reproduces the given
+// shadow::lightCameraFrame, the light camera of Manual reproduces the given
 // look-at and projection, Course looks at the view camera's centre with its up, Fit encloses
 // the bounds tightly (directional: orthographic; spot/point: perspective) and an empty scene
 // gives an invalid frame. texelWorldSize follows the volume and the map size.
@@ -303,7 +303,7 @@ TEST(LightCamera, SpotFitHoldsBoundsInsideConeDerivedFrustum) {
 }
 
 TEST(LightCamera, SpotFitAlongASlantedAxis) {
-    // The tutorial's spot position (SPEC S19), aimed at a box around (1, 0.5, 1).
+    // The tutorial's spot position, aimed at a box around (1, 0.5, 1).
     Light spot;
     spot.type = LightType::Spot;
     spot.position = {-3.0f, 10.0f, -6.0f};
@@ -458,7 +458,7 @@ TEST(LightCamera, FitWithEmptyBoundsIsInvalid) {
 namespace gnomon {
 namespace {
 
-// Culling casters per light (SPEC S23-S25): a box wholly outside any plane is culled, one
+// Culling casters per light: a box wholly outside any plane is culled, one
 // inside or straddling is kept; depth-clamped passes keep boxes in front of near.
 TEST(Culling, BoxesOutsideTheClipVolumeAreCulled) {
     const glm::mat4 clipFromWorld =

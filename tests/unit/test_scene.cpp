@@ -1,4 +1,4 @@
-// The scene model (include/gnomon/Scene.h): the built-in scenes carry SPEC section 8's exact
+// The scene model (include/gnomon/Scene.h): the built-in scenes carry the textbooks' exact
 // numbers (lights, cameras, spin, attenuation, ambient), each validates cleanly,
 // Scene::validate catches each kind of inconsistency, and unknown names/paths throw
 // gnomon::Error with a message that helps (known names, the path).
@@ -105,7 +105,7 @@ const Object& objectNamed(const Scene& s, const std::string& name) {
     throw std::runtime_error("no object " + name);
 }
 
-// SPEC S27: the triangle spins 40 deg/s about y through the origin. At 9 s it has turned
+// the triangle spins 40 deg/s about y through the origin. At 9 s it has turned
 // 360 deg (back where it started); at 2.25 s 90 deg, and +90 deg about y maps (x, y, z) to
 // (z, y, -x): (0.8, 3.5, 0) -> (0, 3.5, -0.8), (0, 3.5, 1.8) -> (1.8, 3.5, 0).
 TEST(Scene, BookTriangleSpinsFortyDegreesPerSecond) {
@@ -329,7 +329,7 @@ TEST(Scene, LoadSceneDispatchesByExtension) {
 
 namespace gnomon {
 namespace {
-// The tutorial's numbers (SPEC S18-S21).
+// The tutorial's numbers.
 TEST(Scene, TutorialLightsCarryTheTutorialsNumbers) {
     const Light spot = builtinScene("tutorial-spot").lights.at(0);
     EXPECT_EQ(spot.type, LightType::Spot);

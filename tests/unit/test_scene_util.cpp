@@ -1,6 +1,6 @@
 // scene/SceneUtil.h, what shadow fitting reads from a scene: mesh bounds in model space,
-// world bounds at a time (animated objects move them; castersOnly drops non-casters, SPEC
-// S23), and which lights are on (RenderOptions::lightOnly overrides the scene's switches).
+// world bounds at a time (animated objects move them; castersOnly drops non-casters), and
+// which lights are on (RenderOptions::lightOnly overrides the scene's switches).
 #include <stdexcept>
 #include <string>
 

@@ -1,6 +1,6 @@
-// The clip -> texture mapping of SPEC S2 (shadow::textureFromClip) and the stored depth it
+// The clip -> texture mapping of (shadow::textureFromClip) and the stored depth it
 // produces: NDC corners and centre, a world point seen by the WebGL book's light, and the
-// perspective depth formula of SPEC S12 (stored depth grows non-linearly with distance).
+// perspective depth formula of (stored depth grows non-linearly with distance).
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -35,7 +35,7 @@ TEST(TextureMapping, NdcCornersMapToUnitCubeCorners) {
 
 TEST(TextureMapping, KeepsWSoItCanBeAppliedBeforeTheDivide) {
     // Row 3 is (0, 0, 0, 1): w passes through unchanged, so textureFromClip can be folded
-    // into the light's matrix and the divide done per fragment (SPEC S2).
+    // into the light's matrix and the divide done per fragment.
     const glm::mat4 m = shadow::textureFromClip();
     EXPECT_FLOAT_EQ(m[0][3], 0.0f);
     EXPECT_FLOAT_EQ(m[1][3], 0.0f);
@@ -54,7 +54,7 @@ TEST(TextureMapping, KeepsWSoItCanBeAppliedBeforeTheDivide) {
 }
 
 // The book's light: eye (0, 7, 2) looking at the origin, up +y, perspective 70 deg, aspect 1,
-// near 1, far 100 (SPEC section 8).
+// near 1, far 100.
 class BookLight : public testing::Test {
 protected:
     void SetUp() override {
@@ -116,7 +116,7 @@ TEST_F(BookLight, TriangleAndPlaneAreInsideTheMap) {
     EXPECT_LT(toTexture(textureFromWorld, {0.0f, 3.5f, 1.8f}).z, 0.8713530f);
 }
 
-// SPEC S12: with c1 = 2nf/(n - f) and c2 = (f + n)/(f - n), a point at view depth d (z = -d)
+// with c1 = 2nf/(n - f) and c2 = (f + n)/(f - n), a point at view depth d (z = -d)
 // has clip z = c1 + d c2 and w = d, so stored = ((f + n)/(f - n) - 2fn/((f - n) d)) * 0.5 + 0.5.
 double storedDepth(double n, double f, double d) {
     return ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * d)) * 0.5 + 0.5;
@@ -155,7 +155,7 @@ TEST_F(BookLight, StoredDepthSpacingGrowsWithDistance) {
 }
 
 TEST(TextureMapping, OrthographicStoredDepthIsLinear) {
-    // Orthographic near 1, far 20: stored = (d - n) / (f - n), so d = 10.5 -> 0.5 (SPEC S7).
+    // Orthographic near 1, far 20: stored = (d - n) / (f - n), so d = 10.5 -> 0.5.
     Light light;
     light.shadowCamera.policy = ShadowCameraPolicy::Manual;
     light.shadowCamera.projection = Projection::Orthographic;
