@@ -6,6 +6,7 @@
 
 #include "gl/Program.h"
 #include "gnomon/Error.h"
+#include "render/DepthRuns.h"
 #include "render/PassClock.h"
 #include "shadow/DepthPacking.h"
 
@@ -195,41 +196,14 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
 template <typename SetUniforms>
 void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options, int variant,
                              GLsizei instances, const SetUniforms& setUniforms) {
-    bool culling = false;
-    glDisable(GL_CULL_FACE);
-    bool alpha = false;
-    GLuint texture = ~0u;
-    glUseProgram(program(variant, false).id());
-    setUniforms();
-    // Runs of consecutive items in the same state: one multi-draw each.
-    std::uint32_t runStart = 0, runLength = 0;
-    for (std::uint32_t index : mVisible) {
-        const DrawItem& item = scene.items()[index];
-        const bool wantAlpha = alphaTestedCaster(item, options);
-        const bool wantCull = options.cull != CullMode::None && !item.doubleSided;
-        const bool differs = wantAlpha != alpha || (alpha && scene.textureOf(item) != texture) ||
-                             wantCull != culling;
-        if (differs || index != runStart + runLength) {
-            scene.drawRange(runStart, runLength, instances);
-            runStart = index;
-            runLength = 0;
-        }
-        if (wantAlpha != alpha) {
-            alpha = wantAlpha;
+    drawDepthRuns(
+        scene, mVisible, instances,
+        [&](const DrawItem& item) { return alphaTestedCaster(item, options); },
+        [&](const DrawItem& item) { return options.cull != CullMode::None && !item.doubleSided; },
+        [&](bool alpha) {
             glUseProgram(program(variant, alpha).id());
             setUniforms();
-        }
-        if (alpha && scene.textureOf(item) != texture) {
-            texture = scene.textureOf(item);
-            glBindTextureUnit(4, texture);
-        }
-        if (wantCull != culling) {
-            wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-            culling = wantCull;
-        }
-        ++runLength;
-    }
-    scene.drawRange(runStart, runLength, instances);
+        });
 }
 
 void ShadowPass::invalidate() {

@@ -1,6 +1,7 @@
 #include "render/ViewDepthPass.h"
 
 #include "gl/Program.h"
+#include "render/DepthRuns.h"
 #include "shadow/ShadowMath.h"
 
 namespace gnomon::render {
@@ -29,43 +30,19 @@ void ViewDepthPass::draw(const GpuScene& scene, const glm::mat4& clipFromWorld) 
     glDisable(GL_DEPTH_CLAMP);
     glCullFace(GL_BACK);
     scene.bind();
-    bool alpha = false, culling = false;
-    GLuint texture = ~0u;
-    glDisable(GL_CULL_FACE);
-    glUseProgram(program(false).id());
-    glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
-    // Runs of consecutive items in the same state: one multi-draw each.
+    // What the main pass draws opaque: masked items cut where it cuts, blended ones skipped.
+    mItems.clear();
     const std::vector<DrawItem>& items = scene.items();
-    std::uint32_t runStart = 0, runLength = 0;
     for (std::uint32_t i = 0; i < items.size(); ++i) {
-        const DrawItem& item = items[i];
-        if (item.indexCount == 0 || item.alphaMode == AlphaMode::Blend) continue;
-        const bool wantAlpha = item.alphaMode == AlphaMode::Mask;
-        const bool wantCull = !item.doubleSided;
-        const bool differs = wantAlpha != alpha || (alpha && scene.textureOf(item) != texture) ||
-                             wantCull != culling;
-        if (differs || i != runStart + runLength) {
-            scene.drawRange(runStart, runLength);
-            runStart = i;
-            runLength = 0;
-        }
-        if (wantAlpha != alpha) {
-            alpha = wantAlpha;
+        if (items[i].indexCount > 0 && items[i].alphaMode != AlphaMode::Blend) mItems.push_back(i);
+    }
+    drawDepthRuns(
+        scene, mItems, 1, [](const DrawItem& item) { return item.alphaMode == AlphaMode::Mask; },
+        [](const DrawItem& item) { return !item.doubleSided; },
+        [&](bool alpha) {
             glUseProgram(program(alpha).id());
             glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
-        }
-        if (alpha && scene.textureOf(item) != texture) {
-            texture = scene.textureOf(item);
-            glBindTextureUnit(4, texture);
-        }
-        if (wantCull != culling) {
-            wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-            culling = wantCull;
-        }
-        ++runLength;
-    }
-    scene.drawRange(runStart, runLength);
-    glDisable(GL_CULL_FACE);
+        });
 }
 
 void ViewDepthPass::allocate(const shadow::SampleGrid& grid) {

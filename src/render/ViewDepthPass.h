@@ -43,6 +43,7 @@ private:
     gl::Framebuffer mRangeTarget;
     gl::VertexArray mEmpty;  // the reduction's full-screen triangle has no attributes
     std::vector<glm::vec2> mRead;
+    std::vector<std::uint32_t> mItems;  // the items drawn: reused every frame
     shadow::ViewSamples mSamples;
     // What mSamples were taken from.
     bool mValid = false;
