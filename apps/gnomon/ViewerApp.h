@@ -1,0 +1,158 @@
+// The viewer's one class, declared for the files that define it: the app loop, frame and
+// input (Viewer.cpp), the ImGui panels (ViewerControls.cpp, ViewerPanels.cpp), the score job
+// and files (ViewerJobs.cpp) and the script runner (ViewerScript.cpp).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "Viewer.h"
+#include "ViewerState.h"
+#include "ViewerWindow.h"
+#include "gnomon/gnomon.h"
+
+namespace gnomon::cli::viewer {
+
+// ---- Ground truth off the UI thread --------------------------------------------------------
+
+struct ScoreJob {
+    ScoreProgress progress;
+    std::atomic<bool> done{false};
+    std::optional<ScoreResult> result;
+    std::string error;
+    std::uint64_t revision = 0;  // the state's revision it scored
+    std::thread thread;
+
+    ~ScoreJob() {
+        progress.cancel = true;
+        if (thread.joinable()) thread.join();
+    }
+};
+
+// ---- One-line docs of the flags, shown as tooltips ----------------------------------------
+
+class FlagDocs {
+public:
+    FlagDocs() { mFlags.add(mApp); }
+    std::string operator()(const std::string& flag) const {
+        const CLI::Option* o = mApp.get_option_no_throw(flag);
+        return o ? flag + ": " + o->get_description() : flag;
+    }
+
+private:
+    CLI::App mApp{"flags"};
+    RenderFlags mFlags;
+};
+
+// ---- The viewer ----------------------------------------------------------------------------
+
+class Viewer {
+public:
+    // `state` and `script` are checked before the window opens (runView).
+    Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHeight, view::State state,
+           std::vector<view::Command> script);
+
+    int run();
+
+private:
+    // The app loop's frame and the input (Viewer.cpp).
+    static ContextOptions contextOptions(bool verbose);
+    bool dirty() const;
+    void frame();
+    void renderViews(int mainW, int mainH, int sideW);
+    void recordPasses();
+
+    // ---- Controls (ViewerControls.cpp) ----
+
+    void controls(float width, float height);
+    void flagTip(const char* flag);
+    void changed(bool c);
+    void guarded(const std::function<void()>& action);
+    void sceneControls();
+    void cameraControls();
+    void lightControls();
+    void optionControls();
+    void animationControls();
+    static void inputText(const char* label, std::string& value);
+
+    // ---- Views (ViewerPanels.cpp; mouseOnView in Viewer.cpp) ----
+
+    void views(float x, float mainW, float viewW, float viewH);
+    void mouseOnView(bool hovered, float viewHeight);
+
+    // ---- Measurements (ViewerPanels.cpp) ----
+
+    void measurePanel(float x, float y, float width, float height);
+    void scorePanel();
+
+    // ---- Score job and files (ViewerJobs.cpp) ----
+
+    void startScore();
+    void pollScore();
+    std::string nextScreenshotPath();
+    void screenshot(const std::string& path);
+    void save(const std::string& path);
+
+    // ---- Keys (Viewer.cpp) ----
+
+    void handleKeys();
+    void key(const std::string& name);
+
+    // ---- Script (ViewerScript.cpp) ----
+
+    void fail(const std::string& message);
+    void runScript();
+    void runCommand(const view::Command& c);
+    void settleOptions();
+    void expectScore(const view::Command& c);
+    void printStats();
+
+    const ViewArgs& mArgs;
+    bool mVerbose;
+    GlfwWindow mWindow;
+    ImGuiSession mImGui;
+    Renderer mRenderer;
+    view::State mState;
+    FlagDocs mDocs;
+
+    RenderOptions mMainOptions;
+    std::uint64_t mDrawnRevision = ~std::uint64_t(0);
+    int mDrawnWidth = 0, mDrawnHeight = 0;
+    bool mRedraw = false;
+    std::string mFrameError, mUiError, mLastWritten, mSavePath, mSourceField, mShownSource;
+    FrameStats mStats;
+    std::vector<float> mShadowMs, mMainMs;
+    std::vector<double> mFrameMs;
+    bool mMeasure = true;
+
+    GLuint mSideTexture = 0;
+    int mSideW = 0, mSideH = 0, mSideLight = -1;
+    bool mSideDirty = true;
+    int mDragButton = -1;
+
+    std::unique_ptr<ScoreJob> mJob;
+    std::optional<ScoreResult> mScore;
+    std::uint64_t mScoredRevision = 0;
+    std::string mScoreError;
+    ImageTexture mOverlayTexture;
+    bool mOverlay = false;
+    float mOverlayOpacity = 0.6f;
+
+    std::vector<view::Command> mScript;
+    std::size_t mNext = 0;
+    bool mScripted = false, mWaitScore = false, mQuit = false;
+    int mWaitFrames = 0;
+    int mRepeatLeft = 0;
+    view::Command mRepeated;
+    std::string mWindowShot;
+    long mFrames = 0;
+    int mExitCode = 0;
+};
+
+}  // namespace gnomon::cli::viewer

@@ -1,0 +1,352 @@
+// The Controls panel: the scene, camera and lights being edited and every render option, each
+// change bumping the state's revision so the views redraw.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ViewerApp.h"
+#include "ViewerWidgets.h"
+
+namespace gnomon::cli::viewer {
+
+void Viewer::controls(float width, float height) {
+    ImGui::SetNextWindowPos({0, 0});
+    ImGui::SetNextWindowSize({width, height});
+    ImGui::Begin("Controls", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(width * 0.5f);
+    sceneControls();
+    cameraControls();
+    lightControls();
+    optionControls();
+    animationControls();
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+// The flag's one-line doc as the last item's tooltip, looked up only while hovered.
+void Viewer::flagTip(const char* flag) {
+    if (ImGui::IsItemHovered()) tooltip(mDocs(flag));
+}
+
+void Viewer::changed(bool c) {
+    if (c) ++mState.revision;
+}
+
+void Viewer::guarded(const std::function<void()>& action) {
+    try {
+        action();
+        mUiError.clear();
+    } catch (const Error& e) {
+        mUiError = e.what();
+    }
+}
+
+void Viewer::sceneControls() {
+    if (mState.source != mShownSource) {  // loaded by a preset, a script or Load
+        mShownSource = mSourceField = mState.source;
+        mSavePath = mState.scene.name + "-tuned.json";
+    }
+    if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (ImGui::BeginCombo("built-in", mState.source.c_str())) {
+        for (const SceneInfo& s : builtinScenes()) {
+            if (ImGui::Selectable(s.name.c_str(), s.name == mState.source)) {
+                guarded([&] { view::applyFlags(mState, {"--scene", s.name}); });
+            }
+            tooltip(s.description);
+        }
+        ImGui::EndCombo();
+    }
+    tooltip("a built-in scene; for a scene file or a model file, type its path below");
+    inputText("file", mSourceField);
+    ImGui::SameLine();
+    if (ImGui::Button("Load"))
+        guarded([&] { view::applyFlags(mState, {"--scene", mSourceField}); });
+    bool ground = mState.ground;
+    if (ImGui::Checkbox("ground", &ground)) {
+        guarded([&] { view::load(mState, mState.source, ground); });
+    }
+    if (ImGui::IsItemHovered())
+        tooltip(mDocs("--ground") + " (reloads the scene: its lights and camera restart)");
+    if (ImGui::BeginCombo("preset", "choose...")) {
+        std::string group;
+        for (const view::PresetEntry& p : view::presets()) {
+            if (p.group != group) {
+                group = p.group;
+                ImGui::TextDisabled("%s", group.c_str());
+            }
+            if (ImGui::Selectable(p.name.c_str())) guarded([&] { view::applyPreset(mState, p); });
+            std::string flags;
+            for (const std::string& a : p.args)
+                flags += (flags.empty() ? "" : " ") + a;
+            tooltip(flags);
+        }
+        ImGui::EndCombo();
+    }
+    tooltip(
+        "Start from gnomon's defaults, the textbook's numbers for this scene, or one of "
+        "docs/techniques.md's examples (which load their scene).");
+    inputText("save as", mSavePath);
+    ImGui::SameLine();
+    if (ImGui::Button("Save")) guarded([&] { save(mSavePath); });
+    tooltip(
+        "Write a scene file (docs/scene-file.md) that `gnomon render --scene FILE` "
+        "renders exactly as this view");
+    if (ImGui::Button("Screenshot (F12)")) guarded([&] { screenshot(nextScreenshotPath()); });
+    if (!mUiError.empty()) ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", mUiError.c_str());
+    if (!mLastWritten.empty()) ImGui::TextDisabled("wrote %s", mLastWritten.c_str());
+}
+
+void Viewer::cameraControls() {
+    if (!ImGui::CollapsingHeader("Camera")) return;
+    Camera& c = mState.scene.camera;
+    ImGui::TextDisabled("drag: orbit, shift+drag or middle: pan, wheel: zoom");
+    changed(ImGui::DragFloat3("eye", &c.eye.x, 0.05f));
+    changed(ImGui::DragFloat3("centre", &c.centre.x, 0.05f));
+    int projection = c.projection == Projection::Perspective ? 0 : 1;
+    if (ImGui::Combo("projection", &projection, "perspective\0orthographic\0")) {
+        c.projection = projection == 0 ? Projection::Perspective : Projection::Orthographic;
+        changed(true);
+    }
+    if (c.projection == Projection::Perspective) {
+        changed(ImGui::SliderFloat("fovy", &c.fovyDegrees, 5.0f, 120.0f, "%.1f deg"));
+    } else {
+        changed(ImGui::DragFloat4("l r b t", &c.left, 0.05f));
+    }
+    changed(ImGui::DragFloat("near", &c.near, 0.01f, 0.001f, c.far * 0.999f, "%.3f"));
+    changed(ImGui::DragFloat("far", &c.far, 0.5f, c.near * 1.001f, 1e6f, "%.1f"));
+}
+
+void Viewer::lightControls() {
+    if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    std::vector<Light>& lights = mState.scene.lights;
+    if (lights.empty()) {
+        ImGui::TextDisabled("this scene has no lights");
+        return;
+    }
+    mState.selectedLight = std::clamp(mState.selectedLight, 0, int(lights.size()) - 1);
+    auto labelOf = [&](int i) {
+        const Light& l = lights[std::size_t(i)];
+        return std::to_string(i) + ": " + (l.name.empty() ? toString(l.type) : l.name);
+    };
+    if (ImGui::BeginCombo("light", labelOf(mState.selectedLight).c_str())) {
+        for (int i = 0; i < int(lights.size()); ++i) {
+            if (ImGui::Selectable(labelOf(i).c_str(), i == mState.selectedLight))
+                mState.selectedLight = i;
+        }
+        ImGui::EndCombo();
+    }
+    tooltip("The light whose controls are below and whose shadow map the side view shows");
+    Light& l = lights[std::size_t(mState.selectedLight)];
+    ImGui::TextDisabled("right-drag in the view: move this light");
+    changed(ImGui::Checkbox("on", &l.enabled));
+    ImGui::SameLine();
+    changed(ImGui::Checkbox("casts shadows", &l.castsShadows));
+    int type = int(l.type);
+    if (ImGui::Combo("type", &type, "directional\0spot\0point\0area\0")) {
+        l.type = LightType(type);
+        changed(true);
+    }
+    if (l.type != LightType::Directional)
+        changed(ImGui::DragFloat3("position", &l.position.x, 0.05f));
+    if (l.type != LightType::Point) changed(ImGui::DragFloat3("direction", &l.direction.x, 0.01f));
+    changed(ImGui::ColorEdit3("colour", &l.colour.x));
+    changed(ImGui::DragFloat("intensity", &l.intensity, 0.01f, 0.0f, 1e6f));
+    if (l.type != LightType::Directional) {
+        changed(ImGui::DragFloat3("attenuation", &l.attenuation.constant, 0.001f, 0.0f, 100.0f,
+                                  "%.4f"));
+        tooltip("1 / (constant + linear d + quadratic d^2)");
+        changed(ImGui::DragFloat("range", &l.range, 0.1f, 0.0f, 1e6f));
+        tooltip("point and spot lights end here (0: unlimited)");
+    }
+    if (l.type == LightType::Spot) {
+        changed(ImGui::SliderFloat("inner cone", &l.innerConeDegrees, 0.0f, l.outerConeDegrees,
+                                   "%.1f deg"));
+        changed(ImGui::SliderFloat("outer cone", &l.outerConeDegrees, l.innerConeDegrees, 89.0f,
+                                   "%.1f deg"));
+    }
+    int mapSizeLog = int(std::lround(std::log2(std::max(l.shadowMapSize, 64))));
+    if (ImGui::SliderInt("map size", &mapSizeLog, 6, 13, "")) {
+        l.shadowMapSize = 1 << mapSizeLog;
+        changed(true);
+    }
+    ImGui::SameLine();
+    ImGui::Text("%d", l.shadowMapSize);
+    tooltip("this light's shadow map, texels per side (--map-size overrides every light)");
+    ShadowCamera& sc = l.shadowCamera;
+    int policy = int(sc.policy);
+    if (ImGui::Combo("light camera", &policy, "fit\0manual\0course\0")) {
+        sc.policy = ShadowCameraPolicy(policy);
+        changed(true);
+    }
+    if (ImGui::IsItemHovered())
+        tooltip(std::string("how the shadow camera is placed: ") + toString(sc.policy) +
+                ". fit: around what can be shadowed; manual: the numbers below; course: "
+                "looking at the view's centre");
+    if (sc.policy != ShadowCameraPolicy::Fit) {
+        int proj = sc.projection == Projection::Perspective ? 0 : 1;
+        if (ImGui::Combo("light projection", &proj, "perspective\0orthographic\0")) {
+            sc.projection = proj == 0 ? Projection::Perspective : Projection::Orthographic;
+            changed(true);
+        }
+        if (sc.policy == ShadowCameraPolicy::Manual)
+            changed(ImGui::DragFloat3("target", &sc.target.x, 0.05f));
+        if (sc.projection == Projection::Perspective) {
+            changed(ImGui::SliderFloat("light fovy", &sc.fovyDegrees, 1.0f, 170.0f));
+        } else {
+            changed(ImGui::DragFloat4("light l r b t", &sc.left, 0.05f));
+        }
+        changed(ImGui::DragFloat("light near", &sc.near, 0.01f, 0.001f, sc.far * 0.999f));
+        changed(ImGui::DragFloat("light far", &sc.far, 0.1f, sc.near * 1.001f, 1e6f));
+    }
+}
+
+void Viewer::optionControls() {
+    RenderOptions& o = mState.options;
+    ShadowOptions& s = o.shadow;
+    if (ImGui::CollapsingHeader("Shadow map", ImGuiTreeNodeFlags_DefaultOpen)) {
+        changed(ImGui::Checkbox("shadows", &s.enabled));
+        flagTip("--shadows");
+        bool override = s.mapSize > 0;
+        if (ImGui::Checkbox("##override", &override)) {
+            s.mapSize = override ? 1024 : 0;
+            changed(true);
+        }
+        tooltip("override every light's map size");
+        ImGui::SameLine();
+        if (override) {
+            int log = int(std::lround(std::log2(std::max(s.mapSize, 64))));
+            if (ImGui::SliderInt("map-size", &log, 6, 13, "")) {
+                s.mapSize = 1 << log;
+                changed(true);
+            }
+            ImGui::SameLine();
+            ImGui::Text("%d", s.mapSize);
+        } else {
+            ImGui::TextDisabled("map-size: each light's own");
+        }
+        flagTip("--map-size");
+        changed(
+            enumCombo("depth-format", s.depthFormat,
+                      {DepthFormat::R8, DepthFormat::Rgba8Packed256, DepthFormat::Rgba8Packed255,
+                       DepthFormat::Depth16, DepthFormat::Depth24, DepthFormat::Depth32F}));
+        flagTip("--depth-format");
+        changed(enumCombo("map-filter", s.mapFilter, {MapFilter::Nearest, MapFilter::Linear}));
+        flagTip("--map-filter");
+        changed(enumCombo("outside", s.outside, {OutsidePolicy::Lit, OutsidePolicy::Clamp}));
+        flagTip("--outside");
+    }
+    if (ImGui::CollapsingHeader("Tolerances", ImGuiTreeNodeFlags_DefaultOpen)) {
+        changed(ImGui::DragFloat("bias-constant", &s.biasConstant, 0.0001f, 0.0f, 0.5f, "%.5f"));
+        flagTip("--bias-constant");
+        changed(ImGui::DragFloat("bias-depth-aware", &s.biasDepthAware, 0.05f, 0.0f, 100.0f));
+        flagTip("--bias-depth-aware");
+        changed(ImGui::DragFloat("bias-slope", &s.biasSlope, 0.05f, 0.0f, 100.0f));
+        flagTip("--bias-slope");
+        changed(ImGui::DragFloat("bias-units", &s.biasUnits, 0.1f, 0.0f, 10000.0f));
+        flagTip("--bias-units");
+        changed(ImGui::Checkbox("receiver-plane", &s.receiverPlane));
+        flagTip("--receiver-plane");
+        changed(ImGui::DragFloat("normal-offset", &s.normalOffset, 0.05f, 0.0f, 100.0f));
+        flagTip("--normal-offset");
+        changed(enumCombo("cull", s.cull, {CullMode::Back, CullMode::Front, CullMode::None}));
+        flagTip("--cull");
+    }
+    if (ImGui::CollapsingHeader("Filter", ImGuiTreeNodeFlags_DefaultOpen)) {
+        changed(enumCombo("filter", s.filter,
+                          {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf,
+                           ShadowFilter::Poisson, ShadowFilter::Pcss}));
+        flagTip("--filter");
+        int half = (s.pcfSize - 1) / 2;
+        if (ImGui::SliderInt("pcf-size", &half, 0, 4, std::to_string(2 * half + 1).c_str())) {
+            s.pcfSize = 2 * half + 1;
+            changed(true);
+        }
+        flagTip("--pcf-size");
+        changed(ImGui::DragFloat("light-radius", &s.lightRadius, 0.01f, 0.0f, 100.0f));
+        flagTip("--light-radius");
+        changed(ImGui::SliderFloat("light-angle", &s.lightAngle, 0.0f, 20.0f, "%.2f deg"));
+        flagTip("--light-angle");
+        changed(enumCombo("blend-shadows", s.blendShadows,
+                          {BlendShadows::Opaque, BlendShadows::None, BlendShadows::Dithered}));
+        flagTip("--blend-shadows");
+    }
+    if (ImGui::CollapsingHeader("Cascades")) {
+        changed(ImGui::SliderInt("cascades", &s.cascades, 0, 4, s.cascades == 0 ? "auto" : "%d"));
+        flagTip("--cascades");
+        changed(enumCombo("fit-to", s.fitTo, {FitTo::ViewDepth, FitTo::Boxes}));
+        flagTip("--fit-to");
+        changed(ImGui::SliderFloat("cascade-lambda", &s.cascadeLambda, 0.0f, 1.0f));
+        flagTip("--cascade-lambda");
+        changed(ImGui::SliderFloat("cascade-blend", &s.cascadeBlend, 0.0f, 0.5f));
+        flagTip("--cascade-blend");
+    }
+    if (ImGui::CollapsingHeader("Shading")) {
+        changed(enumCombo("shadowed", o.shading.shadowedRule,
+                          {ShadowedRule::AmbientOnly, ShadowedRule::Factor}));
+        flagTip("--shadowed");
+        changed(ImGui::SliderFloat("shadow-factor", &o.shading.shadowFactor, 0.0f, 1.0f));
+        flagTip("--shadow-factor");
+        changed(enumCombo("output-encoding", o.shading.output,
+                          {OutputEncoding::Linear, OutputEncoding::Srgb}));
+        flagTip("--output-encoding");
+        changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
+        tooltip("the scene's ambient light colour, times each material's colour");
+        ImGui::TextDisabled("shininess: per material, from the scene");
+    }
+}
+
+void Viewer::animationControls() {
+    RenderOptions& o = mState.options;
+    if (ImGui::CollapsingHeader("Animation and view", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::Button(mState.playing ? "Pause (space)" : "Play (space)"))
+            mState.playing = !mState.playing;
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(100);
+        float speed = float(mState.speed);
+        if (ImGui::DragFloat("speed", &speed, 0.05f, -10.0f, 10.0f)) mState.speed = speed;
+        tooltip("animation seconds per second");
+        float time = float(o.time);
+        if (ImGui::DragFloat("time", &time, 0.05f, 0.0f, 1e6f, "%.2f s")) {
+            o.time = time;
+            changed(true);
+        }
+        flagTip("--time");
+        int lightOnly = o.lightOnly;
+        if (ImGui::SliderInt("light-only", &lightOnly, -1, int(mState.scene.lights.size()) - 1,
+                             lightOnly < 0 ? "all" : "%d")) {
+            o.lightOnly = lightOnly;
+            changed(true);
+        }
+        flagTip("--light-only");
+        changed(enumCombo(
+            "debug-view", o.debugView,
+            {DebugView::None, DebugView::Cascades, DebugView::ShadowMap, DebugView::LightFrusta}));
+        flagTip("--debug-view");
+        changed(ImGui::Checkbox("light frusta (F)", &mState.frusta));
+        tooltip("draw every shadow camera's volume as lines over the camera's view");
+        bool side = mState.side == view::SideView::ShadowMap;
+        if (ImGui::Checkbox("side view: shadow map", &side))
+            mState.side = side ? view::SideView::ShadowMap : view::SideView::None;
+        if (ImGui::Checkbox("fit view to window", &mState.fitView)) changed(true);
+        if (!mState.fitView) {
+            int size[2] = {o.width, o.height};
+            if (ImGui::DragInt2("size", size, 1.0f, 16, 4096)) {
+                o.width = std::clamp(size[0], 1, 16384);
+                o.height = std::clamp(size[1], 1, 16384);
+                changed(true);
+            }
+            flagTip("--size");
+        }
+        if (ImGui::Checkbox("measure passes", &mMeasure)) mRenderer.setPassTiming(mMeasure);
+        tooltip("time each pass as gnomon bench does (a glFinish between passes)");
+    }
+}
+
+void Viewer::inputText(const char* label, std::string& value) {
+    char buffer[1024];
+    std::snprintf(buffer, sizeof buffer, "%s", value.c_str());
+    if (ImGui::InputText(label, buffer, sizeof buffer)) value = buffer;
+}
+
+}  // namespace gnomon::cli::viewer
