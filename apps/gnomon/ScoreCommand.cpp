@@ -19,8 +19,8 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
                     "folder for render.png, errors.png (false shadow red, leaks blue, pale "
                     "inside the aliasing band) and score.json (default score)");
     cmd->add_option("--band", args.options.bandTexels,
-                    "aliasing band: map texels either side of a reference shadow boundary, "
-                    "0..64 (default " +
+                    "aliasing band: map texels either side of a reference shadow boundary "
+                    "(along the surface), 0..64 (default " +
                         std::to_string(int(args.options.bandTexels)) + ")");
     cmd->add_option("--soft-samples", args.options.softSamples,
                     "rays per pixel to the light's surface for the soft reference (filter pcss), "

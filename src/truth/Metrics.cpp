@@ -86,7 +86,13 @@ std::vector<std::uint8_t> aliasingBand(const Reference& r, const std::vector<flo
             const std::size_t c = p * std::size_t(r.lights) + std::size_t(l);
             if (!r.applies[c]) continue;
             const float ratio = r.pixelWorld[p] > 0.0f ? texelWorld[c] / r.pixelWorld[p] : 0.0f;
-            const float radius = std::max(1.0f, bandTexels * ratio);
+            // The map samples the light's image plane: an edge it places within k texels
+            // there lies within k / cos(theta) texels along a receiver tilted by theta (a
+            // wall under a high sun, the ground under a low one), wherever the error came
+            // from (sampling, or a tolerance that grows with the receiver's slope).
+            const float cosine = r.lightCosine.empty() ? 1.0f : r.lightCosine[c];
+            const float stretch = 1.0f / std::max(cosine, 1.0f / kBandMaxStretch);
+            const float radius = std::max(1.0f, bandTexels * ratio * stretch);
             band[c] = d2[p] <= radius * radius;
         }
     }

@@ -13,9 +13,15 @@
 
 namespace gnomon::truth {
 
+// The most a map texel is taken to stretch along a surface tilted to the light (1 / cos of
+// the tilt, here up to 75.5 degrees): beyond it, "away from the edge" would mean nothing.
+constexpr float kBandMaxStretch = 4.0f;
+
 // Per pixel x light ([pixel * lights + light], rows top first): 1 inside the aliasing band,
 // within `bandTexels` map texels of a reference shadow boundary of that light (never less
-// than a pixel). `texelWorld` holds the world size of the map texel each lookup used.
+// than a pixel). `texelWorld` holds the world size of the map texel each lookup used; on a
+// surface tilted by theta to the light a texel covers texel / cos(theta) of it, counted up
+// to kBandMaxStretch times (see Metrics.cpp).
 std::vector<std::uint8_t> aliasingBand(const Reference& reference,
                                        const std::vector<float>& texelWorld, float bandTexels,
                                        bool soft);

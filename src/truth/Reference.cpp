@@ -265,6 +265,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     ref.pixelWorld.assign(pixels, 0.0f);
     ref.applies.assign(cells, 0);
     ref.hard.assign(cells, 1.0f);
+    ref.lightCosine.assign(cells, 1.0f);
     const int samples = std::max(referenceOptions.softSamples, 0);
     if (samples > 0) ref.soft.assign(cells, 1.0f);
 
@@ -380,6 +381,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                 if (!mat.unlit && !(glm::dot(n, toLight) > 0.0f)) continue;  // faces away
                 const std::size_t cell = pixel * std::size_t(ref.lights) + l;
                 ref.applies[cell] = 1;
+                ref.lightCosine[cell] = mat.unlit ? 1.0f : glm::dot(n, toLight);
                 ref.hard[cell] = transmitted(casters.get(), blend, origin, toLight, distance);
                 if (samples == 0) continue;
                 float visible = 0.0f;

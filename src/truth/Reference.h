@@ -36,6 +36,9 @@ struct Reference {
     // 1 lit, 0 occluded (where applies); between where light passes dithered blended
     // casters (1 - alpha each, --blend-shadows dithered).
     std::vector<float> hard;
+    // Cosine between the surface's geometric normal and the direction to the light (where
+    // applies): how far a map texel stretches along the surface, 1 / cosine.
+    std::vector<float> lightCosine;
     std::vector<float> soft;  // fraction of the light's surface visible (softSamples > 0)
 
     std::size_t at(int x, int y, int light) const {

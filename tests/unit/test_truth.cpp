@@ -164,5 +164,36 @@ TEST(Metrics, PerfectVisibilityScoresZeroAndEachErrorCountsOnce) {
     EXPECT_DOUBLE_EQ(one.overall.meanAbsError, 3.0 / n);
 }
 
+// A shadow edge down the middle of a strip whose pixels are one map texel each: the band
+// reaches 2 texels from the edge on a receiver facing the light, 2 / cos(theta) on one
+// tilted by theta, and no more than kBandMaxStretch times 2 however grazing.
+TEST(Metrics, AliasingBandStretchesOnReceiversTiltedToTheLight) {
+    auto bandWidth = [](float cosine) {
+        truth::Reference r;
+        r.width = 64;
+        r.height = 4;
+        r.lights = 1;
+        const std::size_t n = std::size_t(r.width * r.height);
+        r.object.assign(n, 0);
+        r.pixelWorld.assign(n, 0.01f);
+        r.applies.assign(n, 1);
+        r.hard.assign(n, 1.0f);
+        r.lightCosine.assign(n, cosine);
+        for (int y = 0; y < r.height; ++y)
+            for (int x = 0; x < 32; ++x)
+                r.hard[r.at(x, y, 0)] = 0.0f;
+        const std::vector<float> texel(n, 0.01f);
+        const std::vector<std::uint8_t> band = truth::aliasingBand(r, texel, 2.0f, false);
+        int inBand = 0;
+        for (int x = 0; x < r.width; ++x)
+            inBand += band[r.at(x, 1, 0)];
+        return inBand;
+    };
+    // The edge's seeds are pixels 31 and 32; the band holds those within the radius of one.
+    EXPECT_EQ(bandWidth(1.0f), 2 + 2 * 2);
+    EXPECT_EQ(bandWidth(0.5f), 2 + 2 * 4);
+    EXPECT_EQ(bandWidth(0.05f), 2 + 2 * int(2.0f * truth::kBandMaxStretch));
+}
+
 }  // namespace
 }  // namespace gnomon
