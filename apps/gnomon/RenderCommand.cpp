@@ -68,8 +68,8 @@ void RenderFlags::add(CLI::App& a) {
                  "(default " +
                      str(s.normalOffset) + ")");
     a.add_option("--cull", cull,
-                 "back|front|none: faces culled in the depth pass (default back; double-sided "
-                 "materials never)");
+                 "back|front|none: faces culled in the depth pass (default back; only closed "
+                 "meshes of single-sided materials)");
     a.add_option("--filter", filter,
                  "none|hw2x2|pcf|poisson|pcss: shadow map lookup filter (default pcf)");
     a.add_option(

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "scene/MeshTopology.h"
 #include "scene/SceneUtil.h"
 
 namespace gnomon::render {
@@ -81,6 +82,9 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         glVertexArrayAttribBinding(mVao.id(), a, 0);
     }
     mMeshBounds = meshBounds(scene);
+    mMeshClosed.resize(scene.meshes.size());
+    for (size_t m = 0; m < scene.meshes.size(); ++m)
+        mMeshClosed[m] = isClosedSurface(scene.meshes[m]);
     mObjectData.clear();        // forces the object upload below
     mObjectIds = gl::Buffer();  // and the object indices' binding to the new vertex array
     mHaveGeometry = true;
@@ -155,6 +159,7 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
             mMeshRanges[o.mesh].first,
             mMeshRanges[o.mesh].second,
             mat.doubleSided,
+            bool(mMeshClosed[o.mesh]),
             o.castsShadows,
             o.receivesShadows,
             box,

@@ -32,6 +32,7 @@ struct DrawItem {
     std::size_t firstIndexByte = 0;
     GLint baseVertex = 0;
     bool doubleSided = false;
+    bool closed = false;  // the mesh bounds a solid (isClosedSurface): culling keeps its shadow
     bool casts = true;
     bool receives = true;
     Aabb bounds;                 // world space, at the synced time
@@ -102,6 +103,7 @@ private:
     std::vector<DrawItem> mItems;
     std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
     std::vector<Aabb> mMeshBounds;
+    std::vector<char> mMeshClosed;  // isClosedSurface per mesh, at upload
     Aabb mBounds, mCasterBounds;
     std::uint64_t mRevision = 0;
 };

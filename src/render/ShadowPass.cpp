@@ -199,7 +199,11 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
     drawDepthRuns(
         scene, mVisible, instances,
         [&](const DrawItem& item) { return alphaTestedCaster(item, options); },
-        [&](const DrawItem& item) { return options.cull != CullMode::None && !item.doubleSided; },
+        // Only solids may lose faces: an open surface culled from the light's side would
+        // cast no shadow at all (and one from the other side would not either).
+        [&](const DrawItem& item) {
+            return options.cull != CullMode::None && !item.doubleSided && item.closed;
+        },
         [&](bool alpha) {
             glUseProgram(program(variant, alpha).id());
             setUniforms();
