@@ -11,8 +11,9 @@ namespace {
 
 struct PositionHash {
     std::size_t operator()(const glm::vec3& p) const {
+        const glm::vec3 q = p + glm::vec3(0.0f);  // -0 + 0 = +0: equal keys, equal hashes
         std::uint32_t b[3];
-        std::memcpy(b, &p, sizeof b);
+        std::memcpy(b, &q, sizeof b);
         return (std::size_t(b[0]) * 73856093u) ^ (std::size_t(b[1]) * 19349663u) ^
                (std::size_t(b[2]) * 83492791u);
     }
