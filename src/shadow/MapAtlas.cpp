@@ -1,7 +1,6 @@
 #include "shadow/MapAtlas.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace gnomon::shadow {
 
@@ -23,26 +22,31 @@ glm::ivec2 zOrder(int k) {
 int packMaps(const std::vector<int>& sizes, int layerSize, std::vector<MapSlot>& slots) {
     slots.assign(sizes.size(), MapSlot{});
     if (sizes.empty()) return 0;
-    std::vector<std::size_t> order(sizes.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return sizes[a] > sizes[b]; });
-    int layer = 0, level = 0, cursor = 0;  // cursor: the next free slot of this level
-    for (std::size_t i : order) {
+    // Each map's level: the most times the layer's side halves and still holds it.
+    auto levelOf = [&](int size) {
         int k = 0;
-        while (k < kMaxSplit && (layerSize >> (k + 1)) >= sizes[i])
+        while (k < kMaxSplit && (layerSize >> (k + 1)) >= size)
             ++k;
-        for (; level < k; ++level)
-            cursor *= 4;  // the same position in slots a quarter the area
-        if (cursor >= (1 << (2 * level))) {
-            ++layer;
-            cursor = 0;
+        return k;
+    };
+    // Largest slots first, maps of one level in their given order: one pass per level
+    // instead of a sorted copy of the indices (this runs every frame; no allocation).
+    int layer = 0, level = 0, cursor = 0;  // cursor: the next free slot of this level
+    for (int k = 0; k <= kMaxSplit; ++k) {
+        for (std::size_t i = 0; i < sizes.size(); ++i) {
+            if (levelOf(sizes[i]) != k) continue;
+            for (; level < k; ++level)
+                cursor *= 4;  // the same position in slots a quarter the area
+            if (cursor >= (1 << (2 * level))) {
+                ++layer;
+                cursor = 0;
+            }
+            // Slot c of a level spans [c * size / 2^level, (c + 1) * size / 2^level) rounded
+            // down: every slot is at least size >> level wide, and a slot's four quarters
+            // lie exactly inside it even when the layer's size is not a power of two.
+            slots[i] = {layer, zOrder(cursor) * layerSize / (1 << level)};
+            ++cursor;
         }
-        // Slot c of a level spans [c * size / 2^level, (c + 1) * size / 2^level) rounded
-        // down: every slot is at least size >> level wide, and a slot's four quarters lie
-        // exactly inside it even when the layer's size is not a power of two.
-        slots[i] = {layer, zOrder(cursor) * layerSize / (1 << level)};
-        ++cursor;
     }
     return layer + 1;
 }

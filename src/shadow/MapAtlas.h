@@ -16,8 +16,9 @@ struct MapSlot {
 
 // Places maps of `sizes` (texels per side) in layers of layerSize² (at least the largest
 // size): each map gets the smallest slot of layerSize / 2^k (k <= 6) that holds it, slots
-// filled largest first in Z order, so slots never overlap and a map lies inside its layer.
-// Fills `slots` (one per size, same order); returns the number of layers used.
+// filled largest first (maps of one slot size in their given order) in Z order, so slots never
+// overlap and a map lies inside its layer. Fills `slots` (one per size, same order); returns the
+// number of layers used.
 int packMaps(const std::vector<int>& sizes, int layerSize, std::vector<MapSlot>& slots);
 
 }  // namespace gnomon::shadow
