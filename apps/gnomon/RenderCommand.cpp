@@ -85,9 +85,9 @@ void RenderFlags::add(CLI::App& a) {
                  "fitted directional lights: auto|1..4 cascaded maps along the view; auto: one "
                  "per factor of 8 in the depth the view sees (default auto)");
     a.add_option("--fit-to", fitTo,
-                 "view-depth|boxes: what fitted directional and area lights' maps cover: the "
-                 "points a coarse depth pre-pass of the view sees, or the visible receivers' "
-                 "boxes (default " +
+                 "view-depth|boxes: what fitted lights' maps cover: the points a coarse depth "
+                 "pre-pass of the view sees (a point light whose points fit a cube face's "
+                 "angle gets one frustum over them), or the visible receivers' boxes (default " +
                      std::string(toString(s.fitTo)) + ")");
     a.add_option(
         "--cascade-lambda", cascadeLambda,

@@ -104,7 +104,7 @@ struct ShadowOptions {
     // Fitted directional lights: 1..4 maps along the view; 0 = auto: with fitTo ViewDepth,
     // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
     int cascades = 0;
-    FitTo fitTo = FitTo::ViewDepth;  // what fitted directional and area lights cover
+    FitTo fitTo = FitTo::ViewDepth;  // what fitted lights cover (docs/techniques.md)
     float cascadeLambda = 0.75f;     // splits: 0 uniform .. 1 logarithmic
     float cascadeBlend = 0.1f;       // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps

@@ -1,8 +1,9 @@
 // The lights of one frame as the passes need them: each light's main-pass record, ordered
 // by kind for the shader's loops (shaders/lights.glsl), and the light cameras of those that
 // cast shadows this frame. Fitted cameras cover what the view sees: the visible receivers'
-// boxes, or, for directional and area lights with FitTo::ViewDepth, the view's depth samples
-// (which also choose cascade splits and, with `cascades` 0, their count). No drawing: the
+// boxes, or, with FitTo::ViewDepth, the view's depth samples: directional and area lights cover
+// them (which also choose cascade splits and, with `cascades` 0, their count), a point light
+// whose samples fit a 90-degree cone gets one frustum over them instead of a cube. No drawing: the
 // samples come in from the view depth pass.
 #pragma once
 
@@ -20,8 +21,8 @@ namespace gnomon::render {
 
 class LightPlan {
 public:
-    // Does planning `s` with `options` use view samples (a fitted directional or area light
-    // that casts shadows, with FitTo::ViewDepth)?
+    // Does planning `s` with `options` use view samples (a fitted directional, area or point
+    // light that casts shadows, with FitTo::ViewDepth)?
     static bool wantsViewSamples(const Scene& s, const RenderOptions& options);
 
     // Plans every light of `s` (the GPU copy `scene` gives the items' world boxes).

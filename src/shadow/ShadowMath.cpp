@@ -85,96 +85,6 @@ struct FitBoxes {
     bool snap = false;  // the fit follows the view: keep it steady
 };
 
-// `a` moved inside `b` corner by corner: their intersection when they overlap, and never
-// empty when `a` is not (for a box that rounding put a hair beside `b`).
-Aabb clampInto(const Aabb& a, const Aabb& b) {
-    Aabb out;
-    out.min = glm::clamp(a.min, b.min, b.max);
-    out.max = glm::clamp(a.max, b.min, b.max);
-    return out;
-}
-
-// The vertices of a box clipped by a frustum: at most the ends of 24 clipped edges.
-struct ClippedPoints {
-    std::array<glm::vec3, 48> points;
-    int count = 0;
-    void extend(const glm::vec3& p) { points[size_t(count++)] = p; }
-    Aabb box() const {
-        Aabb b;
-        for (int i = 0; i < count; ++i)
-            b.extend(points[size_t(i)]);
-        return b;
-    }
-};
-
-// Clips the segment p0 -> p1 to where all six signed distances (linear along it) are >= 0;
-// adds the ends of what remains to `out`.
-void clipSegment(const glm::vec3& p0, const glm::vec3& p1, const float (&d0)[6],
-                 const float (&d1)[6], ClippedPoints& out) {
-    float t0 = 0.0f, t1 = 1.0f;
-    for (int k = 0; k < 6; ++k) {
-        if (d0[k] < 0.0f && d1[k] < 0.0f) return;
-        if (d0[k] < 0.0f) t0 = std::max(t0, d0[k] / (d0[k] - d1[k]));
-        if (d1[k] < 0.0f) t1 = std::min(t1, d0[k] / (d0[k] - d1[k]));
-    }
-    if (t0 > t1) return;
-    out.extend(p0 + (p1 - p0) * t0);
-    out.extend(p0 + (p1 - p0) * t1);
-}
-
-// Signed distances of a clip-space point to the six planes of the clip volume.
-void clipDistances(const glm::vec4& c, float (&d)[6]) {
-    d[0] = c.w + c.x;
-    d[1] = c.w - c.x;
-    d[2] = c.w + c.y;
-    d[3] = c.w - c.y;
-    d[4] = c.w + c.z;
-    d[5] = c.w - c.z;
-}
-
-void boxDistances(const Aabb& b, const glm::vec3& p, float (&d)[6]) {
-    for (int k = 0; k < 3; ++k) {
-        d[2 * k] = p[k] - b.min[k];
-        d[2 * k + 1] = b.max[k] - p[k];
-    }
-}
-
-// The vertices of the part of `box` inside the clip volume of `clipFromWorld` (exact: the
-// intersection of two convex solids has its vertices on the edges of one clipped by the
-// other). `frustum`: the volume's corners in world space, numbered by x, y, z bits.
-ClippedPoints clipToFrustum(const Aabb& box, const glm::mat4& clipFromWorld,
-                            const std::array<glm::vec3, 8>& frustum) {
-    ClippedPoints out;
-    const std::array<glm::vec3, 8> corners = box.corners();
-    float boxClip[8][6], frustumBox[8][6];
-    for (int i = 0; i < 8; ++i) {
-        clipDistances(clipFromWorld * glm::vec4(corners[size_t(i)], 1.0f), boxClip[i]);
-        boxDistances(box, frustum[size_t(i)], frustumBox[i]);
-    }
-    // Edges join the corners whose indices differ in one bit (both solids number corners
-    // by x, y, z bits).
-    for (int i = 0; i < 8; ++i) {
-        for (int bit = 1; bit < 8; bit <<= 1) {
-            const int j = i | bit;
-            if (j == i) continue;
-            clipSegment(corners[size_t(i)], corners[size_t(j)], boxClip[i], boxClip[j], out);
-            clipSegment(frustum[size_t(i)], frustum[size_t(j)], frustumBox[i], frustumBox[j], out);
-        }
-    }
-    return out;
-}
-
-std::array<glm::vec3, 8> frustumCorners(const glm::mat4& clipFromWorld) {
-    const glm::mat4 worldFromClip = glm::inverse(clipFromWorld);
-    std::array<glm::vec3, 8> c{};
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec4 p = worldFromClip * glm::vec4(i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f,
-                                                      i & 4 ? 1.0f : -1.0f, 1.0f);
-        c[size_t(i)] = glm::vec3(p) / p.w;
-    }
-    return c;
-}
-
 // `receivers` false: only the casters (a fit to view samples needs no receiver boxes).
 FitBoxes visibleReceivers(const FitScene& scene, bool receivers = true) {
     FitBoxes f;
@@ -285,35 +195,40 @@ Aabb receiversInLight(const FitScene& scene, const FitBoxes& boxes, const glm::v
     return receivers;
 }
 
-// Perspective camera from `eye` along `axis` with fovy: far at the farthest receiver corner
-// inside the cone, near at the nearest caster that can shadow one.
-LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, float fovyRadians,
-                                const FitBoxes& boxes, int mapSize) {
+// A perspective frame through `lightFromWorld` (a look-at) whose image is the window
+// [lo, hi] of tan units (x / -z, y / -z): far at the farthest receiver corner inside the
+// window's pyramid (or at `farthest` when the caller knows it), near at the nearest caster
+// that can shadow one.
+LightCameraFrame fitFrustum(const glm::mat4& lightFromWorld, glm::vec2 lo, glm::vec2 hi,
+                            const FitBoxes& boxes, int mapSize, float farthest = 0.0f) {
     LightCameraFrame f;
-    f.lightFromWorld = safeLookAt(eye, eye + axis, glm::vec3(0, 1, 0));
+    f.lightFromWorld = lightFromWorld;
     f.valid = false;
-    // The cone's four side planes (no near or far): what the map can see at all.
-    const glm::mat4 cone = glm::infinitePerspective(fovyRadians, 1.0f, 1.0f) * f.lightFromWorld;
-    float farthest = 0.0f;
-    for (const Aabb& r : boxes.receivers) {
-        if (outsideClipVolume(r, cone, true)) continue;
+    auto pyramid = [&](float near, float far) {
+        return glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far);
+    };
+    // The pyramid's four side planes (far pushed out of reach): what the map can see at all.
+    const glm::mat4 sides = pyramid(1.0f, 1e30f) * lightFromWorld;
+    const bool fromBoxes = !(farthest > 0.0f);
+    for (std::size_t i = 0; fromBoxes && i < boxes.receivers.size(); ++i) {
+        const Aabb& r = boxes.receivers[i];
+        if (outsideClipVolume(r, sides, true)) continue;
         float nearest = 0.0f, far = 0.0f;
-        depthRange(r, f.lightFromWorld, nearest, far);
+        depthRange(r, lightFromWorld, nearest, far);
         farthest = std::max(farthest, far);
     }
     if (!(farthest > 0.0f)) return f;
-    // Near at the nearest point of a caster inside the cone (not the nearest corner of its
-    // box: a floor reaching behind the light would pull near to ~0 and waste the depth
-    // precision of the whole map). Clipped to the cone from 1/1000 of far to far.
-    const glm::mat4 coneVolume =
-        glm::perspective(fovyRadians, 1.0f, farthest * 1e-3f, farthest * 1.01f) * f.lightFromWorld;
-    const std::array<glm::vec3, 8> coneCorners = frustumCorners(coneVolume);
+    // Near at the nearest point of a caster inside the pyramid (not the nearest corner of
+    // its box: a floor reaching behind the light would pull near to ~0 and waste the depth
+    // precision of the whole map). Clipped to the pyramid from 1/1000 of far to far.
+    const glm::mat4 volume = pyramid(farthest * 1e-3f, farthest * 1.01f) * lightFromWorld;
+    const std::array<glm::vec3, 8> volumeCorners = frustumCorners(volume);
     float nearestCaster = std::numeric_limits<float>::max();
     for (const Aabb& c : *boxes.casters) {
-        if (c.empty() || outsideClipVolume(c, coneVolume, false)) continue;
-        const ClippedPoints inside = clipToFrustum(c, coneVolume, coneCorners);
+        if (c.empty() || outsideClipVolume(c, volume, false)) continue;
+        const ClippedPoints inside = clipToFrustum(c, volume, volumeCorners);
         for (int i = 0; i < inside.count; ++i) {
-            const float d = -(f.lightFromWorld * glm::vec4(inside.points[size_t(i)], 1.0f)).z;
+            const float d = -(lightFromWorld * glm::vec4(inside.points[size_t(i)], 1.0f)).z;
             nearestCaster = std::min(nearestCaster, d);
         }
     }
@@ -323,9 +238,18 @@ LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, flo
     f.valid = true;
     f.far = std::max(farthest * 1.01f, 1e-3f);
     f.near = std::clamp(nearestCaster * 0.99f, f.far * 1e-3f, f.far * 0.999f);
-    f.clipFromLight = glm::perspective(fovyRadians, 1.0f, f.near, f.far);
-    f.texelWorldSize = 2.0f * std::tan(0.5f * fovyRadians) / float(mapSize);
+    f.clipFromLight = pyramid(f.near, f.far);
+    // At distance 1 along the axis (the shader scales by clip w, that distance).
+    f.texelWorldSize = std::max(hi.x - lo.x, hi.y - lo.y) / float(mapSize);
     return f;
+}
+
+// Perspective camera from `eye` along `axis` with a square fovy (spot lights' cones).
+LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, float fovyRadians,
+                                const FitBoxes& boxes, int mapSize) {
+    const float t = std::tan(0.5f * fovyRadians);
+    return fitFrustum(safeLookAt(eye, eye + axis, glm::vec3(0, 1, 0)), glm::vec2(-t), glm::vec2(t),
+                      boxes, mapSize);
 }
 
 // Six faces around the light reaching the farthest receiver corner; near just before the
@@ -367,27 +291,47 @@ LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int m
     return f;
 }
 
-}  // namespace
-
-bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ignoreNear) {
-    if (box.empty()) return true;
-    glm::vec4 clip[8];
-    const auto corners = box.corners();
-    for (int i = 0; i < 8; ++i)
-        clip[i] = clipFromWorld * glm::vec4(corners[size_t(i)], 1.0f);
-    // Plane k: -w <= x, x <= w, -w <= y, y <= w, -w <= z, z <= w.
-    for (int plane = 0; plane < 6; ++plane) {
-        if (ignoreNear && plane == 4) continue;
-        const int axis = plane / 2;
-        const float sign = plane % 2 ? 1.0f : -1.0f;
-        bool allOutside = true;
-        for (int i = 0; i < 8 && allOutside; ++i) {
-            allOutside = sign * clip[i][axis] > clip[i].w;
-        }
-        if (allOutside) return true;
+// A point light: when the view's samples all lie in a window no wider than a cube face's
+// (2 x 2 tan units) around their mean direction, one frustum over that window: never
+// coarser than a cube face on its axis and often many times finer (a lamp over a small model
+// spends a few percent of a cube on what the view sees). Else the cube. A few texels of
+// margin keep filter taps at the window's rim inside the map.
+LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
+                          const FitBoxes& boxes, int mapSize) {
+    glm::vec3 axis(0.0f);
+    SampleWindow window;
+    if (!samples || !samplesDirection(*samples, position, axis))
+        return fitCube(position, boxes, mapSize);
+    const float n = float(std::max(mapSize, 16));
+    if (boxes.snap) {
+        // Steady while the view moves, as the orthographic fit is: the axis on a grid of
+        // half degrees, each side of the window a quantised size with its corner on its own
+        // texel grid, far quantised; small camera moves leave the map as it was.
+        const float step = glm::radians(0.5f);
+        const float yaw = std::round(std::atan2(axis.x, -axis.z) / step) * step;
+        const float pitch = std::round(std::asin(std::clamp(axis.y, -1.0f, 1.0f)) / step) * step;
+        axis = {std::cos(pitch) * std::sin(yaw), std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
     }
-    return false;
+    const glm::mat4 lightFromWorld = safeLookAt(position, position + axis, glm::vec3(0, 1, 0));
+    if (!samplesWindow(*samples, lightFromWorld, window)) return fitCube(position, boxes, mapSize);
+    // A few texels of margin keep filter taps at the window's rim inside the map.
+    glm::vec2 size = glm::max(window.hi - window.lo, 1e-4f) / (1.0f - 8.0f / n);
+    glm::vec2 lo = 0.5f * (window.lo + window.hi - size);
+    float farthest = window.farthest;
+    if (boxes.snap) {
+        size = {quantizeUp(size.x / (1.0f - 4.0f / n)), quantizeUp(size.y / (1.0f - 4.0f / n))};
+        const glm::vec2 texel = size / n;
+        lo = glm::floor((0.5f * (window.lo + window.hi) - 0.5f * size) / texel) * texel;
+        farthest = quantizeUp(farthest);
+    }
+    const glm::vec2 hi = lo + size;
+    if (std::max(size.x, size.y) > 2.0f || std::max(glm::length(lo), glm::length(hi)) > 2.0f)
+        return fitCube(position, boxes, mapSize);
+    const LightCameraFrame f = fitFrustum(lightFromWorld, lo, hi, boxes, mapSize, farthest);
+    return f.valid ? f : fitCube(position, boxes, mapSize);
 }
+
+}  // namespace
 
 bool outsideCube(const Aabb& box, const LightCameraFrame& cube) {
     if (box.empty()) return true;
@@ -441,7 +385,7 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
                 glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), boxes,
                 mapSize);
         case LightType::Point:
-            return fitCube(light.position, boxes, mapSize);
+            return fitPoint(light.position, scene.samples, boxes, mapSize);
     }
     return {};
 }

@@ -9,6 +9,7 @@
 
 #include "core/Aabb.h"
 #include "gnomon/Scene.h"
+#include "shadow/FrustumClip.h"
 #include "shadow/ViewSamples.h"
 
 namespace gnomon::shadow {
@@ -86,10 +87,6 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
 // The world boxes Fit looks at for `scene` at `seconds`, seen by its camera at `aspect`.
 FitScene fitScene(const Scene& scene, double seconds, float aspect);
 
-// True when no point of `box` can land in the clip volume of `clipFromWorld` (each corner
-// tested against the six planes; conservative: a box straddling a corner may be kept).
-// `ignoreNear`: depth-clamped passes keep casters in front of the near plane.
-bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ignoreNear);
 // True when `box` cannot cast into any face of a cube frame (beyond its far sphere).
 bool outsideCube(const Aabb& box, const LightCameraFrame& cube);
 

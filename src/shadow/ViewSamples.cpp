@@ -79,6 +79,38 @@ Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld,
     return box;
 }
 
+bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction) {
+    glm::dvec3 sum(0.0);
+    for (const glm::vec4& p : samples.points) {
+        const glm::vec3 d = glm::vec3(p) - apex;
+        const float length = glm::length(d);
+        if (!(length > samples.pad(p.w))) return false;
+        sum += glm::dvec3(d / length);
+    }
+    if (!(glm::length(sum) > 0.0)) return false;
+    direction = glm::vec3(glm::normalize(sum));
+    return true;
+}
+
+bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
+                   SampleWindow& window) {
+    window.lo = glm::vec2(std::numeric_limits<float>::max());
+    window.hi = -window.lo;
+    window.farthest = 0.0f;
+    for (const glm::vec4& p : samples.points) {
+        const glm::vec3 v = glm::vec3(lightFromWorld * glm::vec4(glm::vec3(p), 1.0f));
+        const float depth = -v.z, pad = samples.pad(p.w);
+        if (!(depth > pad)) return false;
+        const glm::vec2 t = glm::vec2(v) / depth;
+        // A move by `pad` changes x / -z by at most pad (1 + |t|) / (depth - pad).
+        const glm::vec2 reach = pad * (1.0f + glm::abs(t)) / (depth - pad);
+        window.lo = glm::min(window.lo, t - reach);
+        window.hi = glm::max(window.hi, t + reach);
+        window.farthest = std::max(window.farthest, depth + pad);
+    }
+    return !samples.points.empty();
+}
+
 float mapShareUsed(const ViewSamples& samples, const LightCameraFrame& frame, int mapSize,
                    float depthFrom, float depthTo, int cells) {
     const bool cube = frame.kind == FrameKind::Cube;

@@ -52,6 +52,20 @@ void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, c
 Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld, float depthFrom,
                     float depthTo);
 
+// For fitting one frustum from a point light over what the view sees (instead of a cube):
+// the samples' mean direction from `apex`; false when there is none or one lies within its
+// pad of the apex.
+bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction);
+// The window [lo, hi] in tan units (x / -z, y / -z) of the camera `lightFromWorld` (a
+// look-at) that holds every sample with its pad, and the largest depth -z among them. False
+// when some sample's pad reaches the camera's plane z = 0 (no window holds it).
+struct SampleWindow {
+    glm::vec2 lo{0.0f}, hi{0.0f};
+    float farthest = 0.0f;
+};
+bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
+                   SampleWindow& window);
+
 struct LightCameraFrame;
 
 // The share (0..1) of a light camera's map that the samples whose view depth lies in

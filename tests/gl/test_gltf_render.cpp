@@ -20,7 +20,15 @@ TEST(GltfRender, LampsFivePointLightsCastShadows) {
     RenderOptions o = s.options;
     o.width = o.height = 128;
     sharedRenderer().render(s, o);
-    const auto maps = sharedRenderer().shadowMaps();
+    auto maps = sharedRenderer().shadowMaps();
+    EXPECT_EQ(maps.size(), 5u);
+    // Fitted to what the view sees, a light may need one frustum rather than six faces;
+    // fitted to boxes, every point light gets a cube.
+    for (const ShadowMapImage& m : maps)
+        EXPECT_TRUE(m.depth.width == m.depth.height || m.depth.width == 6 * m.depth.height);
+    o.shadow.fitTo = FitTo::Boxes;
+    sharedRenderer().render(s, o);
+    maps = sharedRenderer().shadowMaps();
     EXPECT_EQ(maps.size(), 5u);
     for (const ShadowMapImage& m : maps)
         EXPECT_EQ(m.depth.width, 6 * m.depth.height) << "light " << m.light << " is not a cube";

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Shadow quality on real scenes: six hard views of scripts/quality-real.py (inside Sponza
+# Shadow quality on real scenes: seven hard views of scripts/quality-real.py (inside Sponza
 # under a sun and under a spot, a low sun, a spot light, point lights; its VIEWS are the one definition, written out with
 # --write-scene) scored against the ray-traced reference at 192x192. Fails when a view's
 # overall misclassified fraction reaches 1 %, its false shadow outside the aliasing band
@@ -9,7 +9,8 @@
 # Exit 77 (skipped) without the shared scenes, one of the models, or a usable OpenGL.
 set -uo pipefail
 gnomon=$1; scenes=$2; work=$3
-views=(sponza-atrium sponza-gallery sponza-capitals-spot lantern-low-sun dragon-spot lamp-stem)
+views=(sponza-atrium sponza-gallery sponza-capitals-spot lantern-low-sun dragon-spot lamp-stem
+       toycar-lamp)
 size=192x192
 quality_real=$(dirname "$0")/../../scripts/quality-real.py
 rm -rf "$work" && mkdir -p "$work"

@@ -190,6 +190,69 @@ TEST(ViewSamples, SunFittedToSamplesCoversThemWithSmallerTexels) {
                      .valid);
 }
 
+TEST(ViewSamples, PointLightOverWhatTheViewSeesGetsOneFrustumNotACube) {
+    // The ground close up (|x|, |z| <= 10), with a post on it, lit by a point light.
+    const Camera camera = groundCamera();
+    const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
+    const float aspect = 4.0f / 3.0f;
+    shadow::ViewSamples samples;
+    shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
+    ASSERT_FALSE(samples.empty());
+    shadow::FitScene scene;
+    scene.receivers = {Aabb{{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}}};
+    scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
+    scene.viewKnown = true;
+    scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
+    scene.samples = &samples;
+    Light lamp;
+    lamp.type = LightType::Point;
+    // High above: everything the view sees lies in a narrow window, one frustum holds it
+    // with texels finer than a cube face's (2 / 1024 at distance 1).
+    lamp.position = {1.0f, 40.0f, 2.0f};
+    const shadow::LightCameraFrame high = shadow::lightCameraFrame(lamp, camera, scene, 1024);
+    ASSERT_TRUE(high.valid);
+    EXPECT_EQ(high.kind, shadow::FrameKind::Perspective);
+    EXPECT_LT(high.texelWorldSize, 0.5f * 2.0f / 1024.0f);
+    expectCovers(high, samples);
+    // Just above the ground: the samples spread over more than a cube face; a cube.
+    lamp.position = {0.0f, 0.5f, 0.0f};
+    EXPECT_EQ(shadow::lightCameraFrame(lamp, camera, scene, 1024).kind, shadow::FrameKind::Cube);
+    // Without samples (fit to boxes): always the cube.
+    lamp.position = {1.0f, 40.0f, 2.0f};
+    scene.samples = nullptr;
+    EXPECT_EQ(shadow::lightCameraFrame(lamp, camera, scene, 1024).kind, shadow::FrameKind::Cube);
+}
+
+TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
+    shadow::ViewSamples samples;
+    samples.points = {{1.0f, 0.0f, -2.0f, 1.0f}, {-1.0f, 0.5f, -4.0f, 1.0f}};
+    samples.padConstant = 0.1f;
+    glm::vec3 axis(0.0f);
+    ASSERT_TRUE(shadow::samplesDirection(samples, glm::vec3(0.0f), axis));
+    EXPECT_LT(axis.z, -0.9f);
+    shadow::SampleWindow w;
+    ASSERT_TRUE(shadow::samplesWindow(samples, glm::mat4(1.0f), w));
+    // Each padded sample's corners project inside the window (the bound is exact at the
+    // nearest corners: up to float rounding).
+    const float e = 1e-6f;
+    for (const glm::vec4& p : samples.points) {
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 q =
+                glm::vec3(p) +
+                0.1f * glm::vec3(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
+            const glm::vec2 t = glm::vec2(q) / -q.z;
+            EXPECT_GE(t.x, w.lo.x - e);
+            EXPECT_LE(t.x, w.hi.x + e);
+            EXPECT_GE(t.y, w.lo.y - e);
+            EXPECT_LE(t.y, w.hi.y + e);
+        }
+    }
+    EXPECT_FLOAT_EQ(w.farthest, 4.1f);
+    // A sample within its pad of the camera's plane: no window.
+    samples.points.emplace_back(2.0f, 0.0f, -0.05f, 1.0f);
+    EXPECT_FALSE(shadow::samplesWindow(samples, glm::mat4(1.0f), w));
+}
+
 TEST(ViewSamples, MapShareCountsTheSquaresTheSamplesLandOn) {
     // An orthographic map over x, y in [-1, 1] looking down -z; samples over its left half.
     shadow::LightCameraFrame frame;
