@@ -82,7 +82,7 @@ struct ShadowOptions {
     // 6 m from a near plane at 5 cm: Sponza's shafts lit through it under their capitals).
     // What is left is the cubes' bilinear taps (Sponza's pillars near a point light need 5e-5).
     float biasConstant = 0.00005f;
-    float biasDepthAware = 1.0f;  // + this many steps of the stored depth's spacing (S12)
+    float biasDepthAware = 1.0f;  // + this many steps of the stored depth's spacing
     float biasSlope = 1.5f;       // glPolygonOffset factor in the depth pass, >= 0
     float biasUnits = 2.0f;       // glPolygonOffset units in the depth pass, >= 0
     // Receiver-plane depth: each tap compares against the depth the receiver's own plane

@@ -150,6 +150,27 @@ struct Light {
     ShadowCamera shadowCamera;
 };
 
+// Names one state of a scene's meshes, materials, textures and objects, so a renderer
+// re-reads them (checks, hashes, uploads: work that grows with the scene) only when it
+// changed instead of every frame. Every Scene starts with a value no other Scene has had,
+// and so does every copy; whoever edits those four in place calls bump(). Lights, camera,
+// ambient and options need no bump: they are read every frame.
+class Revision {
+public:
+    Revision() : mValue(next()) {}
+    Revision(const Revision&) : mValue(next()) {}
+    Revision& operator=(const Revision&) {
+        mValue = next();
+        return *this;
+    }
+    void bump() { mValue = next(); }
+    std::uint64_t value() const { return mValue; }
+
+private:
+    static std::uint64_t next();  // a process-wide counter
+    std::uint64_t mValue;
+};
+
 struct Scene {
     std::string name;
     std::string description;  // one line
@@ -166,9 +187,15 @@ struct Scene {
     // What a loader ignored or repaired (unsupported extensions, generated normals, skipped
     // triangles, added lights or camera), one sentence each.
     std::vector<std::string> warnings;
+    // Bump after editing meshes, materials, textures or objects in place.
+    Revision revision;
 
     // Empty when consistent; otherwise one sentence per problem (index out of range, NaN...).
     std::vector<std::string> validate() const;
+    // The two halves of validate(): meshes, textures, materials and objects (what `revision`
+    // covers; it reads every vertex), and lights and camera.
+    std::vector<std::string> validateContent() const;
+    std::vector<std::string> validateLightsAndCamera() const;
 };
 
 struct SceneInfo {

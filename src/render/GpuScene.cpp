@@ -105,19 +105,28 @@ void GpuScene::uploadTextures(const Scene& scene) {
 }
 
 bool GpuScene::sync(const Scene& scene, double seconds) {
+    // The scene's revision names the state of its meshes, materials, textures and objects:
+    // the same one at the same time leaves nothing here to change, and nothing is read (the
+    // hashes below read every byte). A new revision is hashed: a copy of the scene, or an
+    // edit that changed nothing the GPU holds, uploads nothing.
+    const bool sameContent =
+        mHaveGeometry && mHaveTextures && scene.revision.value() == mSyncedRevision;
+    if (sameContent && seconds == mSyncedSeconds) return false;
     bool changed = false;
-    const std::uint64_t hash = hashGeometry(scene);
-    if (!mHaveGeometry || hash != mGeometryHash) {
-        uploadGeometry(scene);
-        mGeometryHash = hash;
-        changed = true;
-    }
-    const std::uint64_t textureHash = hashTextures(scene);
-    if (!mHaveTextures || textureHash != mTextureHash) {
-        uploadTextures(scene);
-        mTextureHash = textureHash;
-        mObjectData.clear();  // items hold texture names: rebuild them
-        changed = true;
+    if (!sameContent) {
+        const std::uint64_t hash = hashGeometry(scene);
+        if (!mHaveGeometry || hash != mGeometryHash) {
+            uploadGeometry(scene);
+            mGeometryHash = hash;
+            changed = true;
+        }
+        const std::uint64_t textureHash = hashTextures(scene);
+        if (!mHaveTextures || textureHash != mTextureHash) {
+            uploadTextures(scene);
+            mTextureHash = textureHash;
+            mObjectData.clear();  // items hold texture names: rebuild them
+            changed = true;
+        }
     }
 
     // Object records: rebuilt on the CPU (cheap), uploaded only when they differ.
@@ -217,6 +226,8 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         changed = true;
     }
     if (changed) ++mRevision;
+    mSyncedRevision = scene.revision.value();
+    mSyncedSeconds = seconds;
     return changed;
 }
 

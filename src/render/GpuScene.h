@@ -56,6 +56,8 @@ inline bool alphaTestedCaster(const DrawItem& item, const ShadowOptions& options
 class GpuScene {
 public:
     // Makes the GPU copy match `scene` at `seconds`; returns true when anything changed.
+    // Reads the scene's meshes, materials, textures and objects only when its revision or
+    // `seconds` differ from the last call's.
     bool sync(const Scene& scene, double seconds);
     // Binds the vertex array, the object buffer (binding 0) and the draw commands.
     void bind() const;
@@ -106,6 +108,8 @@ private:
     std::vector<char> mMeshClosed;  // isClosedSurface per mesh, at upload
     Aabb mBounds, mCasterBounds;
     std::uint64_t mRevision = 0;
+    std::uint64_t mSyncedRevision = 0;  // the Scene::revision and time last synced
+    double mSyncedSeconds = 0.0;
 };
 
 }  // namespace gnomon::render

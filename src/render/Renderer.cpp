@@ -53,6 +53,7 @@ struct Renderer::Impl {
     render::LightPlan plan;
     Camera lastCamera;  // the last frame's view and size, for mapUsage()
     int lastWidth = 1, lastHeight = 1;
+    std::uint64_t validRevision = 0;  // the last Scene::revision whose content was valid
     FrameStats stats;
     bool passTiming = false;
     std::unique_ptr<render::PassClock> clock;  // made when timing is first switched on
@@ -130,7 +131,12 @@ struct Renderer::Impl {
     // The frame in `target`, not read back.
     void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
         if (auto problems = options.validate(); !problems.empty()) invalid(problems);
-        if (auto problems = s.validate(); !problems.empty()) invalid(problems);
+        // The content check reads every vertex: only for a revision not yet found valid.
+        if (s.revision.value() != validRevision) {
+            if (auto problems = s.validateContent(); !problems.empty()) invalid(problems);
+            validRevision = s.revision.value();
+        }
+        if (auto problems = s.validateLightsAndCamera(); !problems.empty()) invalid(problems);
         if (s.lights.size() > std::size_t(mainPass.maxLights())) {
             throw Error(ErrorKind::InvalidInput,
                         "scene '" + s.name + "' has " + std::to_string(s.lights.size()) +

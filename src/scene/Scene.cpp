@@ -1,6 +1,7 @@
 // Scene model behaviour: animated transforms, consistency checks with readable messages,
 // bounds for shadow fitting.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <string>
@@ -10,6 +11,11 @@
 #include "scene/SceneUtil.h"
 
 namespace gnomon {
+
+std::uint64_t Revision::next() {
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
 
 glm::mat4 Object::worldFromModelAt(double seconds) const {
     if (spin.degreesPerSecond == 0.0f || seconds == 0.0) return worldFromModel;
@@ -27,6 +33,13 @@ bool finite(const glm::vec3& v) {
 }  // namespace
 
 std::vector<std::string> Scene::validate() const {
+    std::vector<std::string> problems = validateContent();
+    for (std::string& p : validateLightsAndCamera())
+        problems.push_back(std::move(p));
+    return problems;
+}
+
+std::vector<std::string> Scene::validateContent() const {
     std::vector<std::string> problems;
     auto add = [&](const std::string& s) { problems.push_back("scene '" + name + "': " + s); };
     for (size_t m = 0; m < meshes.size(); ++m) {
@@ -95,6 +108,12 @@ std::vector<std::string> Scene::validate() const {
             add(where + " spins about a zero or non-finite axis");
         }
     }
+    return problems;
+}
+
+std::vector<std::string> Scene::validateLightsAndCamera() const {
+    std::vector<std::string> problems;
+    auto add = [&](const std::string& s) { problems.push_back("scene '" + name + "': " + s); };
     for (size_t l = 0; l < lights.size(); ++l) {
         const Light& light = lights[l];
         const std::string where = "lights[" + std::to_string(l) + "] ('" + light.name + "')";

@@ -1,6 +1,7 @@
 // Pure shadow-mapping math (no GL): the light camera of each light, the
-// clip -> texture mapping of S2, and texel sizes for normal offset. Matrices are named
-// bFromA: `lightFromWorld` takes world points into the light camera's view space.
+// clip -> texture mapping (x, y, z from [-1, 1] to [0, 1]), and texel sizes for normal offset.
+// Matrices are named bFromA: `lightFromWorld` takes world points into the light camera's view
+// space.
 #pragma once
 
 #include <vector>

@@ -1,9 +1,10 @@
 // The depth pass stores what the light camera's projection says: for a floor at a known
-// distance under an orthographic light (linear depth) and a perspective light (S12's
-// closed form), and for a caster above the floor.
+// distance under an orthographic light (linear depth) and a perspective light (the
+// perspective depth's closed form), and for a caster above the floor.
 #include <gtest/gtest.h>
 
 #include "GlTest.h"
+#include "render/GpuScene.h"
 #include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
@@ -124,6 +125,7 @@ TEST(Cost, MapsFollowOnlyTheCastersInTheirVolume) {
 
     // Move a plane of the far copy: only light 0's map follows it; light 1 keeps its map.
     s.objects[4].worldFromModel[3] += glm::vec4(0.0f, 0.5f, 0.0f, 0.0f);
+    s.revision.bump();
     sharedRenderer().render(s, o);
     EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 1);
 
@@ -133,8 +135,37 @@ TEST(Cost, MapsFollowOnlyTheCastersInTheirVolume) {
 
     // Move a plane of the near copy: both maps see it, both are redrawn.
     s.objects[1].worldFromModel[3] += glm::vec4(0.1f, 0.0f, 0.0f, 0.0f);
+    s.revision.bump();
     sharedRenderer().render(s, o);
     EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 2);
+}
+
+TEST(Cost, AnUnchangedSceneIsNotReadAgain) {
+    // The GPU copy reads a scene's meshes, textures and objects (hashing every byte) only
+    // for a revision or a time it has not synced.
+    Scene s = builtinScene("tutorial-room");
+    RenderOptions o = s.options;
+    o.width = o.height = 32;
+    sharedRenderer().render(s, o);  // a context is current from here on
+    render::GpuScene gpu;
+    EXPECT_TRUE(gpu.sync(s, 0.0));
+    const std::uint64_t revision = gpu.revision();
+    EXPECT_FALSE(gpu.sync(s, 0.0));
+    // A copy has a new revision: hashed, found the same, nothing uploaded.
+    const Scene copy = s;
+    EXPECT_NE(copy.revision.value(), s.revision.value());
+    EXPECT_FALSE(gpu.sync(copy, 0.0));
+    EXPECT_EQ(gpu.revision(), revision);
+    // An edit announced by a bump is seen.
+    s.objects[0].worldFromModel[3] += glm::vec4(0.5f, 0.0f, 0.0f, 0.0f);
+    s.revision.bump();
+    EXPECT_TRUE(gpu.sync(s, 0.0));
+    EXPECT_GT(gpu.revision(), revision);
+    // So is a vertex moved in place, after a bump.
+    s.meshes[0].positions[0].y += 0.25f;
+    EXPECT_FALSE(gpu.sync(s, 0.0)) << "not announced: the copy keeps what it had";
+    s.revision.bump();
+    EXPECT_TRUE(gpu.sync(s, 0.0));
 }
 
 }  // namespace

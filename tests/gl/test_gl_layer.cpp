@@ -1,4 +1,4 @@
-// The GL layer's promises: framebuffer completeness in words (S5), shader errors naming the
+// The GL layer's promises: framebuffer completeness in words, shader errors naming the
 // .glsl file and line, move-only ownership that deletes exactly once.
 #include <gtest/gtest.h>
 

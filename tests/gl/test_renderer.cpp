@@ -1,5 +1,6 @@
 // Renderer behaviour beyond "shadows are where geometry says": the shadowed-fragment rules
-// of S4, the outside-the-map policies of S9, light switches, and clear errors for bad input.
+// of the Blinn-Phong shading, the outside-the-map policies (lit or clamped), light switches, and
+// clear errors for bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -43,7 +43,7 @@ std::vector<Case> builtinCases() {
     std::vector<Case> cases;
     for (const SceneInfo& info : builtinScenes())
         cases.push_back(builtin(info.name));
-    cases.push_back(builtin("book-triangle", 1.5));  // rotated 60 degrees (S27)
+    cases.push_back(builtin("book-triangle", 1.5));  // rotated 60 degrees (the book's spin)
     return cases;
 }
 
