@@ -10,6 +10,8 @@
 // texel it came from are stored per pixel, one image layer per light.
 // MATERIAL_PATH (textured, masked or blended materials): the base colour texture, masked
 // fragments discarded below their cutoff, blended ones written with their alpha.
+// FLOOR (gnomon bench's reference): the same lights and shadow lookups with one diffuse term
+// per light and nothing else, the least a main pass with these shadows can do.
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 
@@ -139,17 +141,60 @@ float cubeLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
     return cubeVisibility(light, p, n, l);
 }
 
-void main() {
+// The receiver's plane for the lookups. Before any discard: derivatives need the whole 2x2
+// quad. Helper invocations interpolate the same triangle, so the differences span its plane
+// exactly.
+void findReceiverPlane() {
 #if defined(RECEIVER_PLANE) && !defined(SHADOWS_OFF)
-    // Before any discard: derivatives need the whole 2x2 quad. Helper invocations
-    // interpolate the same triangle, so the differences span its plane exactly.
-    {
-        vec3 dx = dFdx(vIn.wsPosition), dy = dFdy(vIn.wsPosition);
-        vec3 n = cross(dx, dy);
-        float len = length(n);
-        gPlaneNormal = len > 1e-6 * length(dx) * length(dy) ? n / len : normalize(vIn.wsNormal);
-    }
+    vec3 dx = dFdx(vIn.wsPosition), dy = dFdy(vIn.wsPosition);
+    vec3 n = cross(dx, dy);
+    float len = length(n);
+    gPlaneNormal = len > 1e-6 * length(dx) * length(dy) ? n / len : normalize(vIn.wsNormal);
 #endif
+}
+
+#ifdef FLOOR
+vec3 floorDiffuse(LightData light, vec3 vsN, out vec3 vsToLight) {
+    int type = int(light.vsPosition.w);
+    vsToLight = type == kDirectional || type == kArea
+                    ? -normalize(light.vsDirection.xyz)
+                    : normalize(light.vsPosition.xyz - vIn.vsPosition);
+    return light.colour.rgb * max(dot(vsN, vsToLight), 0.0);
+}
+
+#define FLOOR_LOOP(first, last, LOOKUP)                                                   \
+    for (int i = first; i < last; ++i) {                                                  \
+        vec3 vsToLight;                                                                   \
+        vec3 diffuse = floorDiffuse(lights[i], vsN, vsToLight);                           \
+        lit += diffuse * LOOKUP(lights[i], vIn.wsPosition, wsN, mat3(uWorldFromView) * vsToLight, \
+                                -vIn.vsPosition.z);                                       \
+    }
+
+void main() {
+    findReceiverPlane();
+    vec3 vsN = normalize(vIn.vsNormal), wsN = normalize(vIn.wsNormal);
+    vec3 lit = uAmbient;
+    vec3 unused;
+#ifdef SHADOWS_OFF
+    for (int i = 0; i < uLightRanges.w; ++i)
+#else
+    for (int i = 0; i < uLightRanges.x; ++i)
+#endif
+        lit += floorDiffuse(lights[i], vsN, unused);
+#ifndef SHADOWS_OFF
+    FLOOR_LOOP(uLightRanges.x, uLightRanges.y, mapLookup)
+#ifdef HAS_CUBES
+    FLOOR_LOOP(uLightRanges.y, uLightRanges.z, cubeLookup)
+#endif
+#ifdef HAS_CASCADES
+    FLOOR_LOOP(uLightRanges.z, uLightRanges.w, cascadeVisibility)
+#endif
+#endif
+    fragColour = vec4(lit * vIn.colour, 1.0);
+}
+#else
+void main() {
+    findReceiverPlane();
     Surface s;
     s.unlit = vIn.material.z > 0.5;
     s.receives = vIn.receives > 0.5;
@@ -201,3 +246,4 @@ void main() {
 #endif
     fragColour = vec4(colour, alpha);
 }
+#endif

@@ -78,7 +78,7 @@ struct PassResult {
 
 struct Run {
     std::string value;  // the swept value ("" without a sweep)
-    Spread frame, shadow, main, shadowsOff, bareDepth;
+    Spread frame, shadow, main, shadowsOff, bareDepth, mainFloor;
     std::vector<PassResult> passes;  // in frame order
     std::uint64_t shadowTriangles = 0, mainTriangles = 0;
     std::size_t shadowBytes = 0;
@@ -138,6 +138,13 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
         if (b >= 0.0) bare.push_back(b);
     }
     run.bareDepth = bare.empty() ? Spread{-1.0, -1.0, -1.0} : spreadOf(bare);
+    // And the main pass's floor: the last frame's geometry and lookups, one diffuse term.
+    std::vector<double> floor;
+    for (int i = 0; i < args.frames; ++i) {
+        const double f = renderer.measureMainFloor();
+        if (f >= 0.0) floor.push_back(f);
+    }
+    run.mainFloor = floor.empty() ? Spread{-1.0, -1.0, -1.0} : spreadOf(floor);
     renderer.setPassTiming(false);
     RenderOptions off = options;
     off.shadow.enabled = false;
@@ -290,6 +297,7 @@ nlohmann::json runJson(const Run& r) {
             {"main_ms", spreadJson(r.main)},
             {"shadows_off_ms", spreadJson(r.shadowsOff)},
             {"bare_depth_ms", spreadJson(r.bareDepth)},
+            {"main_floor_ms", spreadJson(r.mainFloor)},
             {"map_size", r.mapSize},
             {"maps", r.maps},
             {"shadow_map_bytes", r.shadowBytes},
@@ -314,6 +322,11 @@ void printRun(const Run& r) {
         std::printf("%-28s %10.2f %10.2f %10.2f   (all casters, %d^2, no offsets)\n",
                     "  reference: bare depth", r.bareDepth.median, r.bareDepth.p10, r.bareDepth.p90,
                     r.mapSize);
+    }
+    if (r.mainFloor.median > 0.0) {
+        std::printf("%-28s %10.2f %10.2f %10.2f   (main / floor %.2f)\n", "  reference: main floor",
+                    r.mainFloor.median, r.mainFloor.p10, r.mainFloor.p90,
+                    r.main.median / r.mainFloor.median);
     }
     std::printf("shadow maps: %d, %.1f MiB\n", r.maps, double(r.shadowBytes) / (1024.0 * 1024.0));
 }

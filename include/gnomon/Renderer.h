@@ -110,6 +110,11 @@ public:
     // offsets, clamp, per-caster culling or layers): the floor a shadow pass can approach.
     // Milliseconds; -1 without such a light.
     double measureBareDepthPass(int size);
+    // Wall time of the last frame's main pass drawn by the simplest shader with the same
+    // geometry, lights and shadow lookups: one diffuse term per light times its visibility,
+    // nothing else (no textures, specular, falloff or cones). The floor the main pass can
+    // approach; it overwrites the last frame's image. Milliseconds; -1 before a frame.
+    double measureMainFloor();
     // "vendor / renderer / version".
     std::string glInfo() const;
 

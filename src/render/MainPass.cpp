@@ -31,24 +31,25 @@ MainPass::MainPass() {
 }
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
-                                     bool visibilityPass, bool material) {
+                                     bool visibilityPass, bool material, bool floor) {
     // Every choice that selects a variant, packed in one number: looking a program up costs
     // no allocation; the defines are spelled out only to build a new one.
     const ShadowOptions& so = options.shadow;
-    const std::uint64_t key = std::uint64_t(visibilityPass) | std::uint64_t(so.enabled) << 1 |
-                              std::uint64_t(so.outside) << 2 | std::uint64_t(so.filter) << 4 |
-                              std::uint64_t(kernelFilter(so) ? so.pcfSize : 0) << 8 |
-                              std::uint64_t(so.depthFormat) << 16 |
-                              std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
-                              std::uint64_t(in.shadowCubes != nullptr) << 21 |
-                              std::uint64_t(in.hasCascades) << 22 |
-                              std::uint64_t(options.shading.shadowedRule) << 23 |
-                              std::uint64_t(material) << 24 | std::uint64_t(so.receiverPlane) << 25;
+    const std::uint64_t key =
+        std::uint64_t(visibilityPass) | std::uint64_t(so.enabled) << 1 |
+        std::uint64_t(so.outside) << 2 | std::uint64_t(so.filter) << 4 |
+        std::uint64_t(kernelFilter(so) ? so.pcfSize : 0) << 8 |
+        std::uint64_t(so.depthFormat) << 16 |
+        std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
+        std::uint64_t(in.shadowCubes != nullptr) << 21 | std::uint64_t(in.hasCascades) << 22 |
+        std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24 |
+        std::uint64_t(so.receiverPlane) << 25 | std::uint64_t(floor) << 26;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
     if (visibilityPass) defines.push_back("VISIBILITY_PASS");
     if (material) defines.push_back("MATERIAL_PATH");
+    if (floor) defines.push_back("FLOOR");
     const ShadowOptions& s = so;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
     if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
@@ -105,7 +106,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
 }
 
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
-                      const gl::Texture* visibility) {
+                      const gl::Texture* visibility, bool floor) {
     // Lights: upload only when they differ from what the GPU holds.
     const std::vector<GpuLight>& lights = *in.lights;
     const size_t bytes = lights.size() * sizeof(GpuLight);
@@ -185,13 +186,13 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     auto draw = [&](bool visibilityPass) {
         bool culling = false, material = false;
         glDisable(GL_CULL_FACE);
-        use(program(options, in, visibilityPass, false));
+        use(program(options, in, visibilityPass, false, floor));
         GLuint texture = ~0u;
         // Sets the state `item` needs.
         auto setState = [&](const DrawItem& item) {
             if (item.materialPath != material) {
                 material = item.materialPath;
-                use(program(options, in, visibilityPass, material));
+                use(program(options, in, visibilityPass, material && !floor, floor));
             }
             if (material && scene.textureOf(item) != texture) {
                 texture = scene.textureOf(item);

@@ -44,15 +44,17 @@ public:
     MainPass();
     // Draws the frame; with `visibility` (an RG32F array, a layer per scene light), then
     // stores each light's shadow visibility and map texel size for every visible pixel.
+    // `floor`: the same geometry and shadow lookups with one diffuse term per light and
+    // nothing else (no textures, specular or falloff): what `gnomon bench` compares against.
     void render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
-                const gl::Texture* visibility = nullptr);
+                const gl::Texture* visibility = nullptr, bool floor = false);
     // Lights one frame can hold: the uniform block size limit / the record size, at most 256.
     int maxLights() const { return mMaxLights; }
 
 private:
     // `material`: the MATERIAL_PATH variant (textures, masks, blending).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
-                               bool visibilityPass, bool material);
+                               bool visibilityPass, bool material, bool floor);
 
     std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
     int mMaxLights = 0;

@@ -4,6 +4,7 @@
 #include "gnomon/Renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <optional>
 
@@ -54,6 +55,9 @@ struct Renderer::Impl {
     Camera lastCamera;  // the last frame's view and size, for mapUsage()
     int lastWidth = 1, lastHeight = 1;
     std::uint64_t validRevision = 0;  // the last Scene::revision whose content was valid
+    // The last main pass drawn, for measureMainFloor() (lights: plan's records).
+    std::optional<render::MainPassInputs> lastMain;
+    RenderOptions lastMainOptions;
     FrameStats stats;
     bool passTiming = false;
     std::unique_ptr<render::PassClock> clock;  // made when timing is first switched on
@@ -240,6 +244,8 @@ struct Renderer::Impl {
             const bool srgb = options.shading.output == OutputEncoding::Srgb;
             if (srgb) glEnable(GL_FRAMEBUFFER_SRGB);
             mainPass.render(scene, in, options, visibilityTarget);
+            lastMain = in;
+            lastMainOptions = options;
             if (options.debugView == DebugView::LightFrusta) {
                 debugPass.drawFrusta(shadowed, in.clipFromView * viewFromWorld);
             }
@@ -368,6 +374,25 @@ double Renderer::measureBareDepthPass(int size) {
         return mImpl->shadowPass.bareDepthPass(mImpl->scene, sl.frame.clipFromWorld(), size);
     }
     return -1.0;
+}
+
+double Renderer::measureMainFloor() {
+    Impl& m = *mImpl;
+    if (!m.lastMain) return -1.0;
+    m.makeCurrent();
+    const RenderOptions& o = m.lastMainOptions;
+    glBindFramebuffer(GL_FRAMEBUFFER, m.target.id());
+    glViewport(0, 0, o.width, o.height);
+    const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    const float far = 1.0f;
+    glClearNamedFramebufferfv(m.target.id(), GL_COLOR, 0, black);
+    glClearNamedFramebufferfv(m.target.id(), GL_DEPTH, 0, &far);
+    glFinish();  // the clears are not the floor's
+    const auto start = std::chrono::steady_clock::now();
+    m.mainPass.render(m.scene, *m.lastMain, o, nullptr, true);
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
 }
 
 std::string Renderer::glInfo() const {

@@ -67,5 +67,20 @@ TEST(PassTiming, BareDepthPassNeedsASingleFrustumMap) {
     EXPECT_THROW(r.measureBareDepthPass(0), Error);
 }
 
+TEST(PassTiming, MainFloorRedrawsTheLastFrame) {
+    Renderer r;
+    EXPECT_EQ(r.measureMainFloor(), -1.0);   // no frame yet
+    Scene s = builtinScene("mixed-lights");  // every kind of lookup: maps, cubes, cascades
+    RenderOptions o = s.options;
+    o.width = o.height = 48;
+    r.render(s, o);
+    EXPECT_GT(r.measureMainFloor(), 0.0);
+    // The next frame is as it would have been: the floor left no state behind.
+    const Image before = r.render(s, o);
+    r.measureMainFloor();
+    const Image after = r.render(s, o);
+    EXPECT_EQ(before.pixels, after.pixels);
+}
+
 }  // namespace
 }  // namespace gnomon::test
