@@ -1,0 +1,133 @@
+// Scene files that build on others (docs/scene-file.md): includes placed and tuned, paths
+// relative to each file, what gnomon adds when a file leaves it out (sun, camera, ground),
+// and meshes given inline.
+#include <gtest/gtest-spi.h>
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "SceneFileTestUtil.h"
+
+namespace gnomon {
+namespace {
+
+using namespace test;
+
+// ---- Includes
+
+TEST(SceneFile, IncludedSceneIsPlacedAndItsOptionsTuned) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "moved.json";
+    writeText(p, R"({
+        "gnomon-scene": 1,
+        "include": [{"scene": "tutorial-room",
+                     "transform": [{"translate": [0, 0, 5]}, {"rotate": {"axis": [0, 1, 0], "degrees": 90}}]}],
+        "options": {"map-size": 512, "filter": "pcss"}
+    })");
+    const Scene s = loadSceneFile(p.string());
+    const Scene room = builtinScene("tutorial-room");
+    EXPECT_EQ(s.name, "moved");
+    ASSERT_EQ(s.objects.size(), room.objects.size());
+    const glm::mat4 t = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 5)),
+                                    glm::radians(90.0f), glm::vec3(0, 1, 0));
+    for (std::size_t o = 0; o < s.objects.size(); ++o)
+        Compare{false}.mat(s.objects[o].worldFromModel, t * room.objects[o].worldFromModel,
+                           "objects[" + std::to_string(o) + "]");
+    // The room's sun and camera move with it.
+    ASSERT_EQ(s.lights.size(), 1u);
+    Compare{false}.vec(s.lights[0].direction, glm::mat3(t) * room.lights[0].direction, "sun");
+    Compare{false}.vec(s.camera.eye, glm::vec3(t * glm::vec4(room.camera.eye, 1.0f)), "eye");
+    // Options: the room's, with the file's keys over them; its textbook options kept.
+    RenderOptions expected = room.options;
+    expected.shadow.mapSize = 512;
+    expected.shadow.filter = ShadowFilter::Pcss;
+    Compare{true}.options(s.options, expected, "options");
+    Compare{true}.options(*s.textbookOptions, *room.textbookOptions, "textbook");
+}
+
+TEST(SceneFile, FilesIncludeFilesRelativeToTheirFolder) {
+    ScopedTempDir dir;
+    fs::create_directories(dir.path() / "parts");
+    writeText(dir.path() / "parts" / "crate.json", R"({
+        "gnomon-scene": 1,
+        "materials": {"wood": {"colour": [0.6, 0.4, 0.2]}},
+        "objects": [{"name": "crate", "shape": "box", "size": 1, "material": "wood"}],
+        "lights": [{"type": "directional", "direction": [0, -2, 0]}]
+    })");
+    writeText(dir.path() / "yard.json", R"({
+        "gnomon-scene": 1,
+        "include": [{"scene": "parts/crate.json"},
+                    {"scene": "parts/crate.json", "transform": {"translate": [3, 0, 0], "scale": 2}}],
+        "objects": [{"name": "ground", "shape": "quad",
+                     "corners": [[-5, -0.5, 5], [5, -0.5, 5], [5, -0.5, -5], [-5, -0.5, -5]]}],
+        "camera": {"eye": [0, 5, 10]}
+    })");
+    const Scene s = loadSceneFile((dir.path() / "yard.json").string());
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(s.meshes.size(), 3u);
+    EXPECT_EQ(s.materials.size(), 3u);  // wood twice, and the default for the ground
+    EXPECT_EQ(s.materials[s.objects[2].material].name, "default");
+    Compare{false}.vec(glm::vec3(s.objects[1].worldFromModelAt(0) * glm::vec4(0.5f, 0.5f, 0.5f, 1)),
+                       {4.0f, 1.0f, 1.0f}, "scaled crate corner");
+    // Lights of both includes (the directions normalized), the file's camera.
+    ASSERT_EQ(s.lights.size(), 2u);
+    Compare{false}.vec(s.lights[1].direction, {0, -1, 0}, "direction");
+    Compare{false}.vec(s.camera.eye, {0, 5, 10}, "eye");
+}
+
+TEST(SceneFile, WithoutLightsOrCameraASunAndAFramingCameraAreAdded) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "bare.json";
+    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": [2, 1, 2]}]})");
+    const Scene s = loadSceneFile(p.string());
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Directional);
+    ASSERT_EQ(s.warnings.size(), 2u);
+    EXPECT_GT(glm::length(s.camera.eye - s.camera.centre), 1.0f);
+    // An explicit empty list means no lights, and nothing is said.
+    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": 1}], "lights": [],
+                     "camera": {"eye": [0, 0, 4]}})");
+    const Scene dark = loadSceneFile(p.string());
+    EXPECT_TRUE(dark.lights.empty());
+    EXPECT_TRUE(dark.warnings.empty());
+}
+
+TEST(SceneFile, GroundAddsAReceiverThatDoesNotMoveTheCamera) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "ground.json";
+    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": [2, 1, 2]}]})");
+    const Scene bare = loadSceneFile(p.string());
+    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": [2, 1, 2]}],
+                     "ground": true})");
+    const Scene grounded = loadSceneFile(p.string());
+    ASSERT_EQ(grounded.objects.size(), bare.objects.size() + 1);
+    EXPECT_FALSE(grounded.objects.back().castsShadows);
+    EXPECT_EQ(grounded.camera.eye, bare.camera.eye);
+    EXPECT_LT(grounded.meshes[grounded.objects.back().mesh].positions[0].y, -0.5f);
+}
+
+TEST(SceneFile, MeshShapeWithFlatListsAndGeneratedNormals) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "mesh.json";
+    writeText(p, R"({
+        "gnomon-scene": 1,
+        /* a square from two triangles, counter-clockwise seen from +z */
+        "objects": [{"name": "square", "shape": "mesh",
+                     "positions": [0, 0, 0,  1, 0, 0,  1, 1, 0,  0, 1, 0],
+                     "indices": [0, 1, 2, 0, 2, 3], "colours": [0.5, 0.25, 1],
+                     "casts-shadows": false, "receives-shadows": false}],
+        "lights": [], "camera": {"eye": [0, 0, 3]}
+    })");
+    const Scene s = loadSceneFile(p.string());
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const Mesh& m = s.meshes[0];
+    EXPECT_EQ(m.positions.size(), 4u);
+    EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+    for (const glm::vec3& n : m.normals)
+        Compare{false}.vec(n, {0, 0, 1}, "normal");
+    Compare{false}.vecs(m.colours, std::vector<glm::vec3>(4, {0.5f, 0.25f, 1.0f}), "colours");
+    EXPECT_FALSE(s.objects[0].castsShadows);
+    EXPECT_FALSE(s.objects[0].receivesShadows);
+}
+
+}  // namespace
+}  // namespace gnomon
