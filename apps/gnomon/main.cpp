@@ -1,12 +1,16 @@
 // gnomon: the command-line tool. Subcommands: `scenes` lists the built-in scenes, `render`
 // draws one frame to a PNG (and optionally each light's shadow map), `score` measures its
 // shadows against a ray-traced reference, `bench` times each pass (and sweeps a parameter),
-// `view` opens the interactive viewer (a window; docs/viewer.md). Exit
-// codes: 0 success, 1 failure (I/O, OpenGL), 2 bad usage or input, 3 score above --max-error.
+// `view` opens the interactive viewer (a window; docs/viewer.md). Exit codes: 0 success,
+// 1 failure (writing output, OpenGL), 2 bad usage or input (a missing or broken input file
+// too), 3 score above --max-error.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "BenchCommand.h"
 #include "RenderOptionsCli.h"
@@ -102,11 +106,55 @@ int runRender(const RenderArgs& args, bool verbose) {
     return 0;
 }
 
+// Edits between two words (insertions, deletions, substitutions): how near a mistyped
+// command is to a real one.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// The first word that is not a flag must be a command: when it is not, one line naming the
+// nearest command (global flags take no values, so the first word is the command).
+bool unknownCommand(int argc, char** argv, const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands({}))
+        names.push_back(sub->get_name());
+    for (int i = 1; i < argc; ++i) {
+        const std::string word = argv[i];
+        if (word.empty() || word[0] == '-') continue;
+        if (std::find(names.begin(), names.end(), word) != names.end()) return false;
+        std::string nearest = names.front(), list;
+        for (const std::string& n : names) {
+            if (editDistance(word, n) < editDistance(word, nearest)) nearest = n;
+            list += (list.empty() ? "" : ", ") + n;
+        }
+        std::fprintf(stderr,
+                     "gnomon: error: unknown command '%s'; did you mean '%s'? (commands: %s)\n",
+                     word.c_str(), nearest.c_str(), list.c_str());
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"gnomon: real-time shadows you can measure (OpenGL 4.5 core, headless)"};
     app.require_subcommand(1);
+    // Global flags are accepted after the command too (`gnomon render --verbose ...`): a
+    // command passes what it does not know to gnomon itself.
+    app.fallthrough();
     bool verbose = false;
     app.add_flag("-v,--verbose", verbose,
                  "print OpenGL vendor/renderer/version and what was written");
@@ -140,14 +188,21 @@ int main(int argc, char** argv) {
     gnomon::cli::ViewArgs viewArgs;
     CLI::App* viewCmd = gnomon::cli::addViewCommand(app, viewArgs);
 
+    if (unknownCommand(argc, argv, app)) return 2;
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
+        // One line, prefixed as every other error, and where help is.
+        std::fprintf(stderr, "gnomon: error: %s (see gnomon%s --help)\n", e.what(),
+                     app.get_subcommands().empty()
+                         ? ""
+                         : (" " + app.get_subcommands().front()->get_name()).c_str());
         return 2;
     }
     try {

@@ -9,8 +9,8 @@
 namespace gnomon {
 
 enum class ErrorKind {
-    InvalidInput,  // bad options, unknown scene, malformed file
-    Io,            // a file could not be read or written
+    InvalidInput,  // bad options, unknown scene, missing or malformed input file
+    Io,            // an existing file could not be read, or output not written
     Gl,            // no usable OpenGL, a shader or framebuffer failed
 };
 

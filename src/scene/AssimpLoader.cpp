@@ -90,7 +90,7 @@ private:
 void checkFile(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
-        throw Error(ErrorKind::Io, "cannot load scene '" + path + "': no such file");
+        throw Error(ErrorKind::InvalidInput, "cannot load scene '" + path + "': no such file");
     }
     if (fs::file_size(path, ec) > kMaxFileBytes) {
         throw Error(ErrorKind::InvalidInput, path + ": larger than 2 GiB");

@@ -18,8 +18,9 @@ Scene loadScene(const std::string& nameOrPath) {
         nameOrPath.find('/') != std::string::npos || nameOrPath.find('.') != std::string::npos;
     if (looksLikePath || fs::exists(nameOrPath, ec)) {
         if (!fs::exists(nameOrPath, ec)) {
-            throw Error(ErrorKind::Io, "cannot load scene '" + nameOrPath +
-                                           "': no such file (and no built-in scene by that name)");
+            throw Error(ErrorKind::InvalidInput,
+                        "cannot load scene '" + nameOrPath +
+                            "': no such file (and no built-in scene by that name)");
         }
         std::string ext = fs::path(nameOrPath).extension().string();
         for (char& c : ext)

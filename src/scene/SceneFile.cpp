@@ -54,7 +54,7 @@ Scene parseText(const std::string& text, const std::string& path, LoadState& sta
 std::string readFileText(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
-        throw Error(ErrorKind::Io, "cannot read scene file '" + path + "': no such file");
+        throw Error(ErrorKind::InvalidInput, "cannot read scene file '" + path + "': no such file");
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) throw Error(ErrorKind::Io, "cannot read scene file '" + path + "': " + ec.message());
     if (size > kMaxFileBytes) {

