@@ -1,9 +1,11 @@
-// Command-line flags for RenderOptions: one flag per option, each with its one-line doc and
-// the library's default. Flags the user did not give keep the scene's authored value.
+// Command-line flags for RenderOptions, made from the option schema (gnomon/OptionSchema.h):
+// one flag per option in its help group, with its doc, range and the library's default.
+// Flags the user did not give keep the scene's authored value.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include "gnomon/Options.h"
@@ -18,13 +20,9 @@ inline void printWarnings(const Scene& scene) {
 }
 
 struct RenderFlags {
-    std::string preset, debugView, size, shadows, receiverPlane, outside, cull, filter, shadowed,
-        depthFormat, mapFilter, blendShadows, outputEncoding, cascades, fitTo;
-    int lightOnly = -1, mapSize = 0, pcfSize = 3;
-    double time = 0.0;
-    float cascadeLambda = 0, cascadeBlend = 0, lightRadius = 0, lightAngle = 0;
-    float biasConstant = 0, biasDepthAware = 0, biasSlope = 0, biasUnits = 0, normalOffset = 0,
-          shadowFactor = 0;
+    std::string preset;
+    // One text per option of the schema (gnomon/OptionSchema.h), by name: what was given.
+    std::map<std::string, std::string> values;
     bool ground = false;
     CLI::App* app = nullptr;
 

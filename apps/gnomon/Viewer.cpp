@@ -231,8 +231,8 @@ namespace gnomon::cli {
 CLI::App* addViewCommand(CLI::App& app, ViewArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "view",
-        "open the interactive viewer: the camera's view beside a light's shadow map, "
-        "every option on a control (GLFW window; docs/viewer.md)");
+        "open the viewer: the view beside a light's shadow map, every option on a control "
+        "(docs/viewer.md)");
     cmd->add_option("--scene", args.scene,
                     "built-in scene name, scene file (.json), glTF or other model file "
                     "(default tutorial-room)");

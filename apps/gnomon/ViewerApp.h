@@ -72,6 +72,7 @@ private:
 
     void controls(float width, float height);
     void flagTip(const char* flag);
+    bool option(const char* name);
     void changed(bool c);
     void guarded(const std::function<void()>& action);
     void sceneControls();

@@ -29,6 +29,15 @@ void Viewer::flagTip(const char* flag) {
     if (ImGui::IsItemHovered()) tooltip(mDocs(flag));
 }
 
+// The widget of the render option `name`, its range the schema's, with its flag's doc.
+bool Viewer::option(const char* name) {
+    const OptionSpec* spec = findOption(name);
+    if (!spec) return false;
+    const bool c = optionWidget(*spec, mState.options);
+    flagTip(("--" + std::string(name)).c_str());
+    return c;
+}
+
 void Viewer::changed(bool c) {
     if (c) ++mState.revision;
 }
@@ -205,8 +214,7 @@ void Viewer::optionControls() {
     RenderOptions& o = mState.options;
     ShadowOptions& s = o.shadow;
     if (ImGui::CollapsingHeader("Shadow map", ImGuiTreeNodeFlags_DefaultOpen)) {
-        changed(ImGui::Checkbox("shadows", &s.enabled));
-        flagTip("--shadows");
+        changed(option("shadows"));
         bool override = s.mapSize > 0;
         if (ImGui::Checkbox("##override", &override)) {
             s.mapSize = override ? 1024 : 0;
@@ -226,70 +234,36 @@ void Viewer::optionControls() {
             ImGui::TextDisabled("map-size: each light's own");
         }
         flagTip("--map-size");
-        changed(
-            enumCombo("depth-format", s.depthFormat,
-                      {DepthFormat::R8, DepthFormat::Rgba8Packed256, DepthFormat::Rgba8Packed255,
-                       DepthFormat::Depth16, DepthFormat::Depth24, DepthFormat::Depth32F}));
-        flagTip("--depth-format");
-        changed(enumCombo("map-filter", s.mapFilter, {MapFilter::Nearest, MapFilter::Linear}));
-        flagTip("--map-filter");
-        changed(enumCombo("outside", s.outside, {OutsidePolicy::Lit, OutsidePolicy::Clamp}));
-        flagTip("--outside");
+        changed(option("depth-format"));
+        changed(option("map-filter"));
+        changed(option("outside"));
     }
     if (ImGui::CollapsingHeader("Tolerances", ImGuiTreeNodeFlags_DefaultOpen)) {
-        changed(ImGui::DragFloat("bias-constant", &s.biasConstant, 0.0001f, 0.0f, 0.5f, "%.5f"));
-        flagTip("--bias-constant");
-        changed(ImGui::DragFloat("bias-depth-aware", &s.biasDepthAware, 0.05f, 0.0f, 100.0f));
-        flagTip("--bias-depth-aware");
-        changed(ImGui::DragFloat("bias-slope", &s.biasSlope, 0.05f, 0.0f, 100.0f));
-        flagTip("--bias-slope");
-        changed(ImGui::DragFloat("bias-units", &s.biasUnits, 0.1f, 0.0f, 10000.0f));
-        flagTip("--bias-units");
-        changed(ImGui::Checkbox("receiver-plane", &s.receiverPlane));
-        flagTip("--receiver-plane");
-        changed(ImGui::DragFloat("normal-offset", &s.normalOffset, 0.05f, 0.0f, 100.0f));
-        flagTip("--normal-offset");
-        changed(enumCombo("cull", s.cull, {CullMode::Back, CullMode::Front, CullMode::None}));
-        flagTip("--cull");
+        changed(option("bias-constant"));
+        changed(option("bias-depth-aware"));
+        changed(option("bias-slope"));
+        changed(option("bias-units"));
+        changed(option("receiver-plane"));
+        changed(option("normal-offset"));
+        changed(option("cull"));
     }
     if (ImGui::CollapsingHeader("Filter", ImGuiTreeNodeFlags_DefaultOpen)) {
-        changed(enumCombo("filter", s.filter,
-                          {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf,
-                           ShadowFilter::Poisson, ShadowFilter::Pcss}));
-        flagTip("--filter");
-        int half = (s.pcfSize - 1) / 2;
-        if (ImGui::SliderInt("pcf-size", &half, 0, 4, std::to_string(2 * half + 1).c_str())) {
-            s.pcfSize = 2 * half + 1;
-            changed(true);
-        }
-        flagTip("--pcf-size");
-        changed(ImGui::DragFloat("light-radius", &s.lightRadius, 0.01f, 0.0f, 100.0f));
-        flagTip("--light-radius");
-        changed(ImGui::SliderFloat("light-angle", &s.lightAngle, 0.0f, 20.0f, "%.2f deg"));
-        flagTip("--light-angle");
-        changed(enumCombo("blend-shadows", s.blendShadows,
-                          {BlendShadows::Opaque, BlendShadows::None, BlendShadows::Dithered}));
-        flagTip("--blend-shadows");
+        changed(option("filter"));
+        changed(option("pcf-size"));
+        changed(option("light-radius"));
+        changed(option("light-angle"));
+        changed(option("blend-shadows"));
     }
     if (ImGui::CollapsingHeader("Cascades")) {
-        changed(ImGui::SliderInt("cascades", &s.cascades, 0, 4, s.cascades == 0 ? "auto" : "%d"));
-        flagTip("--cascades");
-        changed(enumCombo("fit-to", s.fitTo, {FitTo::ViewDepth, FitTo::Boxes}));
-        flagTip("--fit-to");
-        changed(ImGui::SliderFloat("cascade-lambda", &s.cascadeLambda, 0.0f, 1.0f));
-        flagTip("--cascade-lambda");
-        changed(ImGui::SliderFloat("cascade-blend", &s.cascadeBlend, 0.0f, 0.5f));
-        flagTip("--cascade-blend");
+        changed(option("cascades"));
+        changed(option("fit-to"));
+        changed(option("cascade-lambda"));
+        changed(option("cascade-blend"));
     }
     if (ImGui::CollapsingHeader("Shading")) {
-        changed(enumCombo("shadowed", o.shading.shadowedRule,
-                          {ShadowedRule::AmbientOnly, ShadowedRule::Factor}));
-        flagTip("--shadowed");
-        changed(ImGui::SliderFloat("shadow-factor", &o.shading.shadowFactor, 0.0f, 1.0f));
-        flagTip("--shadow-factor");
-        changed(enumCombo("output-encoding", o.shading.output,
-                          {OutputEncoding::Linear, OutputEncoding::Srgb}));
-        flagTip("--output-encoding");
+        changed(option("shadowed"));
+        changed(option("shadow-factor"));
+        changed(option("output-encoding"));
         changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
         tooltip("the scene's ambient light colour, times each material's colour");
         ImGui::TextDisabled("shininess: per material, from the scene");
@@ -319,10 +293,7 @@ void Viewer::animationControls() {
             changed(true);
         }
         flagTip("--light-only");
-        changed(enumCombo(
-            "debug-view", o.debugView,
-            {DebugView::None, DebugView::Cascades, DebugView::ShadowMap, DebugView::LightFrusta}));
-        flagTip("--debug-view");
+        changed(option("debug-view"));
         changed(ImGui::Checkbox("light frusta (F)", &mState.frusta));
         tooltip("draw every shadow camera's volume as lines over the camera's view");
         bool side = mState.side == view::SideView::ShadowMap;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "BenchCommand.h"
+#include "HelpFormatter.h"
 #include "RenderOptionsCli.h"
 #include "ScoreCommand.h"
 #include "Viewer.h"
@@ -27,6 +28,35 @@ int runScenes(bool namesOnly) {
         } else {
             std::printf("%-20s %s\n", s.name.c_str(), s.description.c_str());
         }
+    }
+    return 0;
+}
+
+// Every render option with its range and default (from the schema); --markdown: the docs'
+// tables as README.md and docs/scene-file.md hold them.
+int runOptions(const std::string& markdown) {
+    if (markdown == "flags" || markdown == "scene-file") {
+        std::fputs(gnomon::optionTableMarkdown(markdown == "flags" ? gnomon::OptionTable::Flags
+                                                                   : gnomon::OptionTable::SceneFile)
+                       .c_str(),
+                   stdout);
+        return 0;
+    }
+    if (!markdown.empty()) {
+        throw gnomon::Error(gnomon::ErrorKind::InvalidInput,
+                            "--markdown: expected flags or scene-file, got '" + markdown + "'");
+    }
+    const gnomon::RenderOptions defaults;
+    std::string group;
+    for (const gnomon::OptionSpec& spec : gnomon::optionSchema()) {
+        if (group != spec.group) {
+            group = spec.group;
+            std::printf("%s%s:\n", group == gnomon::optionSchema().front().group ? "" : "\n",
+                        group.c_str());
+        }
+        std::printf(
+            "  %-18s %-28s default %s\n", spec.name, gnomon::optionRange(spec).c_str(),
+            *spec.defaultNote ? spec.defaultNote : gnomon::formatOption(spec, defaults).c_str());
     }
     return 0;
 }
@@ -155,6 +185,7 @@ int main(int argc, char** argv) {
     // Global flags are accepted after the command too (`gnomon render --verbose ...`): a
     // command passes what it does not know to gnomon itself.
     app.fallthrough();
+    app.formatter(std::make_shared<gnomon::cli::HelpFormatter>());
     bool verbose = false;
     app.add_flag("-v,--verbose", verbose,
                  "print OpenGL vendor/renderer/version and what was written");
@@ -163,6 +194,13 @@ int main(int argc, char** argv) {
     bool namesOnly = false;
     CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes");
     scenes->add_flag("--names", namesOnly, "names only, one per line");
+
+    std::string markdown;
+    CLI::App* optionsCmd = app.add_subcommand(
+        "options", "list every render option with its range and default (flags, scene-file keys)");
+    optionsCmd->add_option("--markdown", markdown,
+                           "print the docs' table instead: flags (README.md) or scene-file "
+                           "(docs/scene-file.md)");
 
     RenderArgs render;
     CLI::App* renderCmd = app.add_subcommand("render", "render one frame to a PNG file");
@@ -207,6 +245,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (*scenes) return runScenes(namesOnly);
+        if (*optionsCmd) return runOptions(markdown);
         if (*renderCmd) return runRender(render, verbose);
         if (*scoreCmd) return gnomon::cli::runScore(scoreArgs, verbose);
         if (*benchCmd) return gnomon::cli::runBench(benchArgs, verbose);

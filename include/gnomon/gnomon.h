@@ -3,6 +3,7 @@
 
 #include "gnomon/Error.h"
 #include "gnomon/Image.h"
+#include "gnomon/OptionSchema.h"
 #include "gnomon/Options.h"
 #include "gnomon/Renderer.h"
 #include "gnomon/Scene.h"

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <string>
 
+#include "gnomon/OptionSchema.h"
 #include "gnomon/Options.h"
 
 namespace gnomon {
@@ -62,10 +63,6 @@ const std::pair<const char*, FitTo> kFitTo[] = {{"view-depth", FitTo::ViewDepth}
 
 const std::pair<const char*, OutputEncoding> kOutputs[] = {{"linear", OutputEncoding::Linear},
                                                            {"srgb", OutputEncoding::Srgb}};
-
-bool finite(float v) {
-    return std::isfinite(v);
-}
 
 }  // namespace
 
@@ -141,44 +138,11 @@ bool isColourFormat(DepthFormat v) {
 }
 
 std::vector<std::string> RenderOptions::validate() const {
+    // Every range is the schema's (include/gnomon/OptionSchema.h).
     std::vector<std::string> problems;
-    auto need = [&](bool ok, const std::string& what) {
-        if (!ok) problems.push_back(what);
-    };
-    need(width >= 1 && width <= 16384 && height >= 1 && height <= 16384,
-         "size " + std::to_string(width) + "x" + std::to_string(height) +
-             " is outside 1x1..16384x16384");
-    need(std::isfinite(time), "time must be a finite number of seconds");
-    need(lightOnly >= -1, "light-only must be a light index >= 0 (or -1 for all)");
-    const ShadowOptions& s = shadow;
-    need(finite(s.biasConstant) && s.biasConstant >= 0.0f && s.biasConstant < 1.0f,
-         "bias-constant must be in [0, 1) (stored-depth units), got " +
-             std::to_string(s.biasConstant));
-    need(finite(s.biasDepthAware) && s.biasDepthAware >= 0.0f && s.biasDepthAware <= 1000.0f,
-         "bias-depth-aware must be in [0, 1000] steps, got " + std::to_string(s.biasDepthAware));
-    need(s.cascades >= 0 && s.cascades <= 4,
-         "cascades must be auto (0) or in 1..4, got " + std::to_string(s.cascades));
-    need(finite(s.cascadeLambda) && s.cascadeLambda >= 0.0f && s.cascadeLambda <= 1.0f,
-         "cascade-lambda must be in [0, 1], got " + std::to_string(s.cascadeLambda));
-    need(finite(s.cascadeBlend) && s.cascadeBlend >= 0.0f && s.cascadeBlend <= 0.5f,
-         "cascade-blend must be in [0, 0.5], got " + std::to_string(s.cascadeBlend));
-    need(finite(s.biasSlope) && s.biasSlope >= 0.0f && s.biasSlope <= 100.0f,
-         "bias-slope must be in [0, 100], got " + std::to_string(s.biasSlope));
-    need(finite(s.biasUnits) && s.biasUnits >= 0.0f && s.biasUnits <= 1.0e6f,
-         "bias-units must be in [0, 1e6], got " + std::to_string(s.biasUnits));
-    need(finite(s.normalOffset) && s.normalOffset >= 0.0f && s.normalOffset <= 100.0f,
-         "normal-offset must be in [0, 100] texels, got " + std::to_string(s.normalOffset));
-    need(s.pcfSize >= 1 && s.pcfSize <= 9 && s.pcfSize % 2 == 1,
-         "pcf-size must be odd and in 1..9, got " + std::to_string(s.pcfSize));
-    need(s.mapSize == 0 || (s.mapSize >= 64 && s.mapSize <= 8192),
-         "map-size must be 0 (each light's own) or in 64..8192, got " + std::to_string(s.mapSize));
-    need(finite(s.lightRadius) && s.lightRadius >= 0.0f && s.lightRadius <= 1.0e4f,
-         "light-radius must be in [0, 1e4] world units, got " + std::to_string(s.lightRadius));
-    need(finite(s.lightAngle) && s.lightAngle >= 0.0f && s.lightAngle <= 20.0f,
-         "light-angle must be in [0, 20] degrees, got " + std::to_string(s.lightAngle));
-    need(finite(shading.shadowFactor) && shading.shadowFactor >= 0.0f &&
-             shading.shadowFactor <= 1.0f,
-         "shadow-factor must be in [0, 1], got " + std::to_string(shading.shadowFactor));
+    for (const OptionSpec& spec : optionSchema()) {
+        if (std::string p = checkOption(spec, *this); !p.empty()) problems.push_back(std::move(p));
+    }
     return problems;
 }
 

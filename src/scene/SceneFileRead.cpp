@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "gnomon/OptionSchema.h"
 #include "scene/MeshBuilder.h"
 
 namespace gnomon::scenefile {
@@ -116,37 +117,19 @@ void readProjectionNumbers(const Fields& f, Projection& projection, float& fovy,
     f.get("top", top);
 }
 
+// The option keys: the schema's names, and "width" and "height" beside "size".
 const std::vector<std::string>& optionKeys() {
-    static const std::vector<std::string> k = {"size",
-                                               "width",
-                                               "height",
-                                               "time",
-                                               "light-only",
-                                               "shadows",
-                                               "outside",
-                                               "map-size",
-                                               "bias-constant",
-                                               "bias-depth-aware",
-                                               "bias-slope",
-                                               "bias-units",
-                                               "normal-offset",
-                                               "receiver-plane",
-                                               "cull",
-                                               "filter",
-                                               "pcf-size",
-                                               "light-radius",
-                                               "light-angle",
-                                               "cascades",
-                                               "cascade-lambda",
-                                               "cascade-blend",
-                                               "debug-view",
-                                               "depth-format",
-                                               "map-filter",
-                                               "blend-shadows",
-                                               "shadowed",
-                                               "shadow-factor",
-                                               "output-encoding",
-                                               "fit-to"};
+    static const std::vector<std::string> k = [] {
+        std::vector<std::string> keys;
+        for (const OptionSpec& spec : optionSchema()) {
+            keys.push_back(spec.name);
+            if (spec.kind == OptionKind::Size) {
+                keys.push_back("width");
+                keys.push_back("height");
+            }
+        }
+        return keys;
+    }();
     return k;
 }
 
@@ -350,58 +333,49 @@ Camera readCamera(const Reader& r, const Json& j, const std::string& path) {
     return c;
 }
 
+// One option of the schema from its JSON value: switches as true/false, numbers as numbers
+// (integers whole; a named 0 such as "auto" as that string), choices and the size as strings.
+void readOption(const Reader& r, const OptionSpec& spec, const Json& v, const std::string& at,
+                RenderOptions& o) {
+    switch (spec.kind) {
+        case OptionKind::Switch:
+            spec.set(o, r.boolean(v, at) ? 1.0 : 0.0);
+            return;
+        case OptionKind::Real:
+            spec.set(o, r.number(v, at));  // validate() refuses what the option cannot hold
+            return;
+        case OptionKind::Integer:
+            if (v.is_string() && *spec.zeroName) {
+                if (v.get<std::string>() != spec.zeroName)
+                    r.fail(at, "expected \"" + std::string(spec.zeroName) + "\" or a number, got " +
+                                   preview(v));
+                spec.set(o, 0.0);
+                return;
+            }
+            spec.set(o, double(r.integer(v, at, std::numeric_limits<int>::min(),
+                                         std::numeric_limits<int>::max())));
+            return;
+        case OptionKind::Choice:
+        case OptionKind::Size:
+            if (!v.is_string() || parseOption(spec, v.get<std::string>(), o)) {
+                r.fail(at, spec.kind == OptionKind::Size
+                               ? "expected \"WIDTHxHEIGHT\" such as \"512x512\", got " + preview(v)
+                               : "expected one of " + joined(spec.choices) + ", got " + preview(v));
+            }
+            return;
+    }
+}
+
 // The keys given in `j` applied over `o`; RenderOptions::validate()'s sentences as errors.
 void applyOptions(const Reader& r, const Json& j, const std::string& path, RenderOptions& o) {
     const Fields f(r, j, path, optionKeys());
-    if (const Json* s = f.find("size")) {
-        if (f.has("width") || f.has("height"))
-            r.fail(path, "give \"size\" or \"width\" and \"height\", not both");
-        static const std::regex kSize(R"((\d{1,5})x(\d{1,5}))");
-        const std::string text = r.string(*s, f.at("size"));
-        std::smatch m;
-        if (!std::regex_match(text, m, kSize))
-            r.fail(f.at("size"),
-                   "expected \"WIDTHxHEIGHT\" such as \"512x512\", got " + preview(*s));
-        o.width = std::stoi(m[1].str());
-        o.height = std::stoi(m[2].str());
+    if (f.has("size") && (f.has("width") || f.has("height")))
+        r.fail(path, "give \"size\" or \"width\" and \"height\", not both");
+    for (const OptionSpec& spec : optionSchema()) {
+        if (const Json* v = f.find(spec.name)) readOption(r, spec, *v, f.at(spec.name), o);
     }
     f.get("width", o.width, 1, 16384);
     f.get("height", o.height, 1, 16384);
-    f.get("time", o.time);
-    f.get("light-only", o.lightOnly, -1, std::numeric_limits<int>::max());
-    f.get("shadows", o.shadow.enabled);
-    ShadowOptions& s = o.shadow;
-    f.get("outside", s.outside, optionNames<OutsidePolicy>());
-    f.get("map-size", s.mapSize, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
-    f.get("bias-constant", s.biasConstant);
-    f.get("bias-depth-aware", s.biasDepthAware);
-    f.get("bias-slope", s.biasSlope);
-    f.get("bias-units", s.biasUnits);
-    f.get("normal-offset", s.normalOffset);
-    f.get("receiver-plane", s.receiverPlane);
-    f.get("cull", s.cull, optionNames<CullMode>());
-    f.get("filter", s.filter, optionNames<ShadowFilter>());
-    f.get("pcf-size", s.pcfSize, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
-    f.get("light-radius", s.lightRadius);
-    f.get("light-angle", s.lightAngle);
-    if (const Json* c = f.find("cascades"); c && c->is_string()) {
-        if (r.string(*c, f.at("cascades")) != "auto")
-            r.fail(f.at("cascades"), "expected \"auto\" or a count 1..4, got " + preview(*c));
-        s.cascades = 0;
-    } else {
-        f.get("cascades", s.cascades, std::numeric_limits<int>::min(),
-              std::numeric_limits<int>::max());
-    }
-    f.get("fit-to", s.fitTo, optionNames<FitTo>());
-    f.get("cascade-lambda", s.cascadeLambda);
-    f.get("cascade-blend", s.cascadeBlend);
-    f.get("debug-view", o.debugView, optionNames<DebugView>());
-    f.get("depth-format", s.depthFormat, optionNames<DepthFormat>());
-    f.get("map-filter", s.mapFilter, optionNames<MapFilter>());
-    f.get("blend-shadows", s.blendShadows, optionNames<BlendShadows>());
-    f.get("shadowed", o.shading.shadowedRule, optionNames<ShadowedRule>());
-    f.get("shadow-factor", o.shading.shadowFactor);
-    f.get("output-encoding", o.shading.output, optionNames<OutputEncoding>());
     if (const auto problems = o.validate(); !problems.empty()) r.fail(path, joined(problems, "; "));
 }
 

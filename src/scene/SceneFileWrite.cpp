@@ -9,6 +9,7 @@
 
 #include "gnomon/Error.h"
 #include "gnomon/Image.h"
+#include "gnomon/OptionSchema.h"
 #include "scene/SceneFileJson.h"
 
 namespace gnomon::scenefile {
@@ -78,41 +79,33 @@ OJson cameraJson(const Camera& c) {
     return j;
 }
 
+// Every option of the schema, as readOption reads it back.
 OJson optionsJson(const RenderOptions& o) {
-    const ShadowOptions& s = o.shadow;
     OJson j;
-    j["size"] = std::to_string(o.width) + "x" + std::to_string(o.height);
-    j["time"] = o.time;
-    j["light-only"] = o.lightOnly;
-    j["shadows"] = s.enabled;
-    j["outside"] = toString(s.outside);
-    j["map-size"] = s.mapSize;
-    j["bias-constant"] = number(s.biasConstant);
-    j["bias-depth-aware"] = number(s.biasDepthAware);
-    j["bias-slope"] = number(s.biasSlope);
-    j["bias-units"] = number(s.biasUnits);
-    j["normal-offset"] = number(s.normalOffset);
-    j["receiver-plane"] = s.receiverPlane;
-    j["cull"] = toString(s.cull);
-    j["filter"] = toString(s.filter);
-    j["pcf-size"] = s.pcfSize;
-    j["light-radius"] = number(s.lightRadius);
-    j["light-angle"] = number(s.lightAngle);
-    if (s.cascades == 0) {
-        j["cascades"] = "auto";
-    } else {
-        j["cascades"] = s.cascades;
+    for (const OptionSpec& spec : optionSchema()) {
+        switch (spec.kind) {
+            case OptionKind::Switch:
+                j[spec.name] = spec.get(o) != 0.0;
+                break;
+            case OptionKind::Real: {
+                // Floats as their shortest text; a double (time) as it is.
+                const double v = spec.get(o);
+                j[spec.name] = double(float(v)) == v ? number(float(v)) : OJson(v);
+                break;
+            }
+            case OptionKind::Integer:
+                if (spec.get(o) == 0.0 && *spec.zeroName) {
+                    j[spec.name] = spec.zeroName;
+                } else {
+                    j[spec.name] = (long long)spec.get(o);
+                }
+                break;
+            case OptionKind::Choice:
+            case OptionKind::Size:
+                j[spec.name] = formatOption(spec, o);
+                break;
+        }
     }
-    j["fit-to"] = toString(s.fitTo);
-    j["cascade-lambda"] = number(s.cascadeLambda);
-    j["cascade-blend"] = number(s.cascadeBlend);
-    j["debug-view"] = toString(o.debugView);
-    j["depth-format"] = toString(s.depthFormat);
-    j["map-filter"] = toString(s.mapFilter);
-    j["blend-shadows"] = toString(s.blendShadows);
-    j["shadowed"] = toString(o.shading.shadowedRule);
-    j["shadow-factor"] = number(o.shading.shadowFactor);
-    j["output-encoding"] = toString(o.shading.output);
     return j;
 }
 

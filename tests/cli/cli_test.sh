@@ -161,7 +161,7 @@ cascades)
     skip_without_gl
     expect 0 "light 0 cascade 3: 2048² map, the view uses"
     run render --scene tutorial-room --cascades 5 --size 64x64 --out "$work/c5.png"
-    expect 2 "--cascades: expected auto or 1..4, got '5'"
+    expect 2 "cascades must be auto (0) or in 1..4, got 5"
     [[ ! -e "$work/c5.png" ]] || fail "a refused render left c5.png behind"
     run render --scene tutorial-room --fit-to nowhere --size 64x64 --out "$work/c.png"
     expect 2 "--fit-to: expected one of view-depth, boxes, got 'nowhere'"
@@ -183,6 +183,28 @@ help)
         grep -qF -- "$flag" "$work/stdout" || fail "help lacks $flag"
     done
     grep -qF -- "default" "$work/stdout" || fail "help shows no defaults"
+    for cmd in "" render score bench view scenes options; do
+        wide=$("$gnomon" $cmd --help | awk 'length > 100')
+        [[ -z $wide ]] || fail "gnomon $cmd --help has lines over 100 columns: $wide"
+    done
+    grep -q "^Tolerances:" "$work/stdout" || fail "help is not grouped"
+    ;;
+option_tables)
+    # The docs' option tables are the schema's: README.md and docs/scene-file.md hold
+    # exactly what `gnomon options --markdown` prints between their markers.
+    root=$(cd "$(dirname "$0")/../.." && pwd)
+    for pair in "flags:README.md" "scene-file:docs/scene-file.md"; do
+        kind=${pair%%:*}; doc=$root/${pair#*:}
+        "$gnomon" options --markdown "$kind" >"$work/$kind.md" || fail "gnomon options --markdown $kind"
+        sed -n "/<!-- options:$kind -->/,/<!-- options:end -->/p" "$doc" | sed '1d;$d' >"$work/$kind.doc"
+        [[ -s $work/$kind.doc ]] || fail "$doc has no <!-- options:$kind --> table"
+        diff -u "$work/$kind.doc" "$work/$kind.md" >"$work/$kind.diff" ||
+            fail "$doc's option table differs from the schema (update it with gnomon options --markdown $kind): $(cat "$work/$kind.diff")"
+    done
+    # And the text listing names every option.
+    run options
+    expect 0 "bias-constant"
+    expect 0 "cascades"
     ;;
 usage)
     # A mistyped command: the nearest one named, exit 2.

@@ -42,7 +42,7 @@ TEST(SceneFile, BrokenFilesInTheCorpusAreRefusedWithThePath) {
         {"missing_include.json",
          {"missing_include.json: include[0].scene: no such file", "nothing-here.gltf"}},
         {"bad_option.json",
-         {"bad_option.json: options: map-size must be 0 (each light's own) or in 64..8192, got "
+         {"bad_option.json: options: map-size must be 0 or in 64..8192, got "
           "10"}},
         {"duplicate_key.json", {"duplicate_key.json: options: duplicate key \"filter\""}},
     };
@@ -85,7 +85,7 @@ TEST(SceneFile, MoreMistakesAreRefusedWithThePath) {
         {R"({"gnomon-scene": 1, "camera": {"projection": "fisheye"}})",
          "bad.json: camera.projection: expected one of perspective, orthographic, got \"fisheye\""},
         {R"({"gnomon-scene": 1, "options": {"cascades": "many"}})",
-         "bad.json: options.cascades: expected \"auto\" or a count 1..4, got \"many\""},
+         "bad.json: options.cascades: expected \"auto\" or a number, got \"many\""},
         {R"({"gnomon-scene": 1, "options": {"cascades": 5}})",
          "bad.json: options: cascades must be auto (0) or in 1..4, got 5"},
         {R"({"gnomon-scene": 1, "options": {"fit-to": "sky"}})",
