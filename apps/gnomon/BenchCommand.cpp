@@ -331,21 +331,9 @@ void printRun(const Run& r) {
     std::printf("shadow maps: %d, %.1f MiB\n", r.maps, double(r.shadowBytes) / (1024.0 * 1024.0));
 }
 
-}  // namespace
-
-int runBench(const BenchArgs& args, bool verbose) {
-    if (args.frames < 1 || args.frames > 10000) {
-        throw Error(ErrorKind::InvalidInput,
-                    "--frames must be in 1..10000, got " + std::to_string(args.frames));
-    }
-    if (args.warmup < 0 || args.warmup > 1000) {
-        throw Error(ErrorKind::InvalidInput,
-                    "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
-    }
-    Scene base = loadScene(args.scene);
-    printWarnings(base);
-    args.flags.editScene(base);
-    const RenderOptions baseOptions = args.flags.resolve(base);
+// The values --sweep runs over: --values, else the parameter's defaults (none without
+// --sweep).
+std::vector<std::string> sweepValues(const BenchArgs& args) {
     std::vector<std::string> values;
     if (!args.sweep.empty()) {
         if (defaultValues(args.sweep).empty()) {
@@ -363,6 +351,77 @@ int runBench(const BenchArgs& args, bool verbose) {
     } else if (!args.values.empty()) {
         throw Error(ErrorKind::InvalidInput, "--values needs --sweep");
     }
+    return values;
+}
+
+// A sweep's results: a table on stdout, and bench.json, sweep.csv and sweep.svg.
+void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
+                const RenderOptions& baseOptions, const BenchArgs& args, nlohmann::json& out) {
+    out["sweep"] = args.sweep;
+    out["runs"] = nlohmann::json::array();
+    std::string csv =
+        "value,frame_ms,frame_p10,frame_p90,shadow_ms,main_ms,shadows_off_ms,bare_depth_ms,"
+        "maps,map_size,shadow_map_bytes,shadow_triangles,main_triangles\n";
+    Plot plot;
+    plot.title = "gnomon bench: " + sceneName + ", sweep of " + args.sweep + " (" +
+                 std::to_string(baseOptions.width) + "x" + std::to_string(baseOptions.height) +
+                 ", median of " + std::to_string(args.frames) + " frames)";
+    const bool logAxis =
+        args.sweep == "lights" || args.sweep == "map-size" || args.sweep == "triangles";
+    plot.xLabel = args.sweep == "triangles" ? "triangles per original triangle (totals in the CSV)"
+                                            : args.sweep;
+    plot.yLabel = "milliseconds";
+    plot.series = {{"frame", {}},
+                   {"shadow passes", {}},
+                   {"main pass", {}},
+                   {"shadows off (reference)", {}},
+                   {"bare depth draw, 1 map (reference)", {}}};
+    std::printf("%-10s %10s %10s %10s %10s %12s %12s\n", args.sweep.c_str(), "frame ms",
+                "shadow ms", "main ms", "off ms", "bare ms", "shadow MiB");
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const Run& r = runs[i];
+        out["runs"].push_back(runJson(r));
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%zu,%llu,%llu\n",
+                      r.value.c_str(), r.frame.median, r.frame.p10, r.frame.p90, r.shadow.median,
+                      r.main.median, r.shadowsOff.median, r.bareDepth.median, r.maps, r.mapSize,
+                      r.shadowBytes, (unsigned long long)r.shadowTriangles,
+                      (unsigned long long)r.mainTriangles);
+        csv += line;
+        std::printf("%-10s %10.2f %10.2f %10.2f %10.2f %12.2f %12.1f\n", r.value.c_str(),
+                    r.frame.median, r.shadow.median, r.main.median, r.shadowsOff.median,
+                    r.bareDepth.median, double(r.shadowBytes) / (1024.0 * 1024.0));
+        plot.xTicks.push_back(r.value);
+        plot.x.push_back(logAxis ? std::log2(std::max(1.0, std::stod(r.value))) : double(i));
+        plot.series[0].y.push_back(r.frame.median);
+        plot.series[1].y.push_back(r.shadow.median);
+        plot.series[2].y.push_back(r.main.median);
+        plot.series[3].y.push_back(r.shadowsOff.median);
+        plot.series[4].y.push_back(r.bareDepth.median);
+    }
+    writeTextFile(args.outDir + "/bench.json", out.dump(2) + "\n");
+    writeTextFile(args.outDir + "/sweep.csv", csv);
+    writeTextFile(args.outDir + "/sweep.svg", toSvg(plot));
+    std::printf("wrote %s/bench.json, sweep.csv, sweep.svg\n", args.outDir.c_str());
+}
+
+}  // namespace
+
+int runBench(const BenchArgs& args, bool verbose) {
+    if (args.frames < 1 || args.frames > 10000) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--frames must be in 1..10000, got " + std::to_string(args.frames));
+    }
+    if (args.warmup < 0 || args.warmup > 1000) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
+    }
+    Scene base = loadScene(args.scene);
+    printWarnings(base);
+    args.flags.editScene(base);
+    const RenderOptions baseOptions = args.flags.resolve(base);
+    const std::vector<std::string> values = sweepValues(args);
     std::error_code ec;
     std::filesystem::create_directories(args.outDir, ec);
     if (ec) {
@@ -411,53 +470,7 @@ int runBench(const BenchArgs& args, bool verbose) {
                      run.shadow.median, run.main.median);
         runs.push_back(std::move(run));
     }
-    out["sweep"] = args.sweep;
-    out["runs"] = nlohmann::json::array();
-    std::string csv =
-        "value,frame_ms,frame_p10,frame_p90,shadow_ms,main_ms,shadows_off_ms,bare_depth_ms,"
-        "maps,map_size,shadow_map_bytes,shadow_triangles,main_triangles\n";
-    Plot plot;
-    plot.title = "gnomon bench: " + base.name + ", sweep of " + args.sweep + " (" +
-                 std::to_string(baseOptions.width) + "x" + std::to_string(baseOptions.height) +
-                 ", median of " + std::to_string(args.frames) + " frames)";
-    const bool logAxis =
-        args.sweep == "lights" || args.sweep == "map-size" || args.sweep == "triangles";
-    plot.xLabel = args.sweep == "triangles" ? "triangles per original triangle (totals in the CSV)"
-                                            : args.sweep;
-    plot.yLabel = "milliseconds";
-    plot.series = {{"frame", {}},
-                   {"shadow passes", {}},
-                   {"main pass", {}},
-                   {"shadows off (reference)", {}},
-                   {"bare depth draw, 1 map (reference)", {}}};
-    std::printf("%-10s %10s %10s %10s %10s %12s %12s\n", args.sweep.c_str(), "frame ms",
-                "shadow ms", "main ms", "off ms", "bare ms", "shadow MiB");
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        const Run& r = runs[i];
-        out["runs"].push_back(runJson(r));
-        char line[512];
-        std::snprintf(line, sizeof line,
-                      "%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%zu,%llu,%llu\n",
-                      r.value.c_str(), r.frame.median, r.frame.p10, r.frame.p90, r.shadow.median,
-                      r.main.median, r.shadowsOff.median, r.bareDepth.median, r.maps, r.mapSize,
-                      r.shadowBytes, (unsigned long long)r.shadowTriangles,
-                      (unsigned long long)r.mainTriangles);
-        csv += line;
-        std::printf("%-10s %10.2f %10.2f %10.2f %10.2f %12.2f %12.1f\n", r.value.c_str(),
-                    r.frame.median, r.shadow.median, r.main.median, r.shadowsOff.median,
-                    r.bareDepth.median, double(r.shadowBytes) / (1024.0 * 1024.0));
-        plot.xTicks.push_back(r.value);
-        plot.x.push_back(logAxis ? std::log2(std::max(1.0, std::stod(r.value))) : double(i));
-        plot.series[0].y.push_back(r.frame.median);
-        plot.series[1].y.push_back(r.shadow.median);
-        plot.series[2].y.push_back(r.main.median);
-        plot.series[3].y.push_back(r.shadowsOff.median);
-        plot.series[4].y.push_back(r.bareDepth.median);
-    }
-    writeTextFile(args.outDir + "/bench.json", out.dump(2) + "\n");
-    writeTextFile(args.outDir + "/sweep.csv", csv);
-    writeTextFile(args.outDir + "/sweep.svg", toSvg(plot));
-    std::printf("wrote %s/bench.json, sweep.csv, sweep.svg\n", args.outDir.c_str());
+    writeSweep(runs, base.name, baseOptions, args, out);
     return 0;
 }
 

@@ -182,6 +182,26 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         return std::make_tuple(int(a.alphaMode), a.texture, a.doubleSided) <
                std::make_tuple(int(b.alphaMode), b.texture, b.doubleSided);
     });
+    if (uploadDrawCommands()) changed = true;
+    if (dataChanged) {
+        if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
+            mObjects = gl::Buffer("scene objects", n * sizeof(GpaObject), mObjectData.data(),
+                                  GL_DYNAMIC_STORAGE_BIT);
+        } else {
+            mObjects.update(0, n * sizeof(GpaObject), mObjectData.data());
+        }
+        changed = true;
+    }
+    if (changed) ++mRevision;
+    mSyncedRevision = scene.revision.value();
+    mSyncedSeconds = seconds;
+    return changed;
+}
+
+// The object-index attribute (sized to the objects) and the draw commands in item order,
+// for 1 and for 6 instances; true when the commands changed (and were uploaded).
+bool GpuScene::uploadDrawCommands() {
+    const std::size_t n = mItems.size();
     // Object indices, read as an instanced attribute: instance i of a draw with base
     // instance b reads entry b + i / divisor.
     if (!mObjectIds || mObjectIds.size() != std::max<std::size_t>(n, 1) * sizeof(GLuint)) {
@@ -214,21 +234,9 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
         mCommands =
             gl::Buffer("draw commands", std::max<std::size_t>(n, 1) * 2 * sizeof(DrawCommand),
                        n ? mCommandData.data() : nullptr, 0);
-        changed = true;
+        return true;
     }
-    if (dataChanged) {
-        if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
-            mObjects = gl::Buffer("scene objects", n * sizeof(GpaObject), mObjectData.data(),
-                                  GL_DYNAMIC_STORAGE_BIT);
-        } else {
-            mObjects.update(0, n * sizeof(GpaObject), mObjectData.data());
-        }
-        changed = true;
-    }
-    if (changed) ++mRevision;
-    mSyncedRevision = scene.revision.value();
-    mSyncedSeconds = seconds;
-    return changed;
+    return false;
 }
 
 void GpuScene::bind() const {

@@ -81,6 +81,7 @@ public:
 private:
     void uploadGeometry(const Scene& scene);
     void uploadTextures(const Scene& scene);
+    bool uploadDrawCommands();
 
     std::uint64_t mGeometryHash = 0, mTextureHash = 0;
     bool mHaveTextures = false;

@@ -96,6 +96,58 @@ float lightStrength(const Light& l, const glm::vec3& p, const glm::vec3& n) {
     return l.intensity * falloff * std::max(glm::dot(n, toLight), 0.0f);
 }
 
+// The state of light `i` at the surface point p (normal n, facing the camera) of the hit
+// triangle: 0 = the shadow cannot change this pixel or it is lit, 1 = shadowed where the
+// light is strong, 2 = undecidable (weakly lit and occluded, or at the map border).
+int lightState(const World& world, const Scene& scene, const LightModel& lm, size_t i,
+               const Hit& hit, const glm::vec3& p, const glm::vec3& n) {
+    const int object = world.triangles[size_t(hit.triangle)].object;
+    // What the light adds to this pixel (0..1 per channel, averaged): the most a shadow
+    // can take away. Unlit materials lose a fixed factor wherever a shadow falls.
+    const Material& mat = scene.materials[scene.objects[size_t(object)].material];
+    const glm::vec3& lc = scene.lights[i].colour;
+    const float strength =
+        !lm.on      ? 0.0f
+        : mat.unlit ? 1.0f
+                    : lightStrength(scene.lights[i], p, n) * (lc.r + lc.g + lc.b) / 3.0f *
+                          (mat.baseColour.r + mat.baseColour.g + mat.baseColour.b) / 3.0f;
+    if (!lm.shadowed || strength <= 0.0f || !scene.objects[size_t(object)].receivesShadows) {
+        return 0;
+    }
+    if (lm.frame.kind == shadow::FrameKind::Cube) {
+        // All directions are in the map; depth clamp keeps even the nearest casters.
+        const glm::vec3 toLight = lm.eye - p;
+        const float dist = glm::length(toLight);
+        const bool occluded = world.occluded(p, toLight / dist, 1e-4f, dist - 1e-4f, hit.triangle);
+        return !occluded ? 0 : strength >= kVisible ? 1 : 2;
+    }
+    // Inside the light camera's volume? Outside, the map says nothing (lit).
+    const glm::vec4 clip = lm.frame.clipFromWorld() * glm::vec4(p, 1.0f);
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    // Texel borders are in x and y; depth beyond far is simply outside (lit).
+    const float edge = std::max(std::abs(ndc.x), std::abs(ndc.y));
+    if (clip.w <= 0.0f || edge > 1.02f || std::abs(ndc.z) > 1.0f) {
+        return 0;
+    }
+    if (edge > 0.98f) {
+        return 2;
+    }
+    glm::vec3 dir;
+    float tMax;
+    const float depth = glm::dot(p - lm.eye, lm.axis);  // along the light's axis
+    if (lm.frame.orthographic) {
+        dir = -lm.axis;
+        tMax = depth - lm.frame.near;
+    } else {
+        dir = glm::normalize(lm.eye - p);
+        // Occluders closer to the light than its near plane are not in the map.
+        const float cosine = std::max(glm::dot(-dir, lm.axis), 1e-3f);
+        tMax = (depth - lm.frame.near) / cosine;
+    }
+    const bool occluded = world.occluded(p, dir, 1e-4f, tMax, hit.triangle);
+    return !occluded ? 0 : strength >= kVisible ? 1 : 2;
+}
+
 }  // namespace
 
 int GeometryShadows::count(PixelClass c) const {
@@ -156,61 +208,8 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
         const glm::vec3 p = o + d * hit->t;
         glm::vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
         if (glm::dot(n, d) > 0.0f) n = -n;  // the side the camera sees
-        // Per light: 0 = the shadow cannot change this pixel or it is lit, 1 = shadowed where
-        // the light is strong, 2 = undecidable (weakly lit and occluded, or at the map border).
-        for (size_t i = 0; i < lights.size(); ++i) {
-            const LightModel& lm = lights[i];
-            // What the light adds to this pixel (0..1 per channel, averaged): the most a shadow
-            // can take away. Unlit materials lose a fixed factor wherever a shadow falls.
-            const Material& mat = scene.materials[scene.objects[size_t(tri.object)].material];
-            const glm::vec3& lc = scene.lights[i].colour;
-            const float strength =
-                !lm.on      ? 0.0f
-                : mat.unlit ? 1.0f
-                            : lightStrength(scene.lights[i], p, n) * (lc.r + lc.g + lc.b) / 3.0f *
-                                  (mat.baseColour.r + mat.baseColour.g + mat.baseColour.b) / 3.0f;
-            if (!lm.shadowed || strength <= 0.0f ||
-                !scene.objects[size_t(tri.object)].receivesShadows) {
-                s.state.push_back(0);
-                continue;
-            }
-            if (lm.frame.kind == shadow::FrameKind::Cube) {
-                // All directions are in the map; depth clamp keeps even the nearest casters.
-                const glm::vec3 toLight = lm.eye - p;
-                const float dist = glm::length(toLight);
-                const bool occluded =
-                    world.occluded(p, toLight / dist, 1e-4f, dist - 1e-4f, hit->triangle);
-                s.state.push_back(!occluded ? 0 : strength >= kVisible ? 1 : 2);
-                continue;
-            }
-            // Inside the light camera's volume? Outside, the map says nothing (lit).
-            const glm::vec4 clip = lm.frame.clipFromWorld() * glm::vec4(p, 1.0f);
-            const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-            // Texel borders are in x and y; depth beyond far is simply outside (lit).
-            const float edge = std::max(std::abs(ndc.x), std::abs(ndc.y));
-            if (clip.w <= 0.0f || edge > 1.02f || std::abs(ndc.z) > 1.0f) {
-                s.state.push_back(0);
-                continue;
-            }
-            if (edge > 0.98f) {
-                s.state.push_back(2);
-                continue;
-            }
-            glm::vec3 dir;
-            float tMax;
-            const float depth = glm::dot(p - lm.eye, lm.axis);  // along the light's axis
-            if (lm.frame.orthographic) {
-                dir = -lm.axis;
-                tMax = depth - lm.frame.near;
-            } else {
-                dir = glm::normalize(lm.eye - p);
-                // Occluders closer to the light than its near plane are not in the map.
-                const float cosine = std::max(glm::dot(-dir, lm.axis), 1e-3f);
-                tMax = (depth - lm.frame.near) / cosine;
-            }
-            const bool occluded = world.occluded(p, dir, 1e-4f, tMax, hit->triangle);
-            s.state.push_back(!occluded ? 0 : strength >= kVisible ? 1 : 2);
-        }
+        for (size_t i = 0; i < lights.size(); ++i)
+            s.state.push_back(lightState(world, scene, lights[i], i, *hit, p, n));
         return s;
     };
 
