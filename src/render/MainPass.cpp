@@ -105,10 +105,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         .first->second;
 }
 
-void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
-                      const gl::Texture* visibility, bool floor) {
-    // Lights: upload only when they differ from what the GPU holds.
-    const std::vector<GpuLight>& lights = *in.lights;
+// Lights: uploaded only when they differ from what the GPU holds.
+void MainPass::uploadLights(const std::vector<GpuLight>& lights) {
     const size_t bytes = lights.size() * sizeof(GpuLight);
     if (lights.size() != mUploaded.size() ||
         (bytes > 0 && std::memcmp(lights.data(), mUploaded.data(), bytes) != 0)) {
@@ -116,16 +114,19 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         mUploaded = lights;
     }
     glBindBufferBase(GL_UNIFORM_BUFFER, 1, mLights.id());
+}
 
+// The maps and their samplers on units 0 (2D) and 1 (cubes), and on 2 and 3 without
+// comparison when the lookups read stored depth; true in that case.
+bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
     // Hardware comparison with NEAREST is one texel; LINEAR gives the 2x2 bilinear PCF.
-    const ShadowOptions& so = options.shadow;
     const bool hand = handCompare(so);
     const GLint compareFilter = so.filter == ShadowFilter::None ? GL_NEAREST : GL_LINEAR;
     const GLint mapFilter = !hand                               ? compareFilter
                             : so.mapFilter == MapFilter::Linear ? GL_LINEAR
                                                                 : GL_NEAREST;
-    auto makeSampler = [](gl::Sampler& sampler, std::string& key, const std::string& want,
-                          const char* label, GLint filter, bool compare) {
+    auto makeSampler = [](gl::Sampler& sampler, int& key, int want, const char* label, GLint filter,
+                          bool compare) {
         if (sampler && key == want) return;
         sampler = gl::Sampler(label);
         sampler.set(GL_TEXTURE_MIN_FILTER, filter)
@@ -136,11 +137,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
             .set(GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
         key = want;
     };
-    makeSampler(mMapSampler, mMapSamplerKey,
-                std::to_string(mapFilter) + (hand ? "hand" : "compare"), "shadow map sampler",
+    makeSampler(mMapSampler, mMapSamplerKey, mapFilter * 2 + (hand ? 1 : 0), "shadow map sampler",
                 mapFilter, !hand);
-    makeSampler(mCubeSampler, mCubeSamplerKey, std::to_string(compareFilter), "shadow cube sampler",
-                compareFilter, true);
+    makeSampler(mCubeSampler, mCubeSamplerKey, compareFilter, "shadow cube sampler", compareFilter,
+                true);
     if (!in.shadowMaps && !mDummyMaps) {
         mDummyMaps = gl::Texture::array2D("no shadow maps", GL_DEPTH_COMPONENT32F, 1, 1, 1);
     }
@@ -161,6 +161,13 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glBindSampler(2, mRawSampler.id());
         glBindSampler(3, mRawSampler.id());
     }
+    return rawDepths;
+}
+
+void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
+                      const gl::Texture* visibility, bool floor) {
+    uploadLights(*in.lights);
+    const bool rawDepths = bindMaps(in, options.shadow);
 
     const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
     // Spacing of stored depths per kind of map; -1 asks the shader for a float ulp.

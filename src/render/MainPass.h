@@ -55,6 +55,8 @@ private:
     // `material`: the MATERIAL_PATH variant (textures, masks, blending).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
                                bool visibilityPass, bool material, bool floor);
+    void uploadLights(const std::vector<GpuLight>& lights);
+    bool bindMaps(const MainPassInputs& in, const ShadowOptions& so);
 
     std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
     int mMaxLights = 0;
@@ -64,7 +66,7 @@ private:
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;
     gl::Sampler mRawSampler;  // PCSS blocker search: stored depth, NEAREST, no comparison
-    std::string mMapSamplerKey, mCubeSamplerKey;
+    int mMapSamplerKey = -1, mCubeSamplerKey = -1;          // the filters they were made for
     gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame
 };

@@ -132,8 +132,8 @@ struct Renderer::Impl {
         }
     }
 
-    // The frame in `target`, not read back.
-    void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
+    // Bad input stops here, in words: the options, the scene, what the driver can hold.
+    void check(const Scene& s, const RenderOptions& options) {
         if (auto problems = options.validate(); !problems.empty()) invalid(problems);
         // The content check reads every vertex: only for a revision not yet found valid.
         if (s.revision.value() != validRevision) {
@@ -152,6 +152,11 @@ struct Renderer::Impl {
                                                      ": scene '" + s.name + "' has " +
                                                      std::to_string(s.lights.size()) + " lights");
         }
+    }
+
+    // The frame in `target`, not read back.
+    void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
+        check(s, options);
         makeCurrent();
         scene.sync(s, options.time);
 

@@ -258,9 +258,9 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
         .count();
 }
 
-ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
-                                   const ShadowOptions& options, PassClock* clock,
-                                   std::vector<PassTiming>* timings) {
+// Sizes the arrays for `lights`' maps and gives each its layer (and, for 2D maps, its
+// square in the layer).
+void ShadowPass::layOut(std::vector<ShadowedLight>& lights, const ShadowOptions& options) {
     int size2D = 0, sizeCube = 0, countCube = 0;
     mSizes.clear();
     for (ShadowedLight& l : lights) {
@@ -290,11 +290,66 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
                           mCubes.layers() != 6 * countCube || mCubes.format() != cubeFormat)) {
         allocateCubes(sizeCube, countCube, format);
     }
+}
+
+// Clears `light`'s map and draws its casters into it through `m` (a cube's six faces).
+void ShadowPass::drawMap(const GpuScene& scene, const ShadowedLight& light,
+                         const ShadowOptions& options, const std::array<glm::mat4, 6>& m) {
+    const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+    const DepthFormat format = options.depthFormat;
+    const float one = 1.0f;
+    if (!cube) {
+        const bool colour = isColourFormat(format);
+        const int variant = !colour                                 ? kPlain
+                            : format == DepthFormat::R8             ? kColour
+                            : format == DepthFormat::Rgba8Packed256 ? kColour + 1
+                                                                    : kColour + 2;
+        const GLuint fb = mFramebuffers[size_t(light.layer)].id();
+        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        // Clear this map's square only (clears ignore the viewport but not the scissor):
+        // the other maps of the layer stay. Lookups never leave the square, so no stale
+        // depth is read. Encoded depth clears to all ones, which every packing decodes as
+        // >= 1 (far).
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
+        glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &one);
+        if (colour) {
+            const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+            glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
+        }
+        glDisable(GL_SCISSOR_TEST);
+        drawCasters(scene, options, variant, 1,
+                    [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]); });
+    } else {
+        // Only this light's six faces are cleared; other cubes keep their maps.
+        glClearTexSubImage(mCubes.id(), 0, 0, 0, 6 * light.layer, mCubes.width(), mCubes.height(),
+                           6, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+        if (mLayered) {
+            glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());
+            drawCasters(scene, options, kCube, 6, [&] {
+                glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
+                glUniform1i(7, 6 * light.layer);
+            });
+        } else {
+            for (int face = 0; face < 6; ++face) {
+                glBindFramebuffer(GL_FRAMEBUFFER,
+                                  mCubeFaceFramebuffers[size_t(6 * light.layer + face)].id());
+                drawCasters(scene, options, kPlain, 1,
+                            [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[size_t(face)][0][0]); });
+            }
+        }
+    }
+}
+
+ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
+                                   const ShadowOptions& options, PassClock* clock,
+                                   std::vector<PassTiming>* timings) {
+    layOut(lights, options);
+    const DepthFormat format = options.depthFormat;
 
     ShadowPassStats stats;
     mCulled = 0;
     bool any = false;
-    const float one = 1.0f;
     std::size_t index2D = 0;
     for (const ShadowedLight& light : lights) {
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
@@ -326,49 +381,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         }
         setDepthState(options, light.depthClamp);
         glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
-        const std::array<glm::mat4, 6>& m = have.clipFromWorld;
-        if (!cube) {
-            const bool colour = isColourFormat(format);
-            const int variant = !colour                                 ? kPlain
-                                : format == DepthFormat::R8             ? kColour
-                                : format == DepthFormat::Rgba8Packed256 ? kColour + 1
-                                                                        : kColour + 2;
-            const GLuint fb = mFramebuffers[size_t(light.layer)].id();
-            glBindFramebuffer(GL_FRAMEBUFFER, fb);
-            // Clear this map's square only (clears ignore the viewport but not the scissor):
-            // the other maps of the layer stay. Lookups never leave the square, so no stale
-            // depth is read. Encoded depth clears to all ones, which every packing decodes as
-            // >= 1 (far).
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
-            glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &one);
-            if (colour) {
-                const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-                glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
-            }
-            glDisable(GL_SCISSOR_TEST);
-            drawCasters(scene, options, variant, 1,
-                        [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]); });
-        } else {
-            // Only this light's six faces are cleared; other cubes keep their maps.
-            glClearTexSubImage(mCubes.id(), 0, 0, 0, 6 * light.layer, mCubes.width(),
-                               mCubes.height(), 6, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
-            if (mLayered) {
-                glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());
-                drawCasters(scene, options, kCube, 6, [&] {
-                    glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
-                    glUniform1i(7, 6 * light.layer);
-                });
-            } else {
-                for (int face = 0; face < 6; ++face) {
-                    glBindFramebuffer(GL_FRAMEBUFFER,
-                                      mCubeFaceFramebuffers[size_t(6 * light.layer + face)].id());
-                    drawCasters(scene, options, kPlain, 1, [&] {
-                        glUniformMatrix4fv(1, 1, GL_FALSE, &m[size_t(face)][0][0]);
-                    });
-                }
-            }
-        }
+        drawMap(scene, light, options, have.clipFromWorld);
         ++stats.rendered;
         std::uint64_t triangles = 0;
         for (std::uint32_t index : mVisible) {

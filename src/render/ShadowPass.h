@@ -70,6 +70,9 @@ public:
     Image16 readBack(const ShadowedLight& light) const;
 
 private:
+    void layOut(std::vector<ShadowedLight>& lights, const ShadowOptions& options);
+    void drawMap(const GpuScene& scene, const ShadowedLight& light, const ShadowOptions& options,
+                 const std::array<glm::mat4, 6>& m);
     struct LayerState {
         std::array<glm::mat4, 6> clipFromWorld{};  // one (2D map) or six (cube) used
         int mapSize = 0;

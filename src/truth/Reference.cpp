@@ -219,18 +219,52 @@ float transmitted(RTCScene scene, BlendShadows blend, const glm::vec3& origin, c
     return ray.tfar < 0.0f ? 0.0f : context.transmission;  // Embree sets tfar to -inf on a hit
 }
 
-}  // namespace
+// Runs `row(y)` for rows 0..height-1 on the threads `o` asks for (0: every core), each
+// taking the next row; stops taking rows once `o.cancel` is set, counts rows in `o.rowsDone`.
+template <typename Row>
+void forEachRow(int height, const ReferenceOptions& o, const Row& row) {
+    const int threads =
+        o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
+    std::atomic<int> nextRow{0};
+    auto worker = [&] {
+        for (int y = nextRow++; y < height; y = nextRow++) {
+            if (o.cancel && o.cancel->load()) return;
+            row(y);
+            if (o.rowsDone) ++*o.rowsDone;
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i)
+        pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool)
+        t.join();
+}
 
-Reference traceReference(const Scene& scene, const RenderOptions& options,
-                         const ReferenceOptions& referenceOptions) {
-    if (auto problems = scene.validate(); !problems.empty()) {
-        throw Error(ErrorKind::InvalidInput, "ground truth: " + problems.front());
-    }
+// A reference with nothing hit yet: every cell lit.
+Reference emptyReference(int width, int height, int lights, int samples) {
+    Reference ref;
+    ref.width = width;
+    ref.height = height;
+    ref.lights = lights;
+    const std::size_t pixels = std::size_t(ref.width) * std::size_t(ref.height);
+    const std::size_t cells = pixels * std::size_t(ref.lights);
+    ref.object.assign(pixels, -1);
+    ref.pixelWorld.assign(pixels, 0.0f);
+    ref.applies.assign(cells, 0);
+    ref.hard.assign(cells, 1.0f);
+    ref.lightCosine.assign(cells, 1.0f);
+    if (samples > 0) ref.soft.assign(cells, 1.0f);
+    return ref;
+}
+
+// Every object's positions in world space at `seconds`, and the scene's size.
+World buildWorld(const Scene& scene, double seconds) {
     World world;
     Aabb bounds;
     for (const Object& obj : scene.objects) {
         const Mesh& mesh = scene.meshes[obj.mesh];
-        const glm::mat4 m = obj.worldFromModelAt(options.time);
+        const glm::mat4 m = obj.worldFromModelAt(seconds);
         std::vector<glm::vec3> p(mesh.positions.size());
         for (std::size_t i = 0; i < p.size(); ++i) {
             p[i] = glm::vec3(m * glm::vec4(mesh.positions[i], 1.0f));
@@ -240,6 +274,100 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
         world.meshes.push_back(&mesh);
     }
     world.scale = bounds.empty() ? 1.0f : std::max(bounds.radius(), 1e-6f);
+    return world;
+}
+
+// Each shadowing light's visibility at one surface point, into the reference's cells.
+struct LightTracer {
+    const Scene& scene;
+    Reference& ref;
+    RTCScene casters;
+    BlendShadows blend;
+    int samples;     // soft-shadow rays per light (0: hard shadows only)
+    float tanAngle;  // directional lights' angular radius, as a tangent
+    float radius;    // other lights' emitter radius
+    const std::vector<bool>& on;
+
+    // `point` seen at `pixel` (normal n, facing the camera), rays leaving from `origin`;
+    // `turn` rotates the soft-shadow disc per pixel.
+    void trace(std::size_t pixel, const Material& mat, const glm::vec3& point,
+               const glm::vec3& origin, const glm::vec3& n, float turn) const {
+        for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+            if (!on[l]) continue;
+            const Light& light = scene.lights[l];
+            const glm::vec3 ld = glm::length(light.direction) > 0.0f
+                                     ? glm::normalize(light.direction)
+                                     : glm::vec3(0, -1, 0);
+            glm::vec3 toLight;
+            float distance = std::numeric_limits<float>::infinity();
+            switch (light.type) {
+                case LightType::Directional:
+                    toLight = -ld;
+                    break;
+                case LightType::Area: {
+                    toLight = -ld;
+                    distance = glm::dot(point - light.position, ld);
+                    if (!(distance > 0.0f)) continue;  // behind the light's plane
+                    break;
+                }
+                case LightType::Spot:
+                case LightType::Point: {
+                    const glm::vec3 d = light.position - origin;
+                    distance = glm::length(d);
+                    if (!(distance > 0.0f)) continue;
+                    if (light.range > 0.0f && distance >= light.range) continue;  // unlit
+                    toLight = d / distance;
+                    if (light.type == LightType::Spot &&
+                        !(glm::dot(-toLight, ld) >
+                          std::cos(glm::radians(light.outerConeDegrees)))) {
+                        continue;  // outside the cone: no light to shadow
+                    }
+                    break;
+                }
+            }
+            if (!mat.unlit && !(glm::dot(n, toLight) > 0.0f)) continue;  // faces away
+            const std::size_t cell = pixel * std::size_t(ref.lights) + l;
+            ref.applies[cell] = 1;
+            ref.lightCosine[cell] = mat.unlit ? 1.0f : glm::dot(n, toLight);
+            ref.hard[cell] = transmitted(casters, blend, origin, toLight, distance);
+            if (samples == 0) continue;
+            float visible = 0.0f;
+            glm::vec3 u, v;
+            if (light.type == LightType::Directional) {
+                basis(toLight, u, v);
+                for (int i = 0; i < samples; ++i) {
+                    const glm::vec2 s = discSample(i, samples, turn) * tanAngle;
+                    const glm::vec3 d = glm::normalize(toLight + s.x * u + s.y * v);
+                    visible += transmitted(casters, blend, origin, d, distance);
+                }
+            } else {
+                // A disc of `radius`: around the light facing the point (spot, point), or
+                // in the area light's plane around the point's foot.
+                const glm::vec3 centre =
+                    light.type == LightType::Area ? point - ld * distance : light.position;
+                basis(light.type == LightType::Area ? ld : toLight, u, v);
+                for (int i = 0; i < samples; ++i) {
+                    const glm::vec2 s = discSample(i, samples, turn) * radius;
+                    const glm::vec3 q = centre + s.x * u + s.y * v;
+                    const glm::vec3 d = q - origin;
+                    const float len = glm::length(d);
+                    if (len > 0.0f)
+                        visible += transmitted(casters, blend, origin, d / len, len * 0.99999f);
+                }
+            }
+            ref.soft[cell] = visible / float(samples);
+        }
+    }
+};
+
+}  // namespace
+
+Reference traceReference(const Scene& scene, const RenderOptions& options,
+                         const ReferenceOptions& referenceOptions) {
+    if (auto problems = scene.validate(); !problems.empty()) {
+        throw Error(ErrorKind::InvalidInput, "ground truth: " + problems.front());
+    }
+    const World world = buildWorld(scene, options.time);
     std::vector<AlphaSurface> alpha(scene.objects.size());
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const Material& m = scene.materials[scene.objects[o].material];
@@ -255,19 +383,9 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     const EmbreeScene all(buildScene(device.get(), scene, world, alpha, false));
     const EmbreeScene casters(buildScene(device.get(), scene, world, alpha, true));
 
-    Reference ref;
-    ref.width = options.width;
-    ref.height = options.height;
-    ref.lights = int(scene.lights.size());
-    const std::size_t pixels = std::size_t(ref.width) * std::size_t(ref.height);
-    const std::size_t cells = pixels * std::size_t(ref.lights);
-    ref.object.assign(pixels, -1);
-    ref.pixelWorld.assign(pixels, 0.0f);
-    ref.applies.assign(cells, 0);
-    ref.hard.assign(cells, 1.0f);
-    ref.lightCosine.assign(cells, 1.0f);
     const int samples = std::max(referenceOptions.softSamples, 0);
-    if (samples > 0) ref.soft.assign(cells, 1.0f);
+    Reference ref =
+        emptyReference(options.width, options.height, int(scene.lights.size()), samples);
 
     const float aspect = float(options.width) / float(options.height);
     const glm::mat4 viewFromWorld = shadow::viewFromWorld(scene.camera);
@@ -290,6 +408,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             options.shadow.enabled && scene.lights[i].castsShadows && lightIsOn(scene, options, i);
     }
 
+    const LightTracer lightTracer{scene, ref, casters.get(), blend, samples, tanAngle, radius, on};
     auto tracePixel = [&](int x, int y) {
         const float nx = (float(x) + 0.5f) / float(options.width) * 2.0f - 1.0f;
         const float ny = 1.0f - (float(y) + 0.5f) / float(options.height) * 2.0f;
@@ -345,94 +464,15 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             if (!obj.receivesShadows) return;
             const glm::vec3 origin = point + n * (epsilon + 1e-6f * glm::length(point));
             const float turn = pixelTurn(x, y);
-            for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-                if (!on[l]) continue;
-                const Light& light = scene.lights[l];
-                const glm::vec3 ld = glm::length(light.direction) > 0.0f
-                                         ? glm::normalize(light.direction)
-                                         : glm::vec3(0, -1, 0);
-                glm::vec3 toLight;
-                float distance = std::numeric_limits<float>::infinity();
-                switch (light.type) {
-                    case LightType::Directional:
-                        toLight = -ld;
-                        break;
-                    case LightType::Area: {
-                        toLight = -ld;
-                        distance = glm::dot(point - light.position, ld);
-                        if (!(distance > 0.0f)) continue;  // behind the light's plane
-                        break;
-                    }
-                    case LightType::Spot:
-                    case LightType::Point: {
-                        const glm::vec3 d = light.position - origin;
-                        distance = glm::length(d);
-                        if (!(distance > 0.0f)) continue;
-                        if (light.range > 0.0f && distance >= light.range) continue;  // unlit
-                        toLight = d / distance;
-                        if (light.type == LightType::Spot &&
-                            !(glm::dot(-toLight, ld) >
-                              std::cos(glm::radians(light.outerConeDegrees)))) {
-                            continue;  // outside the cone: no light to shadow
-                        }
-                        break;
-                    }
-                }
-                if (!mat.unlit && !(glm::dot(n, toLight) > 0.0f)) continue;  // faces away
-                const std::size_t cell = pixel * std::size_t(ref.lights) + l;
-                ref.applies[cell] = 1;
-                ref.lightCosine[cell] = mat.unlit ? 1.0f : glm::dot(n, toLight);
-                ref.hard[cell] = transmitted(casters.get(), blend, origin, toLight, distance);
-                if (samples == 0) continue;
-                float visible = 0.0f;
-                glm::vec3 u, v;
-                if (light.type == LightType::Directional) {
-                    basis(toLight, u, v);
-                    for (int i = 0; i < samples; ++i) {
-                        const glm::vec2 s = discSample(i, samples, turn) * tanAngle;
-                        const glm::vec3 d = glm::normalize(toLight + s.x * u + s.y * v);
-                        visible += transmitted(casters.get(), blend, origin, d, distance);
-                    }
-                } else {
-                    // A disc of `radius`: around the light facing the point (spot, point), or
-                    // in the area light's plane around the point's foot.
-                    const glm::vec3 centre =
-                        light.type == LightType::Area ? point - ld * distance : light.position;
-                    basis(light.type == LightType::Area ? ld : toLight, u, v);
-                    for (int i = 0; i < samples; ++i) {
-                        const glm::vec2 s = discSample(i, samples, turn) * radius;
-                        const glm::vec3 q = centre + s.x * u + s.y * v;
-                        const glm::vec3 d = q - origin;
-                        const float len = glm::length(d);
-                        if (len > 0.0f)
-                            visible +=
-                                transmitted(casters.get(), blend, origin, d / len, len * 0.99999f);
-                    }
-                }
-                ref.soft[cell] = visible / float(samples);
-            }
+            lightTracer.trace(pixel, mat, point, origin, n, turn);
             return;
         }
     };
 
-    const int threads = referenceOptions.threads > 0
-                            ? referenceOptions.threads
-                            : std::max(1, int(std::thread::hardware_concurrency()));
-    std::atomic<int> nextRow{0};
-    auto worker = [&] {
-        for (int y = nextRow++; y < options.height; y = nextRow++) {
-            if (referenceOptions.cancel && referenceOptions.cancel->load()) return;
-            for (int x = 0; x < options.width; ++x)
-                tracePixel(x, y);
-            if (referenceOptions.rowsDone) ++*referenceOptions.rowsDone;
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int i = 1; i < threads; ++i)
-        pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool)
-        t.join();
+    forEachRow(options.height, referenceOptions, [&](int y) {
+        for (int x = 0; x < options.width; ++x)
+            tracePixel(x, y);
+    });
     check(device.get(), "trace rays");
     if (referenceOptions.cancel && referenceOptions.cancel->load()) {
         throw Error(ErrorKind::InvalidInput, "ray-traced reference cancelled");
