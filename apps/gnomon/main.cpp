@@ -66,7 +66,48 @@ struct RenderArgs {
     gnomon::cli::RenderFlags flags;
 };
 
+// The image, then each light's map: all of them, or (on any failure) none of them.
+void writeOutputs(const RenderArgs& args, gnomon::Renderer& renderer, const gnomon::Image& image,
+                  bool verbose) {
+    std::vector<std::string> written;
+    std::error_code ec;
+    const bool madeFolder =
+        !args.shadowMaps.empty() && !std::filesystem::exists(args.shadowMaps, ec);
+    try {
+        if (!args.shadowMaps.empty()) {
+            std::filesystem::create_directories(args.shadowMaps, ec);
+            if (ec || !std::filesystem::is_directory(args.shadowMaps)) {
+                throw gnomon::Error(gnomon::ErrorKind::Io,
+                                    "--shadow-maps: cannot create folder '" + args.shadowMaps +
+                                        "': " + (ec ? ec.message() : "a file is in the way"));
+            }
+        }
+        gnomon::writeImage(args.out, image);
+        written.push_back(args.out);
+        for (const gnomon::ShadowMapImage& map : args.shadowMaps.empty()
+                                                     ? std::vector<gnomon::ShadowMapImage>{}
+                                                     : renderer.shadowMaps()) {
+            const std::string path =
+                args.shadowMaps + "/light-" + std::to_string(map.light) +
+                (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") + ".png";
+            gnomon::writePng(path, map.depth);
+            written.push_back(path);
+            if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
+        }
+    } catch (...) {
+        for (const std::string& path : written)
+            std::filesystem::remove(path, ec);
+        if (madeFolder) std::filesystem::remove(args.shadowMaps, ec);
+        throw;
+    }
+}
+
 int runRender(const RenderArgs& args, bool verbose) {
+    if (!gnomon::imageFormatKnown(args.out)) {
+        throw gnomon::Error(
+            gnomon::ErrorKind::InvalidInput,
+            "--out: '" + args.out + "': the format follows the extension: .png, .jpg or .jpeg");
+    }
     const auto loadStart = std::chrono::steady_clock::now();
     gnomon::Scene scene = gnomon::loadScene(args.scene);
     const double loadMs =
@@ -100,22 +141,7 @@ int runRender(const RenderArgs& args, bool verbose) {
                                                                renderStart)
                          .count());
     }
-    gnomon::writePng(args.out, image);
-    if (!args.shadowMaps.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(args.shadowMaps, ec);
-        if (ec) {
-            throw gnomon::Error(gnomon::ErrorKind::Io, "--shadow-maps: cannot create folder '" +
-                                                           args.shadowMaps + "': " + ec.message());
-        }
-        for (const gnomon::ShadowMapImage& map : renderer.shadowMaps()) {
-            const std::string path =
-                args.shadowMaps + "/light-" + std::to_string(map.light) +
-                (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") + ".png";
-            gnomon::writePng(path, map.depth);
-            if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
-        }
-    }
+    writeOutputs(args, renderer, image, verbose);
     if (verbose) {
         const gnomon::FrameStats stats = renderer.lastFrameStats();
         std::fprintf(stderr,

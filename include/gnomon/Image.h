@@ -33,6 +33,12 @@ struct Image16 {
 // Write as PNG (8-bit with `channels` channels, or 16-bit grey). Throws gnomon::Error.
 void writePng(const std::string& path, const Image& image);
 void writePng(const std::string& path, const Image16& image);
+// Write in the format `path`'s extension names: .png (as writePng), .jpg or .jpeg (JPEG,
+// quality 95, alpha dropped). Any other extension is refused (InvalidInput) before anything
+// is written.
+void writeImage(const std::string& path, const Image& image);
+// True when writeImage accepts `path`'s extension.
+bool imageFormatKnown(const std::string& path);
 // Read a PNG as 8-bit RGBA. Throws gnomon::Error naming the file.
 Image readPng(const std::string& path);
 // Write text (JSON, CSV, SVG) the same way: to a temporary file, then renamed into place.

@@ -1,10 +1,14 @@
-// PNG files: written with libpng (8-bit 1-4 channels and 16-bit grey, which stb cannot
-// write), read with stb_image. Writes are atomic (core/AtomicFile.h).
+// Image files: PNG written with libpng (8-bit 1-4 channels and 16-bit grey, which stb cannot
+// write) and read with stb_image; JPEG written with stb_image_write. Writes are atomic
+// (core/AtomicFile.h).
 #include <png.h>
 #include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
 
 #include <bit>
+#include <cctype>
 #include <csetjmp>
+#include <filesystem>
 #include <memory>
 
 #include "core/AtomicFile.h"
@@ -75,6 +79,48 @@ void writePng(const std::string& path, const Image16& image) {
             const_cast<std::uint16_t*>(&image.pixels[size_t(y) * image.width]));
     }
     writePngRows(path, image.width, image.height, 16, PNG_COLOR_TYPE_GRAY, rows);
+}
+
+namespace {
+std::string lowerExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+}  // namespace
+
+bool imageFormatKnown(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".png" || ext == ".jpg" || ext == ".jpeg";
+}
+
+void writeImage(const std::string& path, const Image& image) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".png") return writePng(path, image);
+    if (ext != ".jpg" && ext != ".jpeg") {
+        throw Error(ErrorKind::InvalidInput, "cannot write '" + path +
+                                                 "': the format follows the extension: .png, .jpg "
+                                                 "or .jpeg, got '" +
+                                                 (ext.empty() ? "none" : ext) + "'");
+    }
+    checkSize(path, image.width, image.height, image.pixels.size(),
+              size_t(image.width) * image.height * image.channels);
+    // Encoded in memory first, so a failed encode writes nothing.
+    std::vector<unsigned char> bytes;
+    auto append = [](void* context, void* data, int size) {
+        auto* out = static_cast<std::vector<unsigned char>*>(context);
+        const auto* d = static_cast<const unsigned char*>(data);
+        out->insert(out->end(), d, d + size);
+    };
+    if (!stbi_write_jpg_to_func(append, &bytes, image.width, image.height, image.channels,
+                                image.pixels.data(), 95)) {
+        throw Error(ErrorKind::Io, "cannot write '" + path + "': JPEG encoding failed");
+    }
+    writeFileAtomically(path, [&](std::FILE* f) {
+        if (std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size())
+            throw Error(ErrorKind::Io, "cannot write '" + path + "'");
+    });
 }
 
 Image readPng(const std::string& path) {

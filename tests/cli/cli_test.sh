@@ -189,6 +189,20 @@ help)
     done
     grep -q "^Tolerances:" "$work/stdout" || fail "help is not grouped"
     ;;
+outputs)
+    # The format follows the extension; a failed render leaves nothing it wrote behind.
+    run render --scene book-triangle --size 32x32 --out "$work/a.jpg"
+    skip_without_gl
+    [[ $(cat "$work/code") == 0 ]] || fail "a.jpg: $(cat "$work/stderr")"
+    [[ $(od -An -tx1 -N2 "$work/a.jpg" | tr -d ' ') == ffd8 ]] || fail "a.jpg is not JPEG"
+    run render --scene book-triangle --size 32x32 --out "$work/a.bmp"
+    expect 2 "the format follows the extension: .png, .jpg or .jpeg"
+    [[ ! -e "$work/a.bmp" ]] || fail "a refused format was written"
+    touch "$work/file"
+    run render --scene book-triangle --size 32x32 --out "$work/b.png" --shadow-maps "$work/file/maps"
+    expect 1 "--shadow-maps: cannot create folder"
+    [[ ! -e "$work/b.png" ]] || fail "b.png left behind by a failed render"
+    ;;
 option_tables)
     # The docs' option tables are the schema's: README.md and docs/scene-file.md hold
     # exactly what `gnomon options --markdown` prints between their markers.
