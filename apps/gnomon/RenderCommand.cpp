@@ -69,6 +69,14 @@ void RenderFlags::apply(RenderOptions& o) const {
             all += (all.empty() ? "" : "; ") + p;
         throw Error(ErrorKind::InvalidInput, all);
     }
+    // A flag given that the other options make pointless: said once, not silently ignored.
+    for (const OptionSpec& spec : optionSchema()) {
+        if (spec.matters && app->count("--" + std::string(spec.name)) > 0 && !spec.matters(o)) {
+            std::fprintf(stderr,
+                         "gnomon: warning: --%s does nothing here: it applies only with %s\n",
+                         spec.name, spec.onlyWith);
+        }
+    }
 }
 
 }  // namespace gnomon::cli

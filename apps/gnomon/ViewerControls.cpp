@@ -30,11 +30,21 @@ void Viewer::flagTip(const char* flag) {
 }
 
 // The widget of the render option `name`, its range the schema's, with its flag's doc.
+// Dimmed, still editable, when the other options make it pointless (and its tooltip says
+// what it needs).
 bool Viewer::option(const char* name) {
     const OptionSpec* spec = findOption(name);
     if (!spec) return false;
+    const bool pointless = spec->matters && !spec->matters(mState.options);
+    if (pointless) ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 0.45f);
     const bool c = optionWidget(*spec, mState.options);
-    flagTip(("--" + std::string(name)).c_str());
+    if (pointless) ImGui::PopStyleVar();
+    if (ImGui::IsItemHovered()) {
+        tooltip(mDocs("--" + std::string(name)) +
+                (pointless
+                     ? std::string("\n(no effect now: applies only with ") + spec->onlyWith + ")"
+                     : std::string()));
+    }
     return c;
 }
 

@@ -37,6 +37,11 @@ struct OptionSpec {
     // The value as a number: Switch 0/1, Choice its index, Size the width.
     double (*get)(const RenderOptions&) = nullptr;
     void (*set)(RenderOptions&, double) = nullptr;
+    // Whether the option has an effect with the other options `o` holds (null: always), and
+    // when it does, in the CLI's words ("--filter pcss"): what warns about a flag that would
+    // do nothing.
+    bool (*matters)(const RenderOptions& o) = nullptr;
+    const char* onlyWith = "";
 };
 
 // Every render option, in help order.

@@ -364,6 +364,58 @@ void addShading(std::vector<OptionSpec>& s) {
          NUMBER(shading.shadowFactor, float)});
 }
 
+// When options have an effect: those of the shadow technique only with shadows on, and a
+// few only with the filter, rule or cascades they tune.
+void addConditions(std::vector<OptionSpec>& s) {
+    struct Condition {
+        const char* name;
+        bool (*matters)(const RenderOptions&);
+        const char* onlyWith;
+    };
+    static const Condition kConditions[] = {
+        {"light-radius",
+         [](const RenderOptions& o) { return o.shadow.filter == ShadowFilter::Pcss; },
+         "--filter pcss"},
+        {"light-angle",
+         [](const RenderOptions& o) { return o.shadow.filter == ShadowFilter::Pcss; },
+         "--filter pcss"},
+        {"pcf-size",
+         [](const RenderOptions& o) {
+             return o.shadow.filter == ShadowFilter::Pcf ||
+                    o.shadow.filter == ShadowFilter::Poisson;
+         },
+         "--filter pcf or poisson"},
+        {"map-filter",
+         [](const RenderOptions& o) {
+             return o.shadow.filter == ShadowFilter::None || isColourFormat(o.shadow.depthFormat);
+         },
+         "--filter none or a colour --depth-format (r8, rgba8-packed-*)"},
+        {"cascade-lambda", [](const RenderOptions& o) { return o.shadow.cascades != 1; },
+         "more than one cascade (--cascades auto or 2..4)"},
+        {"cascade-blend", [](const RenderOptions& o) { return o.shadow.cascades != 1; },
+         "more than one cascade (--cascades auto or 2..4)"},
+        {"shadow-factor",
+         [](const RenderOptions& o) { return o.shading.shadowedRule == ShadowedRule::Factor; },
+         "--shadowed factor"},
+    };
+    for (OptionSpec& spec : s) {
+        const std::string group = spec.group;
+        const bool technique = group == "Tolerances" || group == "Filtering" ||
+                               group == "Cascades" ||
+                               (group == "Shadow maps" && std::string(spec.name) != "shadows");
+        for (const Condition& c : kConditions) {
+            if (std::string(spec.name) == c.name) {
+                spec.matters = c.matters;
+                spec.onlyWith = c.onlyWith;
+            }
+        }
+        if (technique && !spec.matters) {
+            spec.matters = [](const RenderOptions& o) { return o.shadow.enabled; };
+            spec.onlyWith = "--shadows on";
+        }
+    }
+}
+
 std::vector<OptionSpec> makeSchema() {
     std::vector<OptionSpec> s;
     addOutput(s);
@@ -372,6 +424,7 @@ std::vector<OptionSpec> makeSchema() {
     addFiltering(s);
     addCascades(s);
     addShading(s);
+    addConditions(s);
     return s;
 }
 

@@ -203,6 +203,15 @@ outputs)
     expect 1 "--shadow-maps: cannot create folder"
     [[ ! -e "$work/b.png" ]] || fail "b.png left behind by a failed render"
     ;;
+pointless_flags)
+    # A flag the other options make pointless is said once, and the render still runs.
+    run render --scene book-triangle --size 32x32 --out "$work/p.png" --filter pcss --pcf-size 5
+    skip_without_gl
+    expect 0 "gnomon: warning: --pcf-size does nothing here: it applies only with --filter pcf or poisson"
+    [[ $(grep -c "pcf-size" "$work/stderr") == 1 ]] || fail "warned more than once"
+    run render --scene book-triangle --size 32x32 --out "$work/q.png" --filter pcss --light-radius 0.5
+    [[ ! -s "$work/stderr" ]] || fail "a flag that matters was warned about: $(cat "$work/stderr")"
+    ;;
 option_tables)
     # The docs' option tables are the schema's: README.md and docs/scene-file.md hold
     # exactly what `gnomon options --markdown` prints between their markers.
