@@ -149,6 +149,11 @@ VIEWS = [
      "camera": {"eye": [0.009, 0.004, 0.009], "centre": [0.0028, 0.0025, -0.0015], "fovy": 45,
                 "near": 0.0005, "far": 1},
      "lights": [sun(-0.9, -0.3, -0.3)]},
+    {"name": "instancing-side-sun", "model": "SimpleInstancing/SimpleInstancing.glb",
+     "ground": True,
+     "why": "a cloud of closed cubes, sun 50 degrees high from the camera's right: faces "
+            "turned almost edge-on to it (still open: false shadow outside the band, 0.14 %)",
+     "lights": [sun(-0.607, -0.766, -0.21)]},
     {"name": "horse-glmark2", "model": HORSE, "transform": HORSE_POSE, "ground": True,
      "why": "glmark2's shadow scene: its camera (model centre + 2 + radius along z, near 2) "
             "and its light at (0, 3, 2), here a point light",
