@@ -22,18 +22,18 @@ enum class OptionKind {
 };
 
 struct OptionSpec {
-    const char* name;   // CLI flag without "--", scene-file key, viewer label
-    const char* group;  // help section: "Output", "Shadow maps", "Tolerances", ...
-    const char* doc;    // one line: what it does (range and default are added from below)
-    const char* unit;   // for messages and help ("" when none): "texels", "degrees", ...
-    OptionKind kind;
+    const char* name = "";   // CLI flag without "--", scene-file key, viewer label
+    const char* group = "";  // help section: "Output", "Shadow maps", "Tolerances", ...
+    const char* doc = "";    // one line: what it does (range and default are added from below)
+    const char* unit = "";   // for messages and help ("" when none): "texels", "degrees", ...
+    OptionKind kind = OptionKind::Switch;
     double min = 0.0, max = 0.0;
     bool maxExclusive = false;
-    bool zeroAllowed = false;          // Integer: 0 is valid outside [min, max]
-    const char* zeroName = "";         // Integer: how 0 is spelled ("auto"); "" = "0"
-    bool odd = false;                  // Integer: odd values only
-    std::vector<std::string> choices;  // Choice
-    const char* defaultNote = "";      // instead of the library default in help ("the scene's")
+    bool zeroAllowed = false;               // Integer: 0 is valid outside [min, max]
+    const char* zeroName = "";              // Integer: how 0 is spelled ("auto"); "" = "0"
+    bool odd = false;                       // Integer: odd values only
+    std::vector<std::string> choices = {};  // Choice
+    const char* defaultNote = "";  // instead of the library default in help ("the scene's")
     // The value as a number: Switch 0/1, Choice its index, Size the width.
     double (*get)(const RenderOptions&) = nullptr;
     void (*set)(RenderOptions&, double) = nullptr;
