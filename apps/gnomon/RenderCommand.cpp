@@ -1,3 +1,10 @@
+// The render flags: made from the option schema, plus the scene edits (ground, camera, sun)
+// every command shares.
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+
+#include <glm/glm.hpp>
 
 #include "RenderOptionsCli.h"
 #include "gnomon/Error.h"
@@ -19,7 +26,66 @@ E parseEnum(const std::string& flag, const std::string& value,
     bad(flag, "expected one of " + std::string(choices) + ", got '" + value + "'");
 }
 
+// "X,Y,Z" (or "A,B" with n = 2) as numbers; none when malformed or not finite.
+std::optional<glm::vec3> numbers(const std::string& text, int n) {
+    glm::vec3 v(0.0f);
+    std::size_t at = 0;
+    for (int i = 0; i < n; ++i) {
+        const std::size_t end = i + 1 < n ? text.find(',', at) : text.size();
+        if (end == std::string::npos) return std::nullopt;
+        const std::string part = text.substr(at, end - at);
+        char* stop = nullptr;
+        v[i] = std::strtof(part.c_str(), &stop);
+        if (part.empty() || stop != part.c_str() + part.size() || !std::isfinite(v[i]))
+            return std::nullopt;
+        at = end + 1;
+    }
+    return v;
+}
+
 }  // namespace
+
+void RenderFlags::editScene(Scene& scene) const {
+    if (ground) addGround(scene);
+    placeCameraAndSun(scene);
+}
+
+void RenderFlags::placeCameraAndSun(Scene& scene) const {
+    auto given = [&](const char* flag) { return app && app->count(flag) > 0; };
+    Camera& c = scene.camera;
+    if (given("--camera-eye")) {
+        const auto v = numbers(cameraEye, 3);
+        if (!v) bad("--camera-eye", "expected X,Y,Z such as 4,3,6, got '" + cameraEye + "'");
+        c.eye = *v;
+    }
+    if (given("--camera-target")) {
+        const auto v = numbers(cameraTarget, 3);
+        if (!v) bad("--camera-target", "expected X,Y,Z such as 0,1,0, got '" + cameraTarget + "'");
+        c.centre = *v;
+    }
+    if (given("--camera-fov")) {
+        if (!(cameraFov >= 1.0f && cameraFov <= 179.0f))
+            bad("--camera-fov", "must be in 1..179 degrees, got " + std::to_string(cameraFov));
+        c.fovyDegrees = cameraFov;
+    }
+    if ((given("--camera-eye") || given("--camera-target")) &&
+        !(glm::length(c.centre - c.eye) > 0.0f))
+        bad("--camera-eye", "the eye and the target are the same point");
+    if (given("--sun")) {
+        const auto v = numbers(sun, 2);
+        if (!v || !(v->y > 0.0f && v->y <= 90.0f))
+            bad("--sun",
+                "expected AZIMUTH,ELEVATION in degrees, elevation in (0, 90], got '" + sun + "'");
+        const float az = glm::radians(v->x), el = glm::radians(v->y);
+        Light l;
+        l.name = "sun (--sun)";
+        l.type = LightType::Directional;
+        l.direction =
+            -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+        scene.lights = {l};
+    }
+    scene.revision.bump();
+}
 
 void RenderFlags::add(CLI::App& a) {
     app = &a;
@@ -33,6 +99,21 @@ void RenderFlags::add(CLI::App& a) {
                "add a grey ground under the scene (receives shadows, casts none), for models "
                "without a floor")
         ->group("Output");
+    a.add_option("--camera-eye", cameraEye, "place the camera's eye at X,Y,Z (world units)")
+        ->type_name("X,Y,Z")
+        ->group("Scene");
+    a.add_option("--camera-target", cameraTarget, "point the camera at X,Y,Z")
+        ->type_name("X,Y,Z")
+        ->group("Scene");
+    a.add_option("--camera-fov", cameraFov, "the camera's vertical field of view, 1..179 degrees")
+        ->type_name("DEG")
+        ->group("Scene");
+    a.add_option("--sun", sun,
+                 "light the scene by one sun instead of its lights: azimuth (degrees from +z "
+                 "towards +x, where the light comes from) and elevation above the horizon "
+                 "(0..90)")
+        ->type_name("AZ,EL")
+        ->group("Scene");
     for (const OptionSpec& spec : optionSchema()) {
         const std::string defaultText =
             *spec.defaultNote ? spec.defaultNote : formatOption(spec, kDefaults);

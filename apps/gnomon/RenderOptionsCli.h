@@ -24,6 +24,9 @@ struct RenderFlags {
     // One text per option of the schema (gnomon/OptionSchema.h), by name: what was given.
     std::map<std::string, std::string> values;
     bool ground = false;
+    // Scene edits: the camera, and one sun instead of the scene's lights.
+    std::string cameraEye, cameraTarget, sun;
+    float cameraFov = 0.0f;
     CLI::App* app = nullptr;
 
     // Declares the flags on `app`.
@@ -31,10 +34,11 @@ struct RenderFlags {
     // The options for `scene`: the --preset's (default: the scene's own), then every flag
     // given applied over them. Throws gnomon::Error for bad values.
     RenderOptions resolve(const Scene& scene) const;
-    // Scene edits the flags ask for (--ground).
-    void editScene(Scene& scene) const {
-        if (ground) addGround(scene);
-    }
+    // Scene edits the flags ask for (--ground, --camera-*, --sun); throws gnomon::Error for
+    // bad values.
+    void editScene(Scene& scene) const;
+    // The same without --ground (the viewer loads the ground with its scene).
+    void placeCameraAndSun(Scene& scene) const;
     // Applies the given flags over `options`; throws gnomon::Error for bad values.
     void apply(RenderOptions& options) const;
 };

@@ -269,6 +269,7 @@ int runView(const ViewArgs& args, bool verbose) {
     }
     view::State state;
     view::load(state, args.scene, args.flags.ground);
+    args.flags.placeCameraAndSun(state.scene);
     printWarnings(state.scene);
     state.options = args.flags.resolve(state.scene);
     if (args.flags.app->count("--size") > 0) state.fitView = false;

@@ -230,6 +230,7 @@ void applyFlags(State& state, const std::vector<std::string>& args) {
     if (!scene.empty() || (flags.ground && !state.ground)) {
         load(state, scene.empty() ? state.source : scene, flags.ground || state.ground);
     }
+    flags.placeCameraAndSun(state.scene);
     RenderOptions options = state.options;
     if (app.count("--preset") > 0) {
         const std::optional<gnomon::Preset> p = parsePreset(flags.preset);

@@ -203,6 +203,25 @@ outputs)
     expect 1 "--shadow-maps: cannot create folder"
     [[ ! -e "$work/b.png" ]] || fail "b.png left behind by a failed render"
     ;;
+scene_flags)
+    # The camera and a sun from the command line move the picture; bad values say where.
+    run render --scene tutorial-room --size 32x32 --out "$work/a.png"
+    skip_without_gl
+    run render --scene tutorial-room --size 32x32 --out "$work/b.png" --camera-eye 6,4,8 \
+        --camera-target 0,1,0 --camera-fov 50
+    [[ $(cat "$work/code") == 0 ]] || fail "camera flags: $(cat "$work/stderr")"
+    run render --scene tutorial-room --size 32x32 --out "$work/c.png" --sun 30,60
+    [[ $(cat "$work/code") == 0 ]] || fail "--sun: $(cat "$work/stderr")"
+    cmp -s "$work/a.png" "$work/b.png" && fail "--camera-* changed nothing"
+    cmp -s "$work/a.png" "$work/c.png" && fail "--sun changed nothing"
+    run render --scene tutorial-room --out "$work/d.png" --camera-eye 1,2
+    expect 2 "--camera-eye: expected X,Y,Z"
+    run render --scene tutorial-room --out "$work/d.png" --camera-fov 0
+    expect 2 "--camera-fov: must be in 1..179 degrees"
+    run render --scene tutorial-room --out "$work/d.png" --sun 10,-5
+    expect 2 "--sun: expected AZIMUTH,ELEVATION"
+    [[ ! -e "$work/d.png" ]] || fail "a refused render left d.png"
+    ;;
 pointless_flags)
     # A flag the other options make pointless is said once, and the render still runs.
     run render --scene book-triangle --size 32x32 --out "$work/p.png" --filter pcss --pcf-size 5
