@@ -134,6 +134,27 @@ void recordVisibility(LightData light, float visibility) {
 #define RECORD(light, visibility)
 #endif
 
+// The records each main() loops over: the unshadowed ones (every light when shadows are off),
+// then each kind of shadowed light this frame has, through LOOP(first, last, LOOKUP).
+#ifdef SHADOWS_OFF
+#define UNSHADOWED_END uLightRanges.w
+#define SHADOWED_KINDS(LOOP)
+#else
+#define UNSHADOWED_END uLightRanges.x
+#ifdef HAS_CUBES
+#define CUBE_KIND(LOOP) LOOP(uLightRanges.y, uLightRanges.z, cubeLookup)
+#else
+#define CUBE_KIND(LOOP)
+#endif
+#ifdef HAS_CASCADES
+#define CASCADE_KIND(LOOP) LOOP(uLightRanges.z, uLightRanges.w, cascadeVisibility)
+#else
+#define CASCADE_KIND(LOOP)
+#endif
+#define SHADOWED_KINDS(LOOP) \
+    LOOP(uLightRanges.x, uLightRanges.y, mapLookup) CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
+#endif
+
 float mapLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
     return mapVisibility(light, p, n, l);
 }
@@ -175,21 +196,9 @@ void main() {
     vec3 vsN = normalize(vIn.vsNormal), wsN = normalize(vIn.wsNormal);
     vec3 lit = uAmbient;
     vec3 unused;
-#ifdef SHADOWS_OFF
-    for (int i = 0; i < uLightRanges.w; ++i)
-#else
-    for (int i = 0; i < uLightRanges.x; ++i)
-#endif
+    for (int i = 0; i < UNSHADOWED_END; ++i)
         lit += floorDiffuse(lights[i], vsN, unused);
-#ifndef SHADOWS_OFF
-    FLOOR_LOOP(uLightRanges.x, uLightRanges.y, mapLookup)
-#ifdef HAS_CUBES
-    FLOOR_LOOP(uLightRanges.y, uLightRanges.z, cubeLookup)
-#endif
-#ifdef HAS_CASCADES
-    FLOOR_LOOP(uLightRanges.z, uLightRanges.w, cascadeVisibility)
-#endif
-#endif
+    SHADOWED_KINDS(FLOOR_LOOP)
     fragColour = vec4(lit * vIn.colour, 1.0);
 }
 #else
@@ -218,26 +227,14 @@ void main() {
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
     float factor = 1.0;
-#ifdef SHADOWS_OFF
-    for (int i = 0; i < uLightRanges.w; ++i) {
-#else
-    for (int i = 0; i < uLightRanges.x; ++i) {
-#endif
+    for (int i = 0; i < UNSHADOWED_END; ++i) {
         LightData light = lights[i];
         vec3 vsToLight;
         float falloff;
         lightAt(light, vsToLight, falloff);
         shade(light, s, vsToLight, falloff, 1.0, lit, factor);
     }
-#ifndef SHADOWS_OFF
-    SHADOWED_LOOP(uLightRanges.x, uLightRanges.y, mapLookup)
-#ifdef HAS_CUBES
-    SHADOWED_LOOP(uLightRanges.y, uLightRanges.z, cubeLookup)
-#endif
-#ifdef HAS_CASCADES
-    SHADOWED_LOOP(uLightRanges.z, uLightRanges.w, cascadeVisibility)
-#endif
-#endif
+    SHADOWED_KINDS(SHADOWED_LOOP)
     vec3 colour = lit * factor;
 #ifdef DEBUG_CASCADES
     const vec3 kTints[4] = vec3[](vec3(1, 0.3, 0.3), vec3(0.3, 1, 0.3), vec3(0.3, 0.5, 1),

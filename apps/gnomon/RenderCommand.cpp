@@ -84,7 +84,7 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
             -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
         scene.lights = {l};
     }
-    scene.revision.bump();
+    // No revision bump: the camera and the lights are read every frame.
 }
 
 void RenderFlags::add(CLI::App& a) {

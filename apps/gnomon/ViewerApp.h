@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +74,7 @@ private:
     void controls(float width, float height);
     void flagTip(const char* flag);
     bool option(const char* name);
+    void options(std::initializer_list<const char*> names);
     void changed(bool c);
     void guarded(const std::function<void()>& action);
     void sceneControls();

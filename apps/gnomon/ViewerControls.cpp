@@ -30,6 +30,12 @@ void Viewer::flagTip(const char* flag) {
 }
 
 // The widget of the render option `name`, its range the schema's, with its flag's doc.
+// Each option's widget in turn (see option()).
+void Viewer::options(std::initializer_list<const char*> names) {
+    for (const char* name : names)
+        changed(option(name));
+}
+
 // Dimmed, still editable, when the other options make it pointless (and its tooltip says
 // what it needs).
 bool Viewer::option(const char* name) {
@@ -244,36 +250,20 @@ void Viewer::optionControls() {
             ImGui::TextDisabled("map-size: each light's own");
         }
         flagTip("--map-size");
-        changed(option("depth-format"));
-        changed(option("map-filter"));
-        changed(option("outside"));
+        options({"depth-format", "map-filter", "outside"});
     }
     if (ImGui::CollapsingHeader("Tolerances", ImGuiTreeNodeFlags_DefaultOpen)) {
-        changed(option("bias-constant"));
-        changed(option("bias-depth-aware"));
-        changed(option("bias-slope"));
-        changed(option("bias-units"));
-        changed(option("receiver-plane"));
-        changed(option("normal-offset"));
-        changed(option("cull"));
+        options({"bias-constant", "bias-depth-aware", "bias-slope", "bias-units", "receiver-plane",
+                 "normal-offset", "cull"});
     }
     if (ImGui::CollapsingHeader("Filter", ImGuiTreeNodeFlags_DefaultOpen)) {
-        changed(option("filter"));
-        changed(option("pcf-size"));
-        changed(option("light-radius"));
-        changed(option("light-angle"));
-        changed(option("blend-shadows"));
+        options({"filter", "pcf-size", "light-radius", "light-angle", "blend-shadows"});
     }
     if (ImGui::CollapsingHeader("Cascades")) {
-        changed(option("cascades"));
-        changed(option("fit-to"));
-        changed(option("cascade-lambda"));
-        changed(option("cascade-blend"));
+        options({"cascades", "fit-to", "cascade-lambda", "cascade-blend"});
     }
     if (ImGui::CollapsingHeader("Shading")) {
-        changed(option("shadowed"));
-        changed(option("shadow-factor"));
-        changed(option("output-encoding"));
+        options({"shadowed", "shadow-factor", "output-encoding"});
         changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
         tooltip("the scene's ambient light colour, times each material's colour");
         ImGui::TextDisabled("shininess: per material, from the scene");

@@ -240,6 +240,7 @@ void addGround(Scene& scene) {
     o.material = std::uint32_t(scene.materials.size() - 1);
     o.castsShadows = false;
     scene.objects.push_back(o);
+    scene.revision.bump();  // an edit in place: a renderer that synced the scene must see it
 }
 
 void addDefaultSun(Scene& scene) {
