@@ -132,6 +132,16 @@ struct Renderer::Impl {
         }
     }
 
+    // The frame's target bound and cleared (black, far), the viewport on it.
+    void bindClearedTarget(int width, int height) {
+        glBindFramebuffer(GL_FRAMEBUFFER, target.id());
+        glViewport(0, 0, width, height);
+        const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        const float far = 1.0f;
+        glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, black);
+        glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &far);
+    }
+
     // Bad input stops here, in words: the options, the scene, what the driver can hold.
     void check(const Scene& s, const RenderOptions& options) {
         if (auto problems = options.validate(); !problems.empty()) invalid(problems);
@@ -196,12 +206,7 @@ struct Renderer::Impl {
         plan.finish(shadowPass);
 
         ensureTarget(options.width, options.height, options.shading.output);
-        glBindFramebuffer(GL_FRAMEBUFFER, target.id());
-        glViewport(0, 0, options.width, options.height);
-        const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-        const float far = 1.0f;
-        glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, black);
-        glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &far);
+        bindClearedTarget(options.width, options.height);
         render::MainPassInputs in;
         in.viewFromWorld = viewFromWorld;
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
@@ -386,12 +391,7 @@ double Renderer::measureMainFloor() {
     if (!m.lastMain) return -1.0;
     m.makeCurrent();
     const RenderOptions& o = m.lastMainOptions;
-    glBindFramebuffer(GL_FRAMEBUFFER, m.target.id());
-    glViewport(0, 0, o.width, o.height);
-    const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    const float far = 1.0f;
-    glClearNamedFramebufferfv(m.target.id(), GL_COLOR, 0, black);
-    glClearNamedFramebufferfv(m.target.id(), GL_DEPTH, 0, &far);
+    m.bindClearedTarget(o.width, o.height);
     glFinish();  // the clears are not the floor's
     const auto start = std::chrono::steady_clock::now();
     m.mainPass.render(m.scene, *m.lastMain, o, nullptr, true);
