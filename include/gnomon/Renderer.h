@@ -70,6 +70,15 @@ struct ShadowVisibility {
     std::vector<float> texelWorld;  // world size of the map texel the lookup used
 };
 
+// A texture in the renderer's OpenGL context, for a UI toolkit drawing in the same context
+// (Dear ImGui's ImTextureID is the name): RGBA8, rows bottom-up. The renderer owns it.
+struct GlTexture {
+    unsigned glName = 0;  // 0: no texture
+    int width = 0;
+    int height = 0;
+    explicit operator bool() const { return glName != 0; }
+};
+
 class Renderer {
 public:
     // Creates the headless context; throws gnomon::Error (kind Gl) with one sentence
@@ -85,14 +94,14 @@ public:
     Image render(const Scene& scene, const RenderOptions& options, ShadowVisibility& visibility);
     // The same frame left on the GPU, not read back (the viewer): frameTexture() names it.
     void draw(const Scene& scene, const RenderOptions& options);
-    // The OpenGL texture (in the renderer's context) holding the last frame: RGBA8 whose
-    // bytes are what render() returns (sRGB-encoded for --output-encoding srgb, not decoded
-    // when sampled), rows bottom-up; 0 before the first frame. Valid until the next frame.
-    unsigned frameTexture() const;
+    // The texture holding the last frame: its bytes are what render() returns (sRGB-encoded
+    // for --output-encoding srgb, not decoded when sampled). Empty before the first frame;
+    // valid until the next frame.
+    GlTexture frameTexture() const;
     // Draws the last frame's shadow maps of `light` (an index into Scene::lights) as
     // --debug-view shadow-map does, into a texture of width x height kept by the renderer,
-    // and returns it (RGBA8, rows bottom-up); 0 when that light had no map in the last frame.
-    unsigned drawShadowMapPanel(int light, int width, int height);
+    // and returns it; empty when that light had no map in the last frame.
+    GlTexture drawShadowMapPanel(int light, int width, int height);
     // The shadow maps of the last frame, one per shadowed light.
     std::vector<ShadowMapImage> shadowMaps();
     FrameStats lastFrameStats() const;

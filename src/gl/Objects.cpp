@@ -105,6 +105,31 @@ Texture Texture::image2D(const std::string& label, int width, int height, const 
     return t;
 }
 
+Texture Texture::display2D(const std::string& label, const Image& image) {
+    Image rgba(image.width, image.height, 4);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* in = image.at(x, y);
+            std::uint8_t* out = rgba.at(x, y);
+            for (int c = 0; c < 3; ++c)
+                out[c] = in[std::min(c, image.channels - 1)];
+            out[3] = image.channels == 4 ? in[3] : 255;
+        }
+    }
+    GLuint n = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &n);
+    Texture t(n, GL_RGBA8, image.width, image.height, 1);  // owns n from here on
+    glTextureStorage2D(n, 1, GL_RGBA8, image.width, image.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(n, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                        rgba.pixels.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureParameteri(n, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(n, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    setLabel(GL_TEXTURE, n, label);
+    return t;
+}
+
 Sampler::Sampler(const std::string& label) {
     GLuint n = 0;
     glCreateSamplers(1, &n);

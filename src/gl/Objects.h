@@ -7,6 +7,7 @@
 #include <string>
 
 #include "gl/Object.h"
+#include "gnomon/Image.h"
 
 namespace gnomon::gl {
 
@@ -67,6 +68,9 @@ public:
     // wrap modes and filters set on the texture itself.
     static Texture image2D(const std::string& label, int width, int height, const void* rgba,
                            GLint wrapS, GLint wrapT, bool nearest);
+    // An image to show as it is (a UI's overlay): RGBA8 (grey and RGB widened, alpha 255
+    // where absent), bytes not decoded when sampled, one level, NEAREST, first row at t = 0.
+    static Texture display2D(const std::string& label, const Image& image);
     // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
     // storage.
     static Texture layersView(const std::string& label, const Texture& source);

@@ -1,6 +1,10 @@
 #include "gl/Window.h"
 
+#include <epoxy/gl.h>  // before GLFW, which then includes no GL header of its own
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+
+#include <algorithm>
 
 #include "gl/Context.h"
 #include "gnomon/Error.h"
@@ -14,7 +18,7 @@ std::string lastGlfwError() {
 }
 }  // namespace
 
-Window::Window(const std::string& title, int width, int height, bool debug, bool visible) {
+Window::Window(const WindowSettings& settings) {
     if (!glfwInit()) {
         throw Error(ErrorKind::Gl, "cannot open a window: " + lastGlfwError() +
                                        " (no display? run under xvfb-run -a)");
@@ -23,9 +27,10 @@ Window::Window(const std::string& title, int width, int height, bool debug, bool
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
-    glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
-    mWindow = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, settings.debug ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_VISIBLE, settings.visible ? GLFW_TRUE : GLFW_FALSE);
+    mWindow =
+        glfwCreateWindow(settings.width, settings.height, settings.title.c_str(), nullptr, nullptr);
     if (!mWindow) {
         const std::string reason = lastGlfwError();
         glfwTerminate();
@@ -33,9 +38,9 @@ Window::Window(const std::string& title, int width, int height, bool debug, bool
     }
     glfwMakeContextCurrent(mWindow);
     try {
-        glfwSwapInterval(0);
+        glfwSwapInterval(settings.vsync ? 1 : 0);
         requireGl45();
-        if (debug) installDebugOutput();
+        if (settings.debug) installDebugOutput();
     } catch (...) {
         glfwDestroyWindow(mWindow);
         glfwTerminate();
@@ -57,8 +62,42 @@ void Window::swapBuffers() {
 void Window::pollEvents() {
     glfwPollEvents();
 }
+void Window::waitEvents(double seconds) {
+    glfwWaitEventsTimeout(seconds);
+}
 void Window::framebufferSize(int& width, int& height) const {
     glfwGetFramebufferSize(mWindow, &width, &height);
+}
+
+void Window::clear(float r, float g, float b) {
+    int width = 0, height = 0;
+    framebufferSize(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearColor(r, g, b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+}
+
+Image Window::readBack() const {
+    int width = 0, height = 0;
+    framebufferSize(width, height);
+    Image image(std::max(width, 0), std::max(height, 0), 4);
+    if (image.pixels.empty()) return image;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    // GL's rows run bottom-up; an Image's top-down.
+    const std::size_t row = std::size_t(width) * 4;
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(image.at(0, y), image.at(0, y) + row, image.at(0, height - 1 - y));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            image.at(x, y)[3] = 255;
+    return image;
 }
 
 }  // namespace gnomon::gl

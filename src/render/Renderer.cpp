@@ -265,7 +265,7 @@ struct Renderer::Impl {
         if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));
     }
 
-    GLuint drawPanel(int light, int width, int height) {
+    GlTexture drawPanel(int light, int width, int height) {
         makeCurrent();
         if (!panelTarget || panelColour.width() != width || panelColour.height() != height) {
             panelColour = gl::Texture::plain2D("shadow map panel", GL_RGBA8, width, height);
@@ -279,9 +279,8 @@ struct Renderer::Impl {
         glViewport(0, 0, width, height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         glClearNamedFramebufferfv(panelTarget.id(), GL_COLOR, 0, black);
-        return debugPass.drawMaps(shadowPass, plan.shadowed(), light, width, height)
-                   ? panelColour.id()
-                   : 0;
+        if (!debugPass.drawMaps(shadowPass, plan.shadowed(), light, width, height)) return {};
+        return {panelColour.id(), width, height};
     }
 
     Image render(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
@@ -321,11 +320,12 @@ void Renderer::draw(const Scene& scene, const RenderOptions& options) {
     mImpl->draw(scene, options, nullptr);
 }
 
-unsigned Renderer::frameTexture() const {
-    return mImpl->colourView.id();
+GlTexture Renderer::frameTexture() const {
+    const gl::Texture& t = mImpl->colourView;
+    return {t.id(), t.width(), t.height()};
 }
 
-unsigned Renderer::drawShadowMapPanel(int light, int width, int height) {
+GlTexture Renderer::drawShadowMapPanel(int light, int width, int height) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384) {
         throw Error(ErrorKind::InvalidInput, "shadow map panel size must be in 1..16384, got " +
                                                  std::to_string(width) + "x" +

@@ -18,6 +18,7 @@
 
 #include "gnomon/Error.h"
 #include "scene/AssimpParts.h"
+#include "scene/ModelFinish.h"
 #include "scene/SceneUtil.h"
 
 namespace gnomon {
@@ -244,13 +245,12 @@ void readLights(Context& cx) {
     }
 }
 
-// The first camera, else one framing the bounds. assimp 5.2's importers give the full
+// The file's first camera, given the bounds of what is drawn. assimp 5.2's importers give the full
 // horizontal angle (despite its header; assimp issue 2256): vertical = 2 atan(tan(h/2)/a).
-void readCamera(Context& cx, const Aabb& bounds) {
+void readCamera(Context& cx, Camera& cam, const Aabb& bounds) {
     const glm::vec3 centre = bounds.centre();
     const float radius = std::max(bounds.radius(), 1e-6f);
-    Camera& cam = cx.scene.camera;
-    if (cx.ai.mNumCameras > 0) {
+    {
         const aiCamera& c = *cx.ai.mCameras[0];
         const std::string where = "camera '" + std::string(c.mName.C_Str()) + "'";
         const glm::mat4 world = placed(cx, c.mName, "camera");
@@ -295,8 +295,6 @@ void readCamera(Context& cx, const Aabb& bounds) {
             cam.far = glm::length(cam.eye - centre) + 4.0f * radius;
         }
         if (!finite(cam.eye)) cx.fail(where + " has a position that is not finite");
-    } else {
-        frameWithCamera(cx.scene, bounds);
     }
 }
 
@@ -353,25 +351,16 @@ Scene loadWithAssimp(const std::string& path) {
 
     readMaterials(cx);
     walk(cx, *cx.ai.mRootNode, glm::mat4(1.0f), 0);
-    untextureObjectsWithoutUvs(scene);  // each was warned about with its mesh
-    if (cx.zeroArea > 0)
-        scene.warnings.push_back(std::to_string(cx.zeroArea) + " zero-area triangles skipped");
-    if (scene.objects.empty()) fail("the scene has no triangles to draw");
-
-    const Aabb bounds = worldBounds(scene, meshBounds(scene), 0.0, false);
     readLights(cx);
-    addDefaultSun(scene);
-    readCamera(cx, bounds);
-    scene.options.width = scene.options.height = 512;
-    scene.options.shading.output =
-        OutputEncoding::Srgb;  // authored for display, as viewers show it
-
-    if (const std::vector<std::string> problems = scene.validate(); !problems.empty()) {
-        std::string all;
-        for (const std::string& p : problems)
-            all += (all.empty() ? "" : "; ") + p;
-        fail("the loaded scene is inconsistent: " + all);
+    LoadedModel loaded;
+    loaded.file = path;
+    loaded.zeroAreaTriangles = cx.zeroArea;
+    if (cx.ai.mNumCameras > 0) {
+        loaded.placeCamera = [&cx](Camera& cam, const Aabb& bounds) {
+            readCamera(cx, cam, bounds);
+        };
     }
+    finishModelScene(scene, loaded);
     return scene;
 }
 

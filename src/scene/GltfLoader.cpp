@@ -18,6 +18,7 @@
 
 #include "gnomon/Error.h"
 #include "scene/GltfParts.h"
+#include "scene/ModelFinish.h"
 #include "scene/SceneUtil.h"
 
 namespace gnomon {
@@ -357,60 +358,31 @@ void readLights(Context& cx, const std::vector<Placed>& lights) {
     }
 }
 
-// gnomon has no exposure control: photometric intensities (tens of candela at lamp
-// scale) would saturate. Keep their ratios and scale them so the brightest point or
-// spot light gives 1 at a quarter of the scene's size, and no sun exceeds 1.
-void scaleLights(Scene& scene, float radius) {
-    float brightest = 0.0f, brightestSun = 0.0f;
-    for (const Light& l : scene.lights) {
-        (l.type == LightType::Directional ? brightestSun : brightest) =
-            std::max(l.type == LightType::Directional ? brightestSun : brightest, l.intensity);
-    }
-    const float quarter = 0.5f * radius;
-    const float pointScale = brightest > 0.0f ? quarter * quarter / brightest : 1.0f;
-    const float sunScale = brightestSun > 1.0f ? 1.0f / brightestSun : 1.0f;
-    for (Light& l : scene.lights)
-        l.intensity *= l.type == LightType::Directional ? sunScale : pointScale;
-    if (brightest > 0.0f || sunScale != 1.0f) {
-        scene.warnings.push_back("light intensities scaled for display (point and spot x" +
-                                 std::to_string(pointScale) + ", directional x" +
-                                 std::to_string(sunScale) + ")");
-    }
-}
-
-// The camera: the first one placed, else one framing the bounds.
-void placeCamera(Context& cx, const std::vector<Placed>& cameras, const Aabb& bounds) {
-    const tinygltf::Model& model = cx.model;
+// The first camera placed in the file, given the bounds of what is drawn.
+void placeCamera(const tinygltf::Camera& c, const glm::mat4& w, Camera& cam, const Aabb& bounds) {
     const glm::vec3 centre = bounds.centre();
     const float radius = std::max(bounds.radius(), 1e-6f);
-    Camera& cam = cx.scene.camera;
-    if (!cameras.empty() && std::size_t(cameras.front().index) < model.cameras.size()) {
-        const tinygltf::Camera& c = model.cameras[std::size_t(cameras.front().index)];
-        const glm::mat4& w = cameras.front().world;
-        cam.eye = glm::vec3(w[3]);
-        cam.centre = cam.eye + glm::normalize(glm::mat3(w) * glm::vec3(0, 0, -1)) * radius;
-        cam.up = glm::normalize(glm::mat3(w) * glm::vec3(0, 1, 0));
-        if (c.type == "orthographic") {
-            cam.projection = Projection::Orthographic;
-            cam.right = float(c.orthographic.xmag);
-            cam.left = -cam.right;
-            cam.top = float(c.orthographic.ymag);
-            cam.bottom = -cam.top;
-            cam.near = float(c.orthographic.znear);
-            cam.far = float(c.orthographic.zfar);
-        } else {
-            cam.fovyDegrees = float(glm::degrees(c.perspective.yfov));
-            cam.aspect = float(c.perspective.aspectRatio);
-            cam.near = float(c.perspective.znear);
-            cam.far = c.perspective.zfar > 0.0 ? float(c.perspective.zfar)
-                                               : glm::length(cam.eye - centre) + 4.0f * radius;
-        }
-        if (!(cam.near > 0.0f && cam.far > cam.near)) {
-            cam.near = radius * 1e-3f;
-            cam.far = glm::length(cam.eye - centre) + 4.0f * radius;
-        }
+    cam.eye = glm::vec3(w[3]);
+    cam.centre = cam.eye + glm::normalize(glm::mat3(w) * glm::vec3(0, 0, -1)) * radius;
+    cam.up = glm::normalize(glm::mat3(w) * glm::vec3(0, 1, 0));
+    if (c.type == "orthographic") {
+        cam.projection = Projection::Orthographic;
+        cam.right = float(c.orthographic.xmag);
+        cam.left = -cam.right;
+        cam.top = float(c.orthographic.ymag);
+        cam.bottom = -cam.top;
+        cam.near = float(c.orthographic.znear);
+        cam.far = float(c.orthographic.zfar);
     } else {
-        frameWithCamera(cx.scene, bounds);
+        cam.fovyDegrees = float(glm::degrees(c.perspective.yfov));
+        cam.aspect = float(c.perspective.aspectRatio);
+        cam.near = float(c.perspective.znear);
+        cam.far = c.perspective.zfar > 0.0 ? float(c.perspective.zfar)
+                                           : glm::length(cam.eye - centre) + 4.0f * radius;
+    }
+    if (!(cam.near > 0.0f && cam.far > cam.near)) {
+        cam.near = radius * 1e-3f;
+        cam.far = glm::length(cam.eye - centre) + 4.0f * radius;
     }
 }
 
@@ -452,24 +424,20 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
 
     Walk walk{cx, {}, {}, {}};
     walkNodes(walk);
-    untextureObjectsWithoutUvs(scene);  // each was warned about: no TEXCOORD
-    if (cx.zeroArea > 0)
-        scene.warnings.push_back(std::to_string(cx.zeroArea) + " zero-area triangles skipped");
-    if (scene.objects.empty()) read.fail("the scene has no triangles to draw");
-
-    // World bounds of what is drawn (as the renderer's fitting sees them).
-    const Aabb bounds = worldBounds(scene, meshBounds(scene), 0.0, false);
-    const float radius = std::max(bounds.radius(), 1e-6f);
-
     readLights(cx, walk.lights);
-    scaleLights(scene, radius);
-    addDefaultSun(scene);
 
-    placeCamera(cx, walk.cameras, bounds);
-    scene.ambient = glm::vec3(0.1f);
-    scene.options.width = scene.options.height = 512;
-    scene.options.shading.output =
-        OutputEncoding::Srgb;  // authored for display, as viewers show it
+    LoadedModel loaded;
+    loaded.file = path;
+    loaded.zeroAreaTriangles = cx.zeroArea;
+    loaded.photometricLights = true;
+    if (!walk.cameras.empty() && std::size_t(walk.cameras.front().index) < model.cameras.size()) {
+        const tinygltf::Camera& c = model.cameras[std::size_t(walk.cameras.front().index)];
+        const glm::mat4 world = walk.cameras.front().world;
+        loaded.placeCamera = [&c, world](Camera& cam, const Aabb& bounds) {
+            placeCamera(c, world, cam, bounds);
+        };
+    }
+    finishModelScene(scene, loaded);
     return scene;
 }
 

@@ -198,23 +198,6 @@ bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t ind
     return scene.lights[index].enabled;
 }
 
-void untextureObjectsWithoutUvs(Scene& scene) {
-    std::map<std::uint32_t, std::uint32_t> copyOf;
-    for (Object& o : scene.objects) {
-        if (scene.materials[o.material].baseColourTexture < 0 || !scene.meshes[o.mesh].uvs.empty())
-            continue;
-        auto [it, added] = copyOf.try_emplace(o.material, 0u);
-        if (added) {
-            Material copy = scene.materials[o.material];
-            copy.baseColourTexture = -1;
-            copy.name += " (untextured)";
-            scene.materials.push_back(copy);
-            it->second = std::uint32_t(scene.materials.size() - 1);
-        }
-        o.material = it->second;
-    }
-}
-
 void addGround(Scene& scene) {
     const Aabb box = worldBounds(scene, meshBounds(scene), 0.0, false);
     if (box.empty()) return;
@@ -241,29 +224,6 @@ void addGround(Scene& scene) {
     o.castsShadows = false;
     scene.objects.push_back(o);
     scene.revision.bump();  // an edit in place: a renderer that synced the scene must see it
-}
-
-void addDefaultSun(Scene& scene) {
-    if (!scene.lights.empty()) return;
-    Light sun;
-    sun.name = "default sun";
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
-    sun.intensity = 1.0f;
-    scene.lights.push_back(sun);
-    scene.warnings.push_back("no lights: a default sun was added");
-}
-
-void frameWithCamera(Scene& scene, const Aabb& bounds) {
-    const glm::vec3 centre = bounds.centre();
-    const float radius = std::max(bounds.radius(), 1e-6f);
-    Camera& cam = scene.camera;
-    cam.centre = centre;
-    cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.5f, 1.0f)) * (2.6f * radius);
-    cam.fovyDegrees = 45.0f;
-    cam.near = radius * 0.02f;
-    cam.far = radius * 6.0f;
-    scene.warnings.push_back("no camera: one framing the scene was added");
 }
 
 const char* toString(LightType v) {

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "gnomon/Error.h"
+#include "scene/ModelFinish.h"
 #include "scene/SceneFileJson.h"
 #include "scene/SceneFileRead.h"
 #include "scene/SceneFileWrite.h"

@@ -16,12 +16,4 @@ Aabb worldBounds(const Scene& scene, const std::vector<Aabb>& meshBoxes, double 
 // Is light `index` on for these options (RenderOptions::lightOnly overrides the scene)?
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index);
 
-// Model loaders: objects whose material is textured but whose mesh has no texture
-// coordinates get an untextured copy of that material (one copy per material).
-void untextureObjectsWithoutUvs(Scene& scene);
-// Model loaders: when `scene` has no lights, adds a default sun and says so in its warnings.
-void addDefaultSun(Scene& scene);
-// Model loaders without a camera: a 45-degree camera framing `bounds`, and a warning.
-void frameWithCamera(Scene& scene, const Aabb& bounds);
-
 }  // namespace gnomon

@@ -15,6 +15,7 @@
 #include "UnitTestUtil.h"
 #include "gnomon/Error.h"
 #include "gnomon/Scene.h"
+#include "scene/ModelFinish.h"
 #include "scene/SceneUtil.h"
 
 namespace gnomon {

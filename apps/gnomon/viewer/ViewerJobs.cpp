@@ -35,7 +35,7 @@ void Viewer::pollScore() {
     if (mJob->result) {
         mScore = std::move(mJob->result);
         mScoredRevision = mJob->revision;
-        mOverlayTexture = ImageTexture(mScore->errors);
+        mOverlayTexture = gl::Texture::display2D("score error map", mScore->errors);
         mOverlay = true;
         std::printf(
             "gnomon view: score: misclassified %.4f, false shadow %.4f, leak %.4f "

@@ -13,9 +13,11 @@
 #include <thread>
 #include <vector>
 
+#include "ImGuiSession.h"
 #include "Viewer.h"
 #include "ViewerState.h"
-#include "ViewerWindow.h"
+#include "gl/Objects.h"
+#include "gl/Window.h"
 #include "gnomon/gnomon.h"
 
 namespace gnomon::cli::viewer {
@@ -118,7 +120,7 @@ private:
 
     const ViewArgs& mArgs;
     bool mVerbose;
-    GlfwWindow mWindow;
+    gl::Window mWindow;
     ImGuiSession mImGui;
     Renderer mRenderer;
     view::State mState;
@@ -134,7 +136,7 @@ private:
     std::vector<double> mFrameMs;
     bool mMeasure = true;
 
-    GLuint mSideTexture = 0;
+    GlTexture mSideTexture;
     int mSideW = 0, mSideH = 0, mSideLight = -1;
     bool mSideDirty = true;
     int mDragButton = -1;
@@ -143,7 +145,7 @@ private:
     std::optional<ScoreResult> mScore;
     std::uint64_t mScoredRevision = 0;
     std::string mScoreError;
-    ImageTexture mOverlayTexture;
+    gl::Texture mOverlayTexture;
     bool mOverlay = false;
     float mOverlayOpacity = 0.6f;
 

@@ -10,8 +10,15 @@
 namespace gnomon::cli::viewer {
 namespace {
 
-ImTextureID imguiTexture(GLuint name) {
+// Dear ImGui's OpenGL backend takes a texture's GL name as its ImTextureID.
+ImTextureID imguiTexture(unsigned name) {
     return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(name));
+}
+ImTextureID imguiTexture(const GlTexture& texture) {
+    return imguiTexture(texture.glName);
+}
+ImTextureID imguiTexture(const gl::Texture& texture) {
+    return imguiTexture(texture.id());
 }
 
 }  // namespace
@@ -30,24 +37,24 @@ void Viewer::views(float x, float mainW, float viewW, float viewH) {
         ImGui::PushTextWrapPos(origin.x + mainW - 10);
         ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", mFrameError.c_str());
         ImGui::PopTextWrapPos();
-    } else if (mRenderer.frameTexture() != 0) {
+    } else if (const GlTexture frame = mRenderer.frameTexture()) {
         const ImVec2 size(float(mDrawnWidth) / io.DisplayFramebufferScale.x,
                           float(mDrawnHeight) / io.DisplayFramebufferScale.y);
-        ImGui::Image(imguiTexture(mRenderer.frameTexture()), size, {0, 1}, {1, 0});
+        ImGui::Image(imguiTexture(frame), size, {0, 1}, {1, 0});
         const bool hovered = ImGui::IsItemHovered();
-        if (mOverlay && mOverlayTexture.id() != 0) {
+        if (mOverlay && mOverlayTexture) {
             ImGui::GetWindowDrawList()->AddImage(
-                imguiTexture(mOverlayTexture.id()), origin, {origin.x + size.x, origin.y + size.y},
+                imguiTexture(mOverlayTexture), origin, {origin.x + size.x, origin.y + size.y},
                 {0, 0}, {1, 1}, IM_COL32(255, 255, 255, int(255 * mOverlayOpacity)));
         }
         mouseOnView(hovered, size.y);
     }
     if (mState.side == view::SideView::ShadowMap) {
         ImGui::SetCursorScreenPos({origin.x + mainW, origin.y});
-        if (mSideTexture != 0) {
+        if (mSideTexture) {
             ImGui::Image(imguiTexture(mSideTexture),
-                         {float(mSideW) / io.DisplayFramebufferScale.x,
-                          float(mSideH) / io.DisplayFramebufferScale.y},
+                         {float(mSideTexture.width) / io.DisplayFramebufferScale.x,
+                          float(mSideTexture.height) / io.DisplayFramebufferScale.y},
                          {0, 1}, {1, 0});
         } else {
             ImGui::TextDisabled(

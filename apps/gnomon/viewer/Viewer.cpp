@@ -17,30 +17,15 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The default framebuffer's back buffer as an image (docs screenshots of the whole window).
-Image readWindow(int width, int height) {
-    Image image(width, height, 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
-    const std::size_t row = std::size_t(width) * 4;
-    for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(image.at(0, y), image.at(0, y) + row, image.at(0, height - 1 - y));
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            image.at(x, y)[3] = 255;
-    return image;
-}
-
 }  // namespace
 
 Viewer::Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHeight,
                view::State state, std::vector<view::Command> script)
     : mArgs(args),
       mVerbose(verbose),
-      mWindow(windowWidth, windowHeight),
-      mImGui(mWindow.get()),
+      mWindow(gl::WindowSettings{
+          .title = "gnomon view", .width = windowWidth, .height = windowHeight, .vsync = true}),
+      mImGui(mWindow.handle()),
       mRenderer(contextOptions(verbose)),
       mState(std::move(state)),
       mScript(std::move(script)),
@@ -51,12 +36,12 @@ Viewer::Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHe
 
 int Viewer::run() {
     auto last = Clock::now();
-    while (!glfwWindowShouldClose(mWindow.get()) && !mQuit) {
+    while (!mWindow.shouldClose() && !mQuit) {
         const bool idle = !mScripted && !mState.playing && !mJob && !dirty();
         if (idle) {
-            glfwWaitEventsTimeout(0.25);
+            mWindow.waitEvents(0.25);
         } else {
-            glfwPollEvents();
+            mWindow.pollEvents();
         }
         const auto now = Clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
@@ -108,19 +93,14 @@ void Viewer::frame() {
     measurePanel(panelW, viewH, viewW, measureH);
 
     ImGui::Render();
-    int fbW = 0, fbH = 0;
-    glfwGetFramebufferSize(mWindow.get(), &fbW, &fbH);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fbW, fbH);
-    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    mWindow.clear(0.08f, 0.08f, 0.09f);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (!mWindowShot.empty()) {
-        writePng(mWindowShot, readWindow(fbW, fbH));
+        writePng(mWindowShot, mWindow.readBack());
         std::printf("gnomon view: wrote %s (window)\n", mWindowShot.c_str());
         mWindowShot.clear();
     }
-    glfwSwapBuffers(mWindow.get());
+    mWindow.swapBuffers();
     ++mFrames;
 }
 
@@ -153,7 +133,7 @@ void Viewer::renderViews(int mainW, int mainH, int sideW) {
         mSideLight = mState.selectedLight;
         mSideTexture = mFrameError.empty()
                            ? mRenderer.drawShadowMapPanel(mState.selectedLight, sideW, mainH)
-                           : 0;
+                           : GlTexture{};
     }
 }
 

@@ -1,0 +1,107 @@
+// The loaders' shared last step (ModelFinish.h).
+#include "scene/ModelFinish.h"
+
+#include <algorithm>
+#include <map>
+
+#include "gnomon/Error.h"
+#include "scene/SceneUtil.h"
+
+namespace gnomon {
+namespace {
+
+// gnomon has no exposure control: photometric intensities (tens of candela at lamp
+// scale) would saturate. Keep their ratios and scale them so the brightest point or
+// spot light gives 1 at a quarter of the scene's size, and no sun exceeds 1.
+void scaleLights(Scene& scene, float radius) {
+    float brightest = 0.0f, brightestSun = 0.0f;
+    for (const Light& l : scene.lights) {
+        (l.type == LightType::Directional ? brightestSun : brightest) =
+            std::max(l.type == LightType::Directional ? brightestSun : brightest, l.intensity);
+    }
+    const float quarter = 0.5f * radius;
+    const float pointScale = brightest > 0.0f ? quarter * quarter / brightest : 1.0f;
+    const float sunScale = brightestSun > 1.0f ? 1.0f / brightestSun : 1.0f;
+    for (Light& l : scene.lights)
+        l.intensity *= l.type == LightType::Directional ? sunScale : pointScale;
+    if (brightest > 0.0f || sunScale != 1.0f) {
+        scene.warnings.push_back("light intensities scaled for display (point and spot x" +
+                                 std::to_string(pointScale) + ", directional x" +
+                                 std::to_string(sunScale) + ")");
+    }
+}
+
+}  // namespace
+
+void untextureObjectsWithoutUvs(Scene& scene) {
+    std::map<std::uint32_t, std::uint32_t> copyOf;
+    for (Object& o : scene.objects) {
+        if (scene.materials[o.material].baseColourTexture < 0 || !scene.meshes[o.mesh].uvs.empty())
+            continue;
+        auto [it, added] = copyOf.try_emplace(o.material, 0u);
+        if (added) {
+            Material copy = scene.materials[o.material];
+            copy.baseColourTexture = -1;
+            copy.name += " (untextured)";
+            scene.materials.push_back(copy);
+            it->second = std::uint32_t(scene.materials.size() - 1);
+        }
+        o.material = it->second;
+    }
+}
+
+void addDefaultSun(Scene& scene) {
+    if (!scene.lights.empty()) return;
+    Light sun;
+    sun.name = "default sun";
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+    sun.intensity = 1.0f;
+    scene.lights.push_back(sun);
+    scene.warnings.push_back("no lights: a default sun was added");
+}
+
+void frameWithCamera(Scene& scene, const Aabb& bounds) {
+    const glm::vec3 centre = bounds.centre();
+    const float radius = std::max(bounds.radius(), 1e-6f);
+    Camera& cam = scene.camera;
+    cam.centre = centre;
+    cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.5f, 1.0f)) * (2.6f * radius);
+    cam.fovyDegrees = 45.0f;
+    cam.near = radius * 0.02f;
+    cam.far = radius * 6.0f;
+    scene.warnings.push_back("no camera: one framing the scene was added");
+}
+
+void finishModelScene(Scene& scene, const LoadedModel& loaded) {
+    const auto fail = [&](const std::string& what) {
+        throw Error(ErrorKind::InvalidInput, loaded.file + ": " + what);
+    };
+    untextureObjectsWithoutUvs(scene);  // the loaders warned about each: no coordinates
+    if (loaded.zeroAreaTriangles > 0) {
+        scene.warnings.push_back(std::to_string(loaded.zeroAreaTriangles) +
+                                 " zero-area triangles skipped");
+    }
+    if (scene.objects.empty()) fail("the scene has no triangles to draw");
+
+    // World bounds of what is drawn (as the renderer's fitting sees them).
+    const Aabb bounds = worldBounds(scene, meshBounds(scene), 0.0, false);
+    if (loaded.photometricLights) scaleLights(scene, std::max(bounds.radius(), 1e-6f));
+    addDefaultSun(scene);
+    if (loaded.placeCamera) {
+        loaded.placeCamera(scene.camera, bounds);
+    } else {
+        frameWithCamera(scene, bounds);
+    }
+    scene.options.width = scene.options.height = 512;
+    scene.options.shading.output = OutputEncoding::Srgb;
+
+    if (const std::vector<std::string> problems = scene.validate(); !problems.empty()) {
+        std::string all;
+        for (const std::string& p : problems)
+            all += (all.empty() ? "" : "; ") + p;
+        fail("the loaded scene is inconsistent: " + all);
+    }
+}
+
+}  // namespace gnomon

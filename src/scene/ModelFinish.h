@@ -1,0 +1,41 @@
+// What every model loader (glTF through tinygltf, other formats through assimp) and the
+// scene-file reader do once the file's own content is read: defaults for what the file left
+// out (a sun, a camera) and the settings a model is shown with. One place, so that a model
+// looks the same whichever loader read it.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "core/Aabb.h"
+#include "gnomon/Scene.h"
+
+namespace gnomon {
+
+// What a loader read, for the step the loaders share (finishModelScene).
+struct LoadedModel {
+    std::string file;                // named in the error when nothing was read
+    long zeroAreaTriangles = 0;      // skipped by the loader; reported once
+    bool photometricLights = false;  // intensities in candela and lux (glTF)
+    // Places the file's own camera, given the bounds of what is drawn; empty when the file
+    // has no camera (one framing the model is added).
+    std::function<void(Camera&, const Aabb& bounds)> placeCamera;
+};
+
+// The loaders' last step: objects whose material is textured but whose mesh has no texture
+// coordinates untextured, skipped triangles reported, photometric lights scaled for display,
+// a default sun when there is no light, the file's camera or one framing the model, and a
+// model's render settings (512x512, sRGB output as viewers show authored colours). Throws
+// gnomon::Error (InvalidInput, naming the file) when there is nothing to draw or the result
+// is inconsistent.
+void finishModelScene(Scene& scene, const LoadedModel& loaded);
+
+// Objects whose material is textured but whose mesh has no texture coordinates get an
+// untextured copy of that material (one copy per material).
+void untextureObjectsWithoutUvs(Scene& scene);
+// When `scene` has no lights, adds a default sun and says so in its warnings.
+void addDefaultSun(Scene& scene);
+// A 45-degree camera framing `bounds`, and a warning.
+void frameWithCamera(Scene& scene, const Aabb& bounds);
+
+}  // namespace gnomon
