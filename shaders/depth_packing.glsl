@@ -1,6 +1,7 @@
 // Depth in 8-bit colour channels, the GPU side of src/shadow/DepthPacking.cpp:
-// PACK_R8 (red only), PACK_256 (the WebGL book's base), PACK_255 (the tutorial's base);
-// none of them: a native depth texture, whose red channel is the depth.
+// PACK_R8 (red only), PACK_256 (the base of the WebGL Programming Guide's Shadow_highp),
+// PACK_255 (the online WebGL tutorial's base); none of them: a native depth texture, whose
+// red channel is the depth.
 #if defined(PACK_256)
 const float kPackBase = 256.0;
 #else

@@ -21,7 +21,7 @@ float depthTolerance(LightData light, float stored, float spacing) {
 // Fetch the stored depth (filtered by the sampler: --map-filter) and compare by hand: every
 // lookup of colour formats (PACK_*: decode first), and --filter none on native depth (the
 // course text's LINEAR lookup of a depth texture). LINEAR interpolates stored depth: fine
-// for one channel, wrong for packed channels (why the book's Shadow_highp uses NEAREST).
+// for one channel, wrong for packed channels (why Shadow_highp of the WebGL Programming Guide, ch. 10, uses NEAREST).
 #include "depth_packing.glsl"
 layout(binding = 0) uniform sampler2DArray uShadowMaps;
 float rawDepth(vec2 uv, float layer) {
@@ -270,7 +270,7 @@ float cubePlaneDepth(vec3 p, vec3 offset, float near, float far) {
 
 // Point lights: the cube face of the direction light -> point holds the depth
 // along that face's axis; compare against the same depth of this point. PCF taps lie in the
-// face's plane (a 2-D kernel on the face, not the tutorial's 3-D grid of directions: the
+// face's plane (a 2-D kernel on the face, not the online WebGL tutorial's 3-D grid of directions: the
 // same footprint for k^2 instead of k^3 lookups).
 float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
     vec3 toPoint = wsPosition - light.wsPosition.xyz;
@@ -397,7 +397,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     // Stored depth per unit of layer uv on the receiver's plane; `spread`: how far it moves
     // between a tap's point and the centres of the texels a bilinear or nearest read uses.
     // The gathers, which compare at texel centres, keep it too: measured, without it (or with
-    // a quarter texel) single pixels darken along lines on the tutorial room's lit walls; the
+    // a quarter texel) single pixels darken along lines on tutorial-room's lit walls; the
     // cause was not pinned down.
     vec2 g = receiverPlaneGradient(light, shadowCoord, coord, texelWorld, texelUv / uvScale,
                                     wsToLight) / uvScale;

@@ -12,7 +12,7 @@ namespace gnomon {
 // What a shadowed fragment keeps.
 enum class ShadowedRule {
     AmbientOnly,  // the light's diffuse and specular terms are dropped (course text)
-    Factor,       // the fragment's colour is multiplied by shadowFactor (WebGL book: 0.7)
+    Factor,       // the colour is multiplied by shadowFactor (WebGL Programming Guide: 0.7)
 };
 
 // A fragment outside a light's shadow map.
@@ -39,16 +39,16 @@ enum class ShadowFilter {
 // formats are depth attachments compared by the sampler. Point-light cubes always use a
 // native format (depth32f when a colour format is chosen).
 enum class DepthFormat {
-    R8,              // red channel of RGBA8: 1/256 steps (the WebGL book's first sample)
-    Rgba8Packed256,  // four 8-bit channels, base 256 (the WebGL book's Shadow_highp)
-    Rgba8Packed255,  // four 8-bit channels, base 255 (the tutorial)
+    R8,              // red channel of RGBA8: 1/256 steps (WebGL Programming Guide, ch. 10)
+    Rgba8Packed256,  // four 8-bit channels, base 256 (its Shadow_highp)
+    Rgba8Packed255,  // four 8-bit channels, base 255 (the online WebGL tutorial)
     Depth16,
     Depth24,
     Depth32F,
 };
 
 // Filtering of the stored depth before a comparison by hand: every lookup of a
-// colour format, and --filter none on native depth (the course text's LINEAR lookups).
+// colour format, and --filter none on native depth (the LINEAR lookups of W. Brown's course text).
 enum class MapFilter { Nearest, Linear };
 
 // What shadow a blended (AlphaMode::Blend) material casts.

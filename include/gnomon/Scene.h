@@ -97,7 +97,7 @@ enum class LightType {
     Directional,  // parallel rays along `direction`, no falloff
     Spot,         // from `position` along `direction` inside a cone, falls off
     Point,        // from `position` in all directions, falls off
-    Area,         // the tutorial's simplified area light: parallel rays along `direction`
+    Area,         // the WebGL tutorial's simplified area light: parallel rays along `direction`
                   // from the plane through `position`, falling off with the distance from
                   // that plane
 };
@@ -109,7 +109,8 @@ enum class ShadowCameraPolicy {
              // the cone for spots, six cube faces for point lights; no map when nothing
              // visible can be shadowed
     Manual,  // look at `target` with `up`, the projection numbers as given
-    Course,  // the course text: look at the view camera's centre with the view camera's up
+    Course,  // W. Brown's course text, §12.6: look at the view camera's centre with the view
+             // camera's up
 };
 
 struct ShadowCamera {

@@ -42,7 +42,7 @@ void addOutput(std::vector<OptionSpec>& s) {
          .defaultNote = "the scene's, usually 512x512"});
     add({.name = "time",
          .group = "Output",
-         .doc = "seconds of animation to pose (the book triangle turns 40 deg/s)",
+         .doc = "seconds of animation to pose (book-triangle turns 40 deg/s)",
          .unit = "seconds",
          .kind = K::Real,
          .min = -kHuge,

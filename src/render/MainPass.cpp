@@ -10,7 +10,8 @@ namespace gnomon::render {
 
 namespace {
 // Stored depth fetched and compared in the shader: colour formats always, native depth for
-// --filter none (so --map-filter applies, as in the course text's LINEAR lookups).
+// --filter none (so --map-filter applies, as in the LINEAR lookups of W. Brown's course text,
+// §12.6).
 bool handCompare(const ShadowOptions& s) {
     return isColourFormat(s.depthFormat) || s.filter == ShadowFilter::None;
 }

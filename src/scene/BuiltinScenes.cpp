@@ -1,7 +1,10 @@
 // The built-in scenes: the textbooks' set-ups with their exact numbers.
-// book-*: the WebGL book's Shadow / Shadow_highp samples; course-*: the course text's
-// two-light experiment (models of seeds/models rebuilt from their numbers); tutorial-room*:
-// the tutorial's sun over a room, with thick (boxes) or thin (single quads) walls.
+// book-*: "the book", K. Matsuda and R. Lea, WebGL Programming Guide, ch. 10, samples Shadow
+// and Shadow_highp; course-*: "the course text", W. Brown, Learn Computer Graphics using
+// WebGL, §12.6 Shadows, its two-light experiment (its models rebuilt from their numbers);
+// tutorial-room*: "the tutorial", the shadow-mapping chapter of the online WebGL tutorial
+// that follows its lighting chapter: its sun over a room, with thick (boxes) or thin
+// (single quads) walls.
 #include <cmath>
 #include <functional>
 
@@ -176,7 +179,7 @@ void addThreePlanes(Scene& s, const glm::mat4& at) {
         addObject(s, s.meshes[i].name, i, i, at);
 }
 
-// "Cubes along axes": cube size and offsets measured from seeds/models/xyz_blocks.obj.
+// "Cubes along axes": cube size and offsets measured from the course text's xyz_blocks.obj model.
 void addCubes(Scene& s, const glm::mat4& at) {
     const float size = 0.982f;
     if (s.meshes.empty()) {

@@ -54,7 +54,8 @@ float depthRoundTripBound(DepthFormat format) {
             return 0.5f / 255.0f;  // half a level
         case DepthFormat::Rgba8Packed256:
             // The red channel holds k/256, stored as the nearest k'/255: up to half a level
-            // off near depth 0.5 (~0.002; the book's 0.0015 tolerance holds only near 1).
+            // off near depth 0.5 (~0.002; the WebGL Programming Guide's 0.0015 tolerance holds only
+            // near 1).
             return 0.5f / 255.0f + 1e-6f;
         case DepthFormat::Rgba8Packed255:
             return 2e-7f;  // float arithmetic, not storage

@@ -5,8 +5,10 @@
 //   packed-256: fract(d * 256^i) per channel, minus the next channel's carry / 256 (the WebGL
 //              book). Decoding sums c_i / 256^i. Storage rounds to 255ths, not 256ths: the
 //              red channel's k/256 comes back as the nearest k'/255, up to ~0.002 off near
-//              depth 0.5 and ~0.0004 near depth 1, where the book's depths lie.
-//   packed-255: the same in base 255, which matches 8-bit storage (the tutorial).
+//              depth 0.5 and ~0.0004 near depth 1, where the depths of the WebGL Programming
+//              Guide's sample lie.
+//   packed-255: the same in base 255, which matches 8-bit storage (the online WebGL tutorial's
+//   shadow chapter).
 #pragma once
 
 #include <glm/glm.hpp>
