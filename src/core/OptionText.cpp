@@ -61,7 +61,8 @@ std::optional<std::string> parseOption(const OptionSpec& spec, const std::string
     const std::string got = ", got '" + text + "'";
     switch (spec.kind) {
         case OptionKind::Size: {
-            static const std::regex kSize(R"((\d{1,5})x(\d{1,5}))");
+            // Any digits parse (up to 9: no int overflow); the range check names the limits.
+            static const std::regex kSize(R"((\d{1,9})x(\d{1,9}))");
             std::smatch m;
             if (!std::regex_match(text, m, kSize))
                 return "expected WIDTHxHEIGHT such as 512x512" + got;

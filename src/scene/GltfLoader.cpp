@@ -104,6 +104,44 @@ bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, 
     return true;
 }
 
+// A binary glTF's container (glTF 2.0 specification, "GLB File Format Specification"): a
+// 12-byte header (magic, version 2, total length) and chunks of (length, type, data), the
+// first JSON, the optional second BIN. tinygltf answers any fault with "Invalid glTF
+// binary."; this names the fault and its byte offset first.
+void checkGlbLayout(const std::vector<unsigned char>& bytes, const std::string& path) {
+    const auto u32 = [&](std::size_t at) {
+        std::uint32_t v = 0;
+        std::memcpy(&v, bytes.data() + at, 4);
+        return v;  // little-endian in the file; gnomon's hosts are little-endian too
+    };
+    const auto fail = [&](const std::string& what) {
+        throw Error(ErrorKind::InvalidInput, path + ": broken binary glTF: " + what);
+    };
+    const std::size_t size = bytes.size();
+    if (size < 12)
+        fail("the 12-byte header is cut off (the file has " + std::to_string(size) + " bytes)");
+    if (u32(4) != 2) fail("version " + std::to_string(u32(4)) + " at offset 4 (gnomon reads 2)");
+    if (u32(8) != size) {
+        fail("the header at offset 8 gives a length of " + std::to_string(u32(8)) +
+             " bytes, the file has " + std::to_string(size) +
+             (u32(8) > size ? " (truncated?)" : ""));
+    }
+    std::size_t at = 12;
+    for (int chunk = 0; at < size; ++chunk) {
+        const std::string where =
+            "chunk " + std::to_string(chunk) + " at offset " + std::to_string(at);
+        if (size - at < 8) fail(where + ": its 8-byte header is cut off at the end of the file");
+        const std::uint64_t length = u32(at);
+        if (length > size - at - 8) {
+            fail(where + " claims " + std::to_string(length) + " bytes of data, only " +
+                 std::to_string(size - at - 8) + " remain");
+        }
+        if (chunk == 0 && u32(at + 4) != 0x4E4F534Au)  // "JSON"
+            fail(where + " is not the JSON chunk, which must come first");
+        at += 8 + std::size_t(length);
+    }
+}
+
 // The file's bytes parsed by tinygltf, external files read through the callbacks above;
 // tinygltf's complaint (or the refused read) in the error.
 tinygltf::Model parseModel(const std::vector<unsigned char>& bytes, const std::string& path,
@@ -120,6 +158,7 @@ tinygltf::Model parseModel(const std::vector<unsigned char>& bytes, const std::s
     if (bytes.size() > kMaxFileBytes)
         throw Error(ErrorKind::InvalidInput, path + ": larger than 2 GiB");
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    if (binary) checkGlbLayout(bytes, path);
     const std::string base = folder.root.string();
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
                                                          unsigned(bytes.size()), base)

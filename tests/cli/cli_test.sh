@@ -138,6 +138,14 @@ scene_file)
 missing_file)
     run render --scene "$work/nothing.gltf" --out "$work/a.png"
     expect 2 "gnomon: error: cannot load scene '$work/nothing.gltf': no such file"
+    # A folder: which of its files to give, not a list of every extension.
+    mkdir -p "$work/model"
+    run render --scene "$work/model" --out "$work/a.png"
+    expect 2 "cannot load scene '$work/model': it is a folder; it holds no file gnomon reads"
+    printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$work/model/tri.obj"
+    run render --scene "$work/model" --out "$work/a.png"
+    expect 2 "it is a folder; give one of the files in it, such as $work/model/tri.obj"
+    [[ ! -e "$work/a.png" ]] || fail "a refused render left a.png behind"
     ;;
 unwritable_output)
     run render --scene book-triangle --size 32x32 --out "$work/no/such/folder/a.png"
@@ -150,6 +158,8 @@ malformed_size)
     expect 2 "--size: expected WIDTHxHEIGHT"
     run render --scene book-triangle --size 0x12 --out "$work/a.png"
     expect 2 "outside 1x1..16384x16384"
+    run render --scene book-triangle --size 100000x100000 --out "$work/a.png"
+    expect 2 "size 100000x100000 is outside 1x1..16384x16384"
     ;;
 bad_enum)
     run render --scene book-triangle --filter blurry --out "$work/a.png"

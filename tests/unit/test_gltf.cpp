@@ -214,6 +214,32 @@ TEST_P(BrokenFiles, AreRefusedWithWhereAndWhat) {
     }
 }
 
+// A binary glTF whose header length is right but whose chunk overruns the file: the message
+// names the chunk, its offset and the bytes it claims.
+TEST(Gltf, GlbChunkOverrunNamesTheChunkAndItsOffset) {
+    const std::string json = R"({"asset":{"version":"2.0"}})";
+    std::string glb = "glTF";
+    const auto u32 = [&](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            glb.push_back(static_cast<char>(v >> (8 * i)));
+    };
+    u32(2);
+    u32(std::uint32_t(12 + 8 + json.size()));
+    u32(std::uint32_t(json.size() + 100));  // claims 100 bytes more than there are
+    glb += "JSON" + json;
+    const std::vector<unsigned char> bytes(glb.begin(), glb.end());
+    try {
+        loadGltf(bytes, "overrun.glb", ".");
+        FAIL() << "loaded a GLB whose chunk overruns the file";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::InvalidInput);
+        EXPECT_NE(std::string(e.what()).find("overrun.glb: broken binary glTF: chunk 0 at offset "
+                                             "12 claims 127 bytes of data, only 27 remain"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Corpus, BrokenFiles,
     testing::Values(
@@ -231,7 +257,10 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"empty_scene.gltf", "no triangles", ErrorKind::InvalidInput},
         Broken{"zero_area.gltf", "no triangles", ErrorKind::InvalidInput},
         Broken{"lines_only.gltf", "no triangles", ErrorKind::InvalidInput},
-        Broken{"truncated.glb", "Invalid glTF binary", ErrorKind::InvalidInput},
+        Broken{"truncated.glb",
+               "broken binary glTF: the header at offset 8 gives a length of 1000 bytes, the "
+               "file has 21 (truncated?)",
+               ErrorKind::InvalidInput},
         Broken{"bad_image.gltf", "images[0]: the image cannot be decoded", ErrorKind::InvalidInput},
         Broken{"no_such_file.gltf", "no such file", ErrorKind::InvalidInput}),
     [](const auto& info) {
