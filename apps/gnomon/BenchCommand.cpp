@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "Progress.h"
 #include "SvgPlot.h"
 #include "gnomon/gnomon.h"
 
@@ -93,12 +94,16 @@ int mapSizeOf(const Scene& scene, const RenderOptions& o) {
 }
 
 Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options,
-            const BenchArgs& args) {
+            const BenchArgs& args, const std::string& label) {
     Run run;
     renderer.setPassTiming(true);
     std::map<std::string, std::vector<double>> perPass;
     std::vector<double> frame, shadow, main;
-    for (int i = 0; i < args.warmup + args.frames; ++i) {
+    std::atomic<int> framesDone{0};
+    const int total = args.warmup + args.frames;
+    const Activity activity(label, [&] { return double(framesDone.load()) / double(total); });
+    for (int i = 0; i < total; ++i, ++framesDone) {
+        checkInterrupt(label);
         if (!args.staticMaps) renderer.invalidateShadowMaps();
         const auto start = std::chrono::steady_clock::now();
         renderer.render(scene, options);
@@ -408,6 +413,37 @@ void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
 
 }  // namespace
 
+namespace {
+
+// --out-dir, made before the measuring so that an unwritable place fails at once, and removed
+// again when the command fails before writing into it (when it made it).
+class OutDir {
+public:
+    explicit OutDir(std::string path) : mPath(std::move(path)) {
+        std::error_code ec;
+        mMade = !std::filesystem::exists(mPath, ec);
+        std::filesystem::create_directories(mPath, ec);
+        if (ec || !std::filesystem::is_directory(mPath, ec)) {
+            throw Error(ErrorKind::Io, "--out-dir: cannot create folder '" + mPath +
+                                           "': " + (ec ? ec.message() : "a file is in the way"));
+        }
+    }
+    ~OutDir() {
+        std::error_code ec;
+        if (mMade && !mKept) std::filesystem::remove(mPath, ec);  // only when still empty
+    }
+    OutDir(const OutDir&) = delete;
+    OutDir& operator=(const OutDir&) = delete;
+    void keep() const { mKept = true; }
+
+private:
+    std::string mPath;
+    bool mMade = false;
+    mutable bool mKept = false;
+};
+
+}  // namespace
+
 int runBench(const BenchArgs& args, bool verbose) {
     if (args.frames < 1 || args.frames > 10000) {
         throw Error(ErrorKind::InvalidInput,
@@ -417,17 +453,12 @@ int runBench(const BenchArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput,
                     "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
     }
-    Scene base = loadScene(args.scene);
+    Scene base = loadWithProgress(args.scene);
     printWarnings(base);
     args.flags.editScene(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     const std::vector<std::string> values = sweepValues(args);
-    std::error_code ec;
-    std::filesystem::create_directories(args.outDir, ec);
-    if (ec) {
-        throw Error(ErrorKind::Io,
-                    "--out-dir: cannot create folder '" + args.outDir + "': " + ec.message());
-    }
+    const OutDir outDir(args.outDir);
     ContextOptions context;
     context.verbose = verbose;
     Renderer renderer(context);
@@ -446,31 +477,43 @@ int runBench(const BenchArgs& args, bool verbose) {
     if (values.empty()) {
         std::fprintf(stderr, "gnomon bench: %s, %d frames after %d warm-up\n", base.name.c_str(),
                      args.frames, args.warmup);
-        const Run run = measure(renderer, base, baseOptions, args);
+        const Run run = measure(renderer, base, baseOptions, args, "measuring " + base.name);
         std::printf("gnomon bench: %s, %dx%d, %d frames (%s maps)\n", base.name.c_str(),
                     baseOptions.width, baseOptions.height, args.frames,
                     args.staticMaps ? "kept" : "redrawn");
         printRun(run);
         out["runs"] = nlohmann::json::array({runJson(run)});
         writeTextFile(args.outDir + "/bench.json", out.dump(2) + "\n");
+        outDir.keep();
         std::printf("wrote %s/bench.json\n", args.outDir.c_str());
         return 0;
     }
 
     std::vector<Run> runs;
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        Scene scene;
-        RenderOptions options;
-        applySweep(args.sweep, values[i], base, baseOptions, scene, options);
-        std::fprintf(stderr, "gnomon bench: [%zu/%zu] %s %s ...", i + 1, values.size(),
-                     args.sweep.c_str(), values[i].c_str());
-        Run run = measure(renderer, scene, options, args);
-        run.value = values[i];
-        std::fprintf(stderr, " frame %.1f ms (shadow passes %.1f, main %.1f)\n", run.frame.median,
-                     run.shadow.median, run.main.median);
-        runs.push_back(std::move(run));
+    try {
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            Scene scene;
+            RenderOptions options;
+            applySweep(args.sweep, values[i], base, baseOptions, scene, options);
+            const std::string step = "[" + std::to_string(i + 1) + "/" +
+                                     std::to_string(values.size()) + "] " + args.sweep + " " +
+                                     values[i];
+            Run run = measure(renderer, scene, options, args, "measuring " + step);
+            run.value = values[i];
+            std::fprintf(stderr,
+                         "gnomon bench: %s: frame %.1f ms (shadow passes %.1f, main %.1f)\n",
+                         step.c_str(), run.frame.median, run.shadow.median, run.main.median);
+            runs.push_back(std::move(run));
+        }
+    } catch (const Interrupted& e) {
+        if (runs.empty()) throw;
+        writeSweep(runs, base.name, baseOptions, args, out);
+        outDir.keep();
+        throw Interrupted(std::string(e.what()) + "; kept the " + std::to_string(runs.size()) +
+                          " of " + std::to_string(values.size()) + " values finished");
     }
     writeSweep(runs, base.name, baseOptions, args, out);
+    outDir.keep();
     return 0;
 }
 

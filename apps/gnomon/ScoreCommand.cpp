@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "Progress.h"
+
 #include "gnomon/gnomon.h"
 
 namespace gnomon::cli {
@@ -34,6 +36,7 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
 }
 
 namespace {
+
 void printRow(const ShadowScore& s) {
     const std::string light = s.light < 0 ? "all" : std::to_string(s.light);
     std::printf("%5s  %-11s %9ld  %12.3f%%  %11.3f%%  %8.3f%%  %12.3f%%  %8.3f%%  %9.4f\n",
@@ -41,6 +44,29 @@ void printRow(const ShadowScore& s) {
                 100.0 * s.falseShadow, 100.0 * s.leak, 100.0 * s.falseShadowOutsideBand,
                 100.0 * s.leakOutsideBand, s.meanAbsError);
 }
+// score(), with an activity line for the render and the tracing (the share of rows traced);
+// Ctrl-C stops the tracing at the next row.
+ScoreResult scoreWithProgress(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+                              const ScoreOptions& scoreOptions) {
+    ScoreFrame frame = [&] {
+        const Activity activity("rendering for the score");
+        return renderForScore(renderer, scene, options, scoreOptions);
+    }();
+    checkInterrupt("rendering; nothing was written");
+    ScoreProgress progress;
+    try {
+        const Activity activity("tracing the reference", [&progress] {
+            if (interrupted()) progress.cancel = true;
+            const int rows = progress.rows.load();
+            return rows > 0 ? double(progress.rowsDone.load()) / rows : -1.0;
+        });
+        return scoreFrame(std::move(frame), scene, options, scoreOptions, &progress);
+    } catch (const Error&) {
+        checkInterrupt("tracing the reference; nothing was written");
+        throw;
+    }
+}
+
 }  // namespace
 
 int runScore(const ScoreArgs& args, bool verbose) {
@@ -48,14 +74,14 @@ int runScore(const ScoreArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput, "--max-error must be a fraction in [0, 1], got " +
                                                  std::to_string(args.maxError));
     }
-    Scene scene = loadScene(args.scene);
+    Scene scene = loadWithProgress(args.scene);
     printWarnings(scene);
     args.flags.editScene(scene);
     const RenderOptions options = args.flags.resolve(scene);
     ContextOptions context;
     context.verbose = verbose;
     Renderer renderer(context);
-    const ScoreResult r = score(renderer, scene, options, args.options);
+    const ScoreResult r = scoreWithProgress(renderer, scene, options, args.options);
 
     std::error_code ec;
     std::filesystem::create_directories(args.outDir, ec);

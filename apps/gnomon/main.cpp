@@ -14,6 +14,7 @@
 
 #include "BenchCommand.h"
 #include "HelpFormatter.h"
+#include "Progress.h"
 #include "RenderOptionsCli.h"
 #include "ScoreCommand.h"
 #include "Viewer.h"
@@ -109,7 +110,7 @@ int runRender(const RenderArgs& args, bool verbose) {
             "--out: '" + args.out + "': the format follows the extension: .png, .jpg or .jpeg");
     }
     const auto loadStart = std::chrono::steady_clock::now();
-    gnomon::Scene scene = gnomon::loadScene(args.scene);
+    gnomon::Scene scene = gnomon::cli::loadWithProgress(args.scene);
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart)
             .count();
@@ -134,14 +135,22 @@ int runRender(const RenderArgs& args, bool verbose) {
     context.verbose = verbose;
     gnomon::Renderer renderer(context);
     const auto renderStart = std::chrono::steady_clock::now();
-    const gnomon::Image image = renderer.render(scene, options);
+    const gnomon::Image image = [&] {
+        const gnomon::cli::Activity activity("rendering " + std::to_string(options.width) + "x" +
+                                             std::to_string(options.height));
+        return renderer.render(scene, options);
+    }();
+    gnomon::cli::checkInterrupt("rendering; nothing was written");
     if (verbose) {
         std::fprintf(stderr, "gnomon: first frame (uploads, shadow maps, main pass) in %.0f ms\n",
                      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
                                                                renderStart)
                          .count());
     }
-    writeOutputs(args, renderer, image, verbose);
+    {
+        const gnomon::cli::Activity activity("writing " + args.out);
+        writeOutputs(args, renderer, image, verbose);
+    }
     if (verbose) {
         const gnomon::FrameStats stats = renderer.lastFrameStats();
         std::fprintf(stderr,
@@ -269,6 +278,7 @@ int main(int argc, char** argv) {
                          : (" " + app.get_subcommands().front()->get_name()).c_str());
         return 2;
     }
+    gnomon::cli::catchInterrupts();
     try {
         if (*scenes) return runScenes(namesOnly);
         if (*optionsCmd) return runOptions(markdown);
@@ -276,6 +286,9 @@ int main(int argc, char** argv) {
         if (*scoreCmd) return gnomon::cli::runScore(scoreArgs, verbose);
         if (*benchCmd) return gnomon::cli::runBench(benchArgs, verbose);
         if (*viewCmd) return gnomon::cli::runView(viewArgs, verbose);
+    } catch (const gnomon::cli::Interrupted& e) {
+        std::fprintf(stderr, "gnomon: %s\n", e.what());
+        return gnomon::cli::kInterruptedExitCode;
     } catch (const gnomon::Error& e) {
         std::fprintf(stderr, "gnomon: error: %s\n", e.what());
         return e.kind() == gnomon::ErrorKind::InvalidInput ? 2 : 1;

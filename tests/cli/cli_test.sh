@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CLI behaviour: exit codes and messages. Usage: cli_test.sh GNOMON_BINARY CASE WORKDIR
 # Exit codes of gnomon: 0 success, 1 failure (writing output, GL), 2 bad usage or input (a
-# missing input file too), 3 score above --max-error.
+# missing input file too), 3 score above --max-error, 130 interrupted (Ctrl-C).
 set -uo pipefail
 gnomon=$1; case=$2; work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -17,6 +17,28 @@ skip_without_gl() {
 }
 
 case $case in
+interrupt)
+    # Ctrl-C in a sweep: exit 130 with the finished values saved and the progress line ended.
+    vals=$(printf '256,%.0s' {1..19})256
+    "$gnomon" bench --scene tutorial-room --size 128x128 --frames 50 --warmup 0 --sweep map-size \
+        --values "$vals" --out-dir "$work/s" >"$work/stdout" 2>"$work/stderr" &
+    pid=$!
+    for _ in $(seq 600); do grep -q "\[1/20\]" "$work/stderr" 2>/dev/null && break; sleep 0.1; done
+    skip_without_gl
+    kill -INT $pid; wait $pid; echo $? >"$work/code"
+    expect 130 "gnomon: interrupted while measuring ["
+    expect 130 "values finished"
+    rows=$(($(wc -l <"$work/s/sweep.csv") - 1))
+    ((rows >= 1 && rows < 20)) || fail "sweep.csv should hold the finished values only, has $rows"
+    ! grep -q $'\r' "$work/stderr" || fail "progress lines written to a file that is not a terminal"
+    # On a terminal (script(1) gives one), long work shows an activity line.
+    if command -v script >/dev/null; then
+        script -qec "'$gnomon' bench --scene tutorial-room --size 128x128 --frames 400 --warmup 0 \
+            --out-dir '$work/t'" /dev/null >"$work/stdout" 2>"$work/stderr"
+        echo $? >"$work/code"
+        expect 0 "gnomon: measuring tutorial-room ..."
+    fi
+    ;;
 map_memory)
     # 14 maps of 8192^2 depth32f (3.5 GiB in one array): one sentence with the size and what to
     # lower, exit 2, and no image left behind. llvmpipe refuses any texture over its size limit
