@@ -137,6 +137,8 @@ view_input)
     expect 2 "bad.txt:2: unknown command 'explode'"
     run view --scene no-such-scene
     expect 2 "no-such-scene"
+    run view --screenshot-dir "$work/nope"
+    expect 2 "--screenshot-dir: '$work/nope' is not a folder"
     run view --filter blurry
     expect 2 "--filter: expected one of"
     printf 'quit\n' >"$work/quit.txt"

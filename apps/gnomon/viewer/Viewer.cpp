@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -239,6 +240,11 @@ int runView(const ViewArgs& args, bool verbose) {
                     "--window: " + args.window + " is outside 320x240..16384x16384");
     }
     // Bad input is reported before a window opens.
+    std::error_code ec;
+    if (!std::filesystem::is_directory(args.screenshotDir, ec)) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--screenshot-dir: '" + args.screenshotDir + "' is not a folder");
+    }
     std::vector<view::Command> script;
     if (!args.script.empty()) {
         std::ifstream in(args.script, std::ios::binary);

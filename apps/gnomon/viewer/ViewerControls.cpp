@@ -63,7 +63,14 @@ void Viewer::guarded(const std::function<void()>& action) {
         action();
         mUiError.clear();
     } catch (const Error& e) {
+        // Shown in the panel, and said where scripts and logs see it: a failed screenshot or
+        // save fails a script.
         mUiError = e.what();
+        if (mScripted) {
+            fail(e.what());
+        } else {
+            std::fprintf(stderr, "gnomon view: error: %s\n", e.what());
+        }
     }
 }
 
