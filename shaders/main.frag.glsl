@@ -202,6 +202,35 @@ void main() {
     fragColour = vec4(lit * vIn.colour, 1.0);
 }
 #else
+#if defined(DITHER_LINEAR) || defined(DITHER_SRGB)
+// Ordered dithering (Bayer, 1973; a 4x4 threshold matrix) of the 8-bit output by less than
+// half a step either way: a smooth gradient, which plain rounding turns into flat bands one
+// step apart, becomes a fine fixed pattern whose local average is the true colour. The same
+// pixel always gets the same offset, so images stay deterministic. For sRGB output the step is
+// one of the encoded values the target stores, so the offset is applied in that encoding.
+const float kBayer4[16] = float[](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0,
+                                  15.0, 7.0, 13.0, 5.0);
+vec3 srgbEncode(vec3 c) {
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+}
+vec3 srgbDecode(vec3 e) {
+    return mix(e / 12.92, pow((e + 0.055) / 1.055, vec3(2.4)), step(0.04045, e));
+}
+vec3 dither(vec3 c) {
+    ivec2 p = ivec2(gl_FragCoord.xy) & 3;
+    float offset = ((kBayer4[p.y * 4 + p.x] + 0.5) / 16.0 - 0.5) / 255.0;
+#ifdef DITHER_SRGB
+    return srgbDecode(clamp(srgbEncode(clamp(c, 0.0, 1.0)) + offset, 0.0, 1.0));
+#else
+    return c + offset;
+#endif
+}
+#else
+vec3 dither(vec3 c) {
+    return c;
+}
+#endif
+
 void main() {
     findReceiverPlane();
     Surface s;
@@ -241,6 +270,6 @@ void main() {
                                   vec3(1, 1, 0.3));
     if (gCascade >= 0) colour = mix(colour, kTints[gCascade], 0.35);
 #endif
-    fragColour = vec4(colour, alpha);
+    fragColour = vec4(dither(colour), alpha);
 }
 #endif

@@ -134,6 +134,8 @@ struct ShadingOptions {
     ShadowedRule shadowedRule = ShadowedRule::AmbientOnly;  // what a shadowed fragment keeps
     float shadowFactor = 0.7f;  // colour multiplier for ShadowedRule::Factor, 0..1
     OutputEncoding output = OutputEncoding::Linear;  // colours as computed, or sRGB-encoded
+    // Ordered dithering of the 8-bit colours (within half a step) against banding.
+    bool dither = true;
 
     bool operator==(const ShadingOptions&) const = default;
 };

@@ -63,6 +63,13 @@ void addOutput(std::vector<OptionSpec>& s) {
          .choices = namesOf<OutputEncoding>(),
          .defaultNote = "the scene's: built-in scenes linear, model files srgb",
          ENUM(shading.output, OutputEncoding)});
+    add({.name = "dither",
+         .group = "Output",
+         .doc = "ordered dithering of the 8-bit colours by under half a step, so smooth "
+                "gradients do not band (off: plain rounding)",
+         .kind = K::Switch,
+         .max = 1,
+         NUMBER(shading.dither, bool)});
     add({.name = "debug-view",
          .group = "Output",
          .doc = "tint by cascade, show one light's maps (--light-only's, else the first shadowed "

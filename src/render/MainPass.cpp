@@ -9,6 +9,12 @@
 namespace gnomon::render {
 
 namespace {
+// 0: no dithering (asked for, or the floor, which keeps only what shadows need); 1: in the
+// stored values; 2: in their sRGB encoding.
+int ditherMode(const RenderOptions& options, bool floor) {
+    if (!options.shading.dither || floor) return 0;
+    return options.shading.output == OutputEncoding::Srgb ? 2 : 1;
+}
 // Stored depth fetched and compared in the shader: colour formats always, native depth for
 // --filter none (so --map-filter applies, as in the LINEAR lookups of W. Brown's course text,
 // §12.6).
@@ -44,7 +50,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(options.debugView == DebugView::Cascades) << 20 |
         std::uint64_t(in.shadowCubes != nullptr) << 21 | std::uint64_t(in.hasCascades) << 22 |
         std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24 |
-        std::uint64_t(so.receiverPlane) << 25 | std::uint64_t(floor) << 26;
+        std::uint64_t(so.receiverPlane) << 25 | std::uint64_t(floor) << 26 |
+        std::uint64_t(ditherMode(options, floor)) << 27;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -90,6 +97,9 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
     if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
+    if (const int dither = ditherMode(options, floor)) {
+        defines.push_back(dither == 2 ? "DITHER_SRGB" : "DITHER_LINEAR");
+    }
     if (in.shadowCubes) defines.push_back("HAS_CUBES");
     if (in.hasCascades) defines.push_back("HAS_CASCADES");
     if (options.shading.shadowedRule == ShadowedRule::Factor) {

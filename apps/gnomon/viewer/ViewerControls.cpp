@@ -270,7 +270,7 @@ void Viewer::optionControls() {
         options({"cascades", "fit-to", "cascade-lambda", "cascade-blend"});
     }
     if (ImGui::CollapsingHeader("Shading")) {
-        options({"shadowed", "shadow-factor", "output-encoding"});
+        options({"shadowed", "shadow-factor", "output-encoding", "dither"});
         changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
         tooltip("the scene's ambient light colour, times each material's colour");
         ImGui::TextDisabled("shininess: per material, from the scene");
