@@ -106,6 +106,26 @@ vec3 gPlaneNormal = vec3(0.0, 1.0, 0.0);
 // arches and the built-in scenes: 1-2 leak least; 4 and more let grazing planes reach past
 // real occluders within the filter's footprint.
 const float kPlaneMaxSlope = 2.0;
+// ...except on the side where the plane comes towards the light, followed up to this many
+// times further. There a surface turned almost edge-on to the light meets its neighbours
+// across convex edges (a cube's lit top beside a grazing side): they lie behind the side's
+// plane, so the full plane finds them lit, while the capped one, too deep there, finds
+// them in front and shadows the whole side in stripes (SimpleInstancing with a side sun:
+// 0.14 % of the view falsely shadowed away from edges with the cap alone, 0.04 % with 6x).
+// Larger factors fix that further but leak more along real occluders' edges (Sponza's
+// atrium, ToyCar); scripts/quality-real.py measures both.
+const float kPlaneMaxApproach = 6.0;
+// The plane's full, uncapped gradient of the last receiverPlaneGradient call.
+vec2 gPlaneFull = vec2(0.0);
+// The depth offset of a tap `o` away on the receiver's plane, from its capped gradient `g`
+// and its full one `full` (the same units): capped as above, less so towards the light.
+float planeAlong(vec2 g, vec2 full, vec2 o) {
+    float capped = dot(g, o);
+    return min(capped, max(dot(full, o), kPlaneMaxApproach * capped));
+}
+vec4 planeAlong4(vec4 capped, vec4 full) {
+    return min(capped, max(full, kPlaneMaxApproach * capped));
+}
 vec2 receiverPlaneGradient(LightData light, vec4 clip, vec3 coord, float texelWorld,
                            float texelCoord, vec3 wsToLight) {
     vec3 n = gPlaneNormal;
@@ -117,8 +137,10 @@ vec2 receiverPlaneGradient(LightData light, vec4 clip, vec3 coord, float texelWo
     float det = d1.x * d2.y - d2.x * d1.y;
     // A plane seen edge-on by the light has no depth gradient in the map: no texel but its
     // own line shows it, and the single-depth comparison is as good as any.
+    gPlaneFull = vec2(0.0);
     if (!(abs(det) > 1e-6 * length(d1.xy) * length(d2.xy))) return vec2(0.0);
     vec2 g = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+    gPlaneFull = g;
     // Clamped to kPlaneMaxSlope: the depth the surface changes over one texel when it is
     // tilted that much, from a step towards the light.
     vec4 c3 = clip + light.textureFromWorld * vec4(wsToLight * texelWorld * kPlaneMaxSlope, 0.0);
@@ -139,13 +161,14 @@ const int kGatherRadius = PCF_SIZE / 2;
 #else
 const int kGatherRadius = 0;
 #endif
-float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, float spread,
-                float texelUv, vec2 originUv, float uvScale) {
+float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, vec2 fullUv,
+                float spread, float texelUv, vec2 originUv, float uvScale) {
     const int r = kGatherRadius;
     vec2 s = uv / texelUv - 0.5;  // in texels of the layer: texel i's centre is at i
     vec2 base = floor(s);
     vec2 f = s - base;
     vec2 g = gradientUv * texelUv;  // stored depth per texel along the layer's axes
+    vec2 full = fullUv * texelUv;
     // The map's first texel and its last 2x2 block's start, in texels of the layer.
     vec2 first = floor(originUv / texelUv + 0.5);
     vec2 last = first + floor(uvScale / texelUv + 0.5) - 2.0;
@@ -159,7 +182,9 @@ float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, float sp
             // Gathered at the corner the four texels share: x (k, k+1), y (k+1, k+1),
             // z (k+1, k), w (k, k) as (column, row).
             vec4 d = textureGather(uShadowDepths, vec3((vec2(kx, ky) + 1.0) * texelUv, layer));
-            vec4 along = dot(g, vec2(kx, ky) - s) + vec4(g.y, g.x + g.y, g.x, 0.0);
+            vec2 o = vec2(kx, ky) - s;
+            vec4 along = planeAlong4(dot(g, o) + vec4(g.y, g.x + g.y, g.x, 0.0),
+                                     dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0));
             vec4 refs = reference + along - spread;
             vec4 w = vec4(wx.x * wy.y, wx.y * wy.y, wx.y * wy.x, wx.x * wy.x);
             sum += dot(step(refs, d), w);
@@ -401,14 +426,15 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     // cause was not pinned down.
     vec2 g = receiverPlaneGradient(light, shadowCoord, coord, texelWorld, texelUv / uvScale,
                                     wsToLight) / uvScale;
+    vec2 full = gPlaneFull / uvScale;
     float spread = 0.5 * texelUv * (abs(g.x) + abs(g.y));
-#define TAP_REFERENCE(o) (reference + dot(g, (o)) - spread)
+#define TAP_REFERENCE(o) (reference + planeAlong(g, full, (o)) - spread)
 #else
 #define TAP_REFERENCE(o) (reference)
 #endif
 #if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
     (defined(FILTER_PCF) || defined(FILTER_HW2X2))
-    return gatherPcf(uv, layer, reference, g, spread, texelUv, origin, uvScale);
+    return gatherPcf(uv, layer, reference, g, full, spread, texelUv, origin, uvScale);
 #elif defined(FILTER_PCF)
     float sum = 0.0;
     const int r = PCF_SIZE / 2;
