@@ -2,6 +2,7 @@
 #include "scene/ModelFinish.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "gnomon/Error.h"
@@ -55,10 +56,33 @@ void addDefaultSun(Scene& scene) {
     Light sun;
     sun.name = "default sun";
     sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+    sun.direction = defaultSunDirection(scene.camera);
     sun.intensity = 1.0f;
     scene.lights.push_back(sun);
     scene.warnings.push_back("no lights: a default sun was added");
+}
+
+// A key light over the camera's right shoulder, as a photographer places one: from behind
+// the camera and kDefaultSunTurn to its right, kDefaultSunElevation above the horizon.
+// Shadows then fall away from the camera and to the left of their casters, where the camera
+// sees them, not hidden behind the casters.
+glm::vec3 defaultSunDirection(const Camera& camera) {
+    constexpr float kDefaultSunTurn = glm::radians(50.0f);
+    constexpr float kDefaultSunElevation = glm::radians(50.0f);
+    const glm::vec3 up = glm::length(camera.up) > 0.0f ? glm::normalize(camera.up)
+                                                       : glm::vec3(0.0f, 1.0f, 0.0f);
+    glm::vec3 back = camera.eye - camera.centre;  // towards the camera, levelled
+    back -= up * glm::dot(back, up);
+    if (!(glm::length(back) > 1e-6f * glm::length(camera.eye - camera.centre))) {
+        return glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));  // looking straight down or up
+    }
+    back = glm::normalize(back);
+    const glm::vec3 right = glm::cross(up, back);
+    const glm::vec3 horizontal =
+        std::cos(kDefaultSunTurn) * back + std::sin(kDefaultSunTurn) * right;
+    const glm::vec3 toSun = std::cos(kDefaultSunElevation) * horizontal +
+                            std::sin(kDefaultSunElevation) * up;
+    return -glm::normalize(toSun);
 }
 
 void frameWithCamera(Scene& scene, const Aabb& bounds) {
@@ -66,7 +90,8 @@ void frameWithCamera(Scene& scene, const Aabb& bounds) {
     const float radius = std::max(bounds.radius(), 1e-6f);
     Camera& cam = scene.camera;
     cam.centre = centre;
-    cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.5f, 1.0f)) * (2.6f * radius);
+    // Three-quarters from above: 31 degrees round from the front, 29 degrees up.
+    cam.eye = centre + glm::normalize(glm::vec3(0.6f, 0.65f, 1.0f)) * (2.6f * radius);
     cam.fovyDegrees = 45.0f;
     cam.near = radius * 0.02f;
     cam.far = radius * 6.0f;
@@ -87,12 +112,12 @@ void finishModelScene(Scene& scene, const LoadedModel& loaded) {
     // World bounds of what is drawn (as the renderer's fitting sees them).
     const Aabb bounds = worldBounds(scene, meshBounds(scene), 0.0, false);
     if (loaded.photometricLights) scaleLights(scene, std::max(bounds.radius(), 1e-6f));
-    addDefaultSun(scene);
     if (loaded.placeCamera) {
         loaded.placeCamera(scene.camera, bounds);
     } else {
         frameWithCamera(scene, bounds);
     }
+    addDefaultSun(scene);  // placed for the camera
     scene.options.width = scene.options.height = 512;
     scene.options.shading.output = OutputEncoding::Srgb;
 

@@ -33,8 +33,11 @@ void finishModelScene(Scene& scene, const LoadedModel& loaded);
 // Objects whose material is textured but whose mesh has no texture coordinates get an
 // untextured copy of that material (one copy per material).
 void untextureObjectsWithoutUvs(Scene& scene);
-// When `scene` has no lights, adds a default sun and says so in its warnings.
+// When `scene` has no lights, adds a default sun placed for scene.camera
+// (defaultSunDirection) and says so in its warnings.
 void addDefaultSun(Scene& scene);
+// The default sun's direction of travel for a camera: over the camera's shoulder.
+glm::vec3 defaultSunDirection(const Camera& camera);
 // A 45-degree camera framing `bounds`, and a warning.
 void frameWithCamera(Scene& scene, const Aabb& bounds);
 

@@ -346,13 +346,13 @@ void readObjects(const Fields& root, const Library& lib, Scene& out) {
 // defaults (a sun; a camera framing the objects).
 void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
     const Reader& r = root.reader();
-    if (const Json* lj = root.find("lights")) {
+    const Json* lj = root.find("lights");
+    if (lj) {
         r.array(*lj, root.at("lights"), 0, kMaxLights);
         for (std::size_t i = 0; i < lj->size(); ++i)
             out.lights.push_back(readLight(r, (*lj)[i], element(root.at("lights"), i), i));
     } else {
         out.lights = std::move(included.lights);
-        if (out.lights.empty()) addDefaultSun(out);
     }
 
     if (const Json* cj = root.find("camera")) {
@@ -362,6 +362,7 @@ void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
     } else if (!out.objects.empty()) {
         frameWithCamera(out, worldBounds(out, meshBounds(out), 0.0, false));
     }
+    if (!lj && out.lights.empty()) addDefaultSun(out);  // over the final camera's shoulder
 
     if (const Json* aj = root.find("ambient")) {
         out.ambient = r.colour(*aj, root.at("ambient"));
