@@ -12,6 +12,8 @@ packages=(
     libtinygltf-dev nlohmann-json3-dev libembree-dev libassimp-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth python3
+    # the viewer's font (DejaVu Sans)
+    fonts-dejavu-core
     # glmark2's horse (/usr/share/glmark2/models/horse.3ds), a view of scripts/quality-real.py
     glmark2-data
     "$@"

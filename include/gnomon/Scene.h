@@ -93,6 +93,11 @@ struct Camera {
     float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;  // orthographic volume
 };
 
+// The camera's clip space from world space, as the renderer draws it for an image of that
+// aspect (width / height; Camera::aspect overrides it when set): to place marks over a
+// rendered view, or project points as the picture does.
+glm::mat4 cameraClipFromWorld(const Camera& camera, float aspect);
+
 enum class LightType {
     Directional,  // parallel rays along `direction`, no falloff
     Spot,         // from `position` along `direction` inside a cone, falls off

@@ -69,8 +69,8 @@ void addDefaultSun(Scene& scene) {
 glm::vec3 defaultSunDirection(const Camera& camera) {
     constexpr float kDefaultSunTurn = glm::radians(50.0f);
     constexpr float kDefaultSunElevation = glm::radians(50.0f);
-    const glm::vec3 up = glm::length(camera.up) > 0.0f ? glm::normalize(camera.up)
-                                                       : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 up =
+        glm::length(camera.up) > 0.0f ? glm::normalize(camera.up) : glm::vec3(0.0f, 1.0f, 0.0f);
     glm::vec3 back = camera.eye - camera.centre;  // towards the camera, levelled
     back -= up * glm::dot(back, up);
     if (!(glm::length(back) > 1e-6f * glm::length(camera.eye - camera.centre))) {
@@ -80,8 +80,8 @@ glm::vec3 defaultSunDirection(const Camera& camera) {
     const glm::vec3 right = glm::cross(up, back);
     const glm::vec3 horizontal =
         std::cos(kDefaultSunTurn) * back + std::sin(kDefaultSunTurn) * right;
-    const glm::vec3 toSun = std::cos(kDefaultSunElevation) * horizontal +
-                            std::sin(kDefaultSunElevation) * up;
+    const glm::vec3 toSun =
+        std::cos(kDefaultSunElevation) * horizontal + std::sin(kDefaultSunElevation) * up;
     return -glm::normalize(toSun);
 }
 

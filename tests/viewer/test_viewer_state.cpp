@@ -234,8 +234,12 @@ TEST(ViewerScript, CommandsEditTheStateAsTheControlsDo) {
     EXPECT_EQ(s.scene.lights[0].shadowMapSize, 64);
     EXPECT_TRUE(run("select-light 1"));
     EXPECT_EQ(s.selectedLight, 1);
+    // A view toggle redraws (viewRevision) but leaves a score of the frame current (revision).
+    const std::uint64_t revision = s.revision, viewRevision = s.viewRevision;
     EXPECT_TRUE(run("frusta on"));
     EXPECT_EQ(mainViewOptions(s, 8, 8).debugView, DebugView::LightFrusta);
+    EXPECT_EQ(s.revision, revision);
+    EXPECT_GT(s.viewRevision, viewRevision);
     EXPECT_TRUE(run("camera eye 0 1 9"));
     EXPECT_EQ(s.scene.camera.eye, glm::vec3(0, 1, 9));
     EXPECT_TRUE(run("preset map-64"));  // an example: loads its scene

@@ -67,7 +67,7 @@ ContextOptions Viewer::contextOptions(bool verbose) {
 }
 
 bool Viewer::dirty() const {
-    return mState.revision != mDrawnRevision;
+    return mState.revision != mDrawnRevision || mState.viewRevision != mDrawnViewRevision;
 }
 
 void Viewer::frame() {
@@ -113,6 +113,7 @@ void Viewer::renderViews(int mainW, int mainH, int sideW) {
     if (dirty() || sizeChanged || mRedraw) {
         mRedraw = false;
         mDrawnRevision = mState.revision;
+        mDrawnViewRevision = mState.viewRevision;
         mDrawnWidth = mMainOptions.width;
         mDrawnHeight = mMainOptions.height;
         try {
@@ -151,18 +152,24 @@ void Viewer::recordPasses() {
     }
 }
 
-void Viewer::mouseOnView(bool hovered, float viewHeight) {
+// Left drag orbits the camera (with shift: pans), middle drag pans, right drag moves the
+// selected light; a left drag that starts on a light's icon selects that light and moves it.
+void Viewer::mouseOnView(bool hovered, float viewHeight, int iconUnderMouse) {
     const ImGuiIO& io = ImGui::GetIO();
     for (int b = 0; b < 3; ++b) {
-        if (hovered && ImGui::IsMouseClicked(b)) mDragButton = b;
+        if (hovered && ImGui::IsMouseClicked(b)) {
+            mDragButton = b;
+            mDragIcon = b == 0 && iconUnderMouse >= 0;
+            if (mDragIcon) mState.selectedLight = iconUnderMouse;
+        }
     }
     if (mDragButton >= 0 && !ImGui::IsMouseDown(mDragButton)) mDragButton = -1;
     const ImVec2 d = io.MouseDelta;
     if (mDragButton >= 0 && (d.x != 0.0f || d.y != 0.0f)) {
         Camera& cam = mState.scene.camera;
-        if (mDragButton == 2 || (mDragButton == 0 && io.KeyShift)) {
+        if (mDragButton == 2 || (mDragButton == 0 && io.KeyShift && !mDragIcon)) {
             view::pan(cam, d.x / viewHeight, d.y / viewHeight);
-        } else if (mDragButton == 0) {
+        } else if (mDragButton == 0 && !mDragIcon) {
             view::orbit(cam, d.x * 0.4f, d.y * 0.4f);
         } else if (!mState.scene.lights.empty()) {
             const glm::vec3 right = glm::cross(cam.centre - cam.eye, cam.up);
@@ -194,7 +201,7 @@ void Viewer::key(const std::string& name) {
         if (!mJob) guarded([&] { startScore(); });
     } else if (name == "F") {
         mState.frusta = !mState.frusta;
-        ++mState.revision;
+        ++mState.viewRevision;
     } else if (name == "space") {
         mState.playing = !mState.playing;
     } else {

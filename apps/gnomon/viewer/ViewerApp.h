@@ -55,6 +55,9 @@ private:
 
 // ---- The viewer ----------------------------------------------------------------------------
 
+// The Controls panel's tabs (ViewerControls.cpp), as the script's `tab` names them.
+inline constexpr const char* kControlTabs[4] = {"Scene", "Lights", "Shadows", "Filter"};
+
 class Viewer {
 public:
     // `state` and `script` are checked before the window opens (runView).
@@ -82,18 +85,23 @@ private:
     void sceneControls();
     void cameraControls();
     void lightControls();
-    void optionControls();
+    void shadowMapControls();
+    void filterControls();
+    static int tabIndex(const std::string& name);
     void animationControls();
     static void inputText(const char* label, std::string& value);
 
     // ---- Views (ViewerPanels.cpp; mouseOnView in Viewer.cpp) ----
 
     void views(float x, float mainW, float viewW, float viewH);
-    void mouseOnView(bool hovered, float viewHeight);
+    int lightIcons(const ImVec2& origin, const ImVec2& size, bool hovered);
+    void cubeFaceLabels(const ImVec2& origin, const ImVec2& size);
+    void mouseOnView(bool hovered, float viewHeight, int iconUnderMouse);
 
     // ---- Measurements (ViewerPanels.cpp) ----
 
     void measurePanel(float x, float y, float width, float height);
+    void passTimes();
     void scorePanel();
 
     // ---- Score job and files (ViewerJobs.cpp) ----
@@ -127,7 +135,7 @@ private:
     FlagDocs mDocs;
 
     RenderOptions mMainOptions;
-    std::uint64_t mDrawnRevision = ~std::uint64_t(0);
+    std::uint64_t mDrawnRevision = ~std::uint64_t(0), mDrawnViewRevision = 0;
     int mDrawnWidth = 0, mDrawnHeight = 0;
     bool mRedraw = false;
     std::string mFrameError, mUiError, mLastWritten, mSavePath, mSourceField, mShownSource;
@@ -140,6 +148,7 @@ private:
     int mSideW = 0, mSideH = 0, mSideLight = -1;
     bool mSideDirty = true;
     int mDragButton = -1;
+    bool mDragIcon = false;  // the left drag started on a light's icon: it moves that light
 
     std::unique_ptr<ScoreJob> mJob;
     std::optional<ScoreResult> mScore;
@@ -156,6 +165,8 @@ private:
     int mRepeatLeft = 0;
     view::Command mRepeated;
     std::string mWindowShot;
+    int mTab = 0, mSelectTab = -1;   // the controls' tab shown; one to show next frame
+    float mControlsOverflow = 0.0f;  // how far the shown tab scrolls (0: it fits)
     long mFrames = 0;
     int mExitCode = 0;
 };

@@ -9,19 +9,47 @@
 
 namespace gnomon::cli::viewer {
 
+// The controls in four tabs, each short enough for a 1280x720 or 800x600 window without
+// scrolling (the script's `expect-fits` checks it): the scene and the view; the lights; the
+// map and its tolerances; filtering, cascades and shading.
 void Viewer::controls(float width, float height) {
     ImGui::SetNextWindowPos({0, 0});
     ImGui::SetNextWindowSize({width, height});
     ImGui::Begin("Controls", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoTitleBar);
     ImGui::PushItemWidth(width * 0.5f);
-    sceneControls();
-    cameraControls();
-    lightControls();
-    optionControls();
-    animationControls();
+    if (ImGui::BeginTabBar("controls")) {
+        for (int tab = 0; tab < 4; ++tab) {
+            const ImGuiTabItemFlags flags =
+                mSelectTab == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+            if (!ImGui::BeginTabItem(kControlTabs[tab], nullptr, flags)) continue;
+            mTab = tab;
+            if (tab == 0) {
+                sceneControls();
+                cameraControls();
+                animationControls();
+            } else if (tab == 1) {
+                lightControls();
+            } else if (tab == 2) {
+                shadowMapControls();
+            } else {
+                filterControls();
+            }
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    mSelectTab = -1;
     ImGui::PopItemWidth();
+    mControlsOverflow = ImGui::GetScrollMaxY();  // 0 when the tab fits
     ImGui::End();
+}
+
+int Viewer::tabIndex(const std::string& name) {
+    for (int tab = 0; tab < 4; ++tab)
+        if (name == kControlTabs[tab]) return tab;
+    return -1;
 }
 
 // The flag's one-line doc as the last item's tooltip, looked up only while hovered.
@@ -150,7 +178,7 @@ void Viewer::cameraControls() {
 }
 
 void Viewer::lightControls() {
-    if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::Spacing();
     std::vector<Light>& lights = mState.scene.lights;
     if (lights.empty()) {
         ImGui::TextDisabled("this scene has no lights");
@@ -233,9 +261,8 @@ void Viewer::lightControls() {
     }
 }
 
-void Viewer::optionControls() {
-    RenderOptions& o = mState.options;
-    ShadowOptions& s = o.shadow;
+void Viewer::shadowMapControls() {
+    ShadowOptions& s = mState.options.shadow;
     if (ImGui::CollapsingHeader("Shadow map", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed(option("shadows"));
         bool override = s.mapSize > 0;
@@ -263,13 +290,16 @@ void Viewer::optionControls() {
         options({"bias-constant", "bias-depth-aware", "bias-slope", "bias-units", "receiver-plane",
                  "normal-offset", "cull"});
     }
+}
+
+void Viewer::filterControls() {
     if (ImGui::CollapsingHeader("Filter", ImGuiTreeNodeFlags_DefaultOpen)) {
         options({"filter", "pcf-size", "light-radius", "light-angle", "blend-shadows"});
     }
-    if (ImGui::CollapsingHeader("Cascades")) {
+    if (ImGui::CollapsingHeader("Cascades", ImGuiTreeNodeFlags_DefaultOpen)) {
         options({"cascades", "fit-to", "cascade-lambda", "cascade-blend"});
     }
-    if (ImGui::CollapsingHeader("Shading")) {
+    if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) {
         options({"shadowed", "shadow-factor", "output-encoding", "dither"});
         changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
         tooltip("the scene's ambient light colour, times each material's colour");
@@ -300,8 +330,9 @@ void Viewer::animationControls() {
             changed(true);
         }
         flagTip("--light-only");
-        changed(option("debug-view"));
-        changed(ImGui::Checkbox("light frusta (F)", &mState.frusta));
+        // View-only: they redraw but leave a score current.
+        if (option("debug-view")) ++mState.viewRevision;
+        if (ImGui::Checkbox("light frusta (F)", &mState.frusta)) ++mState.viewRevision;
         tooltip("draw every shadow camera's volume as lines over the camera's view");
         bool side = mState.side == view::SideView::ShadowMap;
         if (ImGui::Checkbox("side view: shadow map", &side))

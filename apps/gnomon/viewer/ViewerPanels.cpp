@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include "ViewerApp.h"
 #include "ViewerWidgets.h"
@@ -47,15 +49,16 @@ void Viewer::views(float x, float mainW, float viewW, float viewH) {
                 imguiTexture(mOverlayTexture), origin, {origin.x + size.x, origin.y + size.y},
                 {0, 0}, {1, 1}, IM_COL32(255, 255, 255, int(255 * mOverlayOpacity)));
         }
-        mouseOnView(hovered, size.y);
+        mouseOnView(hovered, size.y, lightIcons(origin, size, hovered));
     }
     if (mState.side == view::SideView::ShadowMap) {
         ImGui::SetCursorScreenPos({origin.x + mainW, origin.y});
         if (mSideTexture) {
-            ImGui::Image(imguiTexture(mSideTexture),
-                         {float(mSideTexture.width) / io.DisplayFramebufferScale.x,
-                          float(mSideTexture.height) / io.DisplayFramebufferScale.y},
-                         {0, 1}, {1, 0});
+            const ImVec2 sideOrigin = ImGui::GetCursorScreenPos();
+            const ImVec2 sideSize(float(mSideTexture.width) / io.DisplayFramebufferScale.x,
+                                  float(mSideTexture.height) / io.DisplayFramebufferScale.y);
+            ImGui::Image(imguiTexture(mSideTexture), sideSize, {0, 1}, {1, 0});
+            cubeFaceLabels(sideOrigin, sideSize);
         } else {
             ImGui::TextDisabled(
                 "light %d has no shadow map in this frame\n(off, not "
@@ -69,6 +72,86 @@ void Viewer::views(float x, float mainW, float viewW, float viewH) {
     ImGui::End();
 }
 
+// Each light as an icon over the camera's view, in its colour, ringed when selected: a disc at
+// a point, spot or area light's position (a spot's with a stroke along its axis), a sun
+// (disc and rays) towards a directional light, above the view's centre. Returns the light
+// whose icon the mouse is over, or -1.
+int Viewer::lightIcons(const ImVec2& origin, const ImVec2& size, bool hovered) {
+    const Camera& cam = mState.scene.camera;
+    const glm::mat4 clipFromWorld = cameraClipFromWorld(cam, size.x / std::max(size.y, 1.0f));
+    const auto project = [&](const glm::vec3& p, ImVec2& out) {
+        const glm::vec4 c = clipFromWorld * glm::vec4(p, 1.0f);
+        if (!(c.w > 0.0f)) return false;
+        out = {origin.x + (0.5f + 0.5f * c.x / c.w) * size.x,
+               origin.y + (0.5f - 0.5f * c.y / c.w) * size.y};
+        return true;
+    };
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(origin, {origin.x + size.x, origin.y + size.y}, true);
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const float reach = 0.5f * glm::length(cam.centre - cam.eye);
+    const float radius = 7.0f;
+    int under = -1;
+    for (std::size_t i = 0; i < mState.scene.lights.size(); ++i) {
+        const Light& l = mState.scene.lights[i];
+        const bool sun = l.type == LightType::Directional;
+        const glm::vec3 at = sun ? cam.centre - glm::normalize(l.direction) * reach : l.position;
+        ImVec2 p;
+        if (!project(at, p)) continue;
+        // The light's hue at full brightness: dim colours still read as icons.
+        const float peak = std::max({l.colour.r, l.colour.g, l.colour.b, 1e-6f});
+        const glm::vec3 c = glm::clamp(l.colour / peak, 0.0f, 1.0f);
+        const ImU32 colour =
+            IM_COL32(int(255 * c.r), int(255 * c.g), int(255 * c.b), l.enabled ? 255 : 90);
+        const ImU32 edge = IM_COL32(20, 20, 24, 220);
+        if (sun) {
+            for (int k = 0; k < 8; ++k) {
+                const float a = float(k) * 0.785398f;
+                draw->AddLine(
+                    {p.x + 1.5f * radius * std::cos(a), p.y + 1.5f * radius * std::sin(a)},
+                    {p.x + 2.1f * radius * std::cos(a), p.y + 2.1f * radius * std::sin(a)}, colour,
+                    2.0f);
+            }
+        } else if (l.type == LightType::Spot) {
+            ImVec2 tip;
+            if (project(l.position + glm::normalize(l.direction) * (0.25f * reach), tip))
+                draw->AddLine(p, tip, colour, 2.0f);
+        }
+        draw->AddCircleFilled(p, radius, colour);
+        draw->AddCircle(p, radius, edge, 0, 1.5f);
+        if (int(i) == mState.selectedLight)
+            draw->AddCircle(p, radius + 4.0f, IM_COL32(255, 255, 160, 255), 0, 2.0f);
+        const float dx = mouse.x - p.x, dy = mouse.y - p.y;
+        if (hovered && dx * dx + dy * dy <= (radius + 4.0f) * (radius + 4.0f)) {
+            under = int(i);
+            tooltip("light " + std::to_string(i) + ": " + l.name + " (" + toString(l.type) +
+                    "); drag to move it");
+        }
+    }
+    draw->PopClipRect();
+    return under;
+}
+
+// A point light's six faces, as the side view lays them out (DebugPass: two rows of three
+// square panels, centred): +X -X +Y over -Y +Z -Z.
+void Viewer::cubeFaceLabels(const ImVec2& origin, const ImVec2& size) {
+    const int light = mState.selectedLight;
+    if (light < 0 || light >= int(mState.scene.lights.size()) ||
+        mState.scene.lights[std::size_t(light)].type != LightType::Point) {
+        return;
+    }
+    static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    const float panel = std::min(size.x / 3.0f, size.y / 2.0f);
+    const float x0 = origin.x + 0.5f * (size.x - 3.0f * panel);
+    const float y0 = origin.y + 0.5f * (size.y - 2.0f * panel);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    for (int face = 0; face < 6; ++face) {
+        const ImVec2 at(x0 + float(face % 3) * panel + 5.0f, y0 + float(face / 3) * panel + 4.0f);
+        draw->AddRectFilled({at.x - 3, at.y - 1}, {at.x + 24, at.y + 17}, IM_COL32(0, 0, 0, 150));
+        draw->AddText(at, IM_COL32(255, 255, 160, 255), kFaces[face]);
+    }
+}
+
 void Viewer::measurePanel(float x, float y, float width, float height) {
     ImGui::SetNextWindowPos({x, y});
     ImGui::SetNextWindowSize({width, height});
@@ -76,25 +159,66 @@ void Viewer::measurePanel(float x, float y, float width, float height) {
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::Columns(2, nullptr, true);
     const ImGuiIO& io = ImGui::GetIO();
-    ImGui::Text("%.1f fps   %dx%d   %d map(s), %d rendered, %.1f MiB", io.Framerate, mDrawnWidth,
-                mDrawnHeight, mStats.shadowMaps, mStats.shadowPasses,
-                double(mStats.shadowMapBytes) / (1024.0 * 1024.0));
+    ImGui::TextWrapped("%.1f fps   %dx%d   %d map(s), %d rendered, %.1f MiB", io.Framerate,
+                       mDrawnWidth, mDrawnHeight, mStats.shadowMaps, mStats.shadowPasses,
+                       double(mStats.shadowMapBytes) / (1024.0 * 1024.0));
     if (mMeasure) {
-        for (const PassTiming& p : mStats.passes)
-            ImGui::Text("%-28s %7.2f ms", p.name.c_str(), p.milliseconds);
-        if (!mMainMs.empty()) {
-            ImGui::PlotLines("main ms", mMainMs.data(), int(mMainMs.size()), 0, nullptr, 0.0f,
-                             FLT_MAX, {0, 34});
-            ImGui::PlotLines("shadow ms", mShadowMs.data(), int(mShadowMs.size()), 0, nullptr, 0.0f,
-                             FLT_MAX, {0, 34});
-        }
+        passTimes();
     } else {
-        ImGui::TextDisabled("pass timing off (Animation and view > measure passes)");
+        ImGui::TextDisabled("pass timing off (Scene > Animation and view > measure passes)");
     }
     ImGui::NextColumn();
     scorePanel();
     ImGui::Columns(1);
     ImGui::End();
+}
+
+// The frame's passes in little room: the passes other than shadow maps on one line, the shadow
+// passes as their total and slowest, the history as two plots, and each shadow pass in a
+// table of as many columns as fit, folded by default (mixed-lights has sixteen).
+void Viewer::passTimes() {
+    std::string others;
+    double shadow = 0.0, slowest = 0.0;
+    std::string slowestName;
+    int shadowPasses = 0;
+    for (const PassTiming& p : mStats.passes) {
+        if (p.light < 0) {
+            char part[96];
+            std::snprintf(part, sizeof part, "%s%s %.2f", others.empty() ? "" : "  ·  ",
+                          p.name.c_str(), p.milliseconds);
+            others += part;
+            continue;
+        }
+        shadow += p.milliseconds;
+        ++shadowPasses;
+        if (p.milliseconds >= slowest) {
+            slowest = p.milliseconds;
+            slowestName = p.name;
+        }
+    }
+    ImGui::TextWrapped("%s ms", others.c_str());
+    if (shadowPasses > 0) {
+        ImGui::TextWrapped("%d shadow pass(es) %.2f ms, slowest %s %.2f ms", shadowPasses, shadow,
+                           slowestName.c_str(), slowest);
+    }
+    if (!mMainMs.empty()) {
+        ImGui::PlotLines("main ms", mMainMs.data(), int(mMainMs.size()), 0, nullptr, 0.0f, FLT_MAX,
+                         {0, 30});
+        ImGui::PlotLines("shadow ms", mShadowMs.data(), int(mShadowMs.size()), 0, nullptr, 0.0f,
+                         FLT_MAX, {0, 30});
+    }
+    if (shadowPasses == 0 || !ImGui::TreeNode("each shadow pass")) return;
+    const int columns = std::clamp(int(ImGui::GetContentRegionAvail().x / 150.0f), 1, 4);
+    if (ImGui::BeginTable("passes", columns, ImGuiTableFlags_SizingStretchSame)) {
+        for (const PassTiming& p : mStats.passes) {
+            if (p.light < 0) continue;
+            ImGui::TableNextColumn();
+            ImGui::Text("%s %.2f", p.name.c_str() + (p.name.rfind("shadow ", 0) == 0 ? 7 : 0),
+                        p.milliseconds);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TreePop();
 }
 
 void Viewer::scorePanel() {
@@ -114,11 +238,11 @@ void Viewer::scorePanel() {
     const ShadowScore& o = mScore->overall;
     if (mScoredRevision != mState.revision)
         ImGui::TextColored({1, 0.8f, 0.3f, 1}, "(settings changed since this score)");
-    ImGui::Text("misclassified %.2f%%   mean |error| %.3f   (traced in %.2f s)",
-                100.0 * o.misclassified, o.meanAbsError, mScore->traceSeconds);
-    ImGui::Text("false shadow %.2f%%   leak %.2f%%", 100.0 * o.falseShadow, 100.0 * o.leak);
-    ImGui::Text("away from edges: false shadow %.2f%%, leak %.2f%%",
-                100.0 * o.falseShadowOutsideBand, 100.0 * o.leakOutsideBand);
+    ImGui::TextWrapped("misclassified %.2f%%   mean |error| %.3f   (traced in %.2f s)",
+                       100.0 * o.misclassified, o.meanAbsError, mScore->traceSeconds);
+    ImGui::TextWrapped("false shadow %.2f%%   leak %.2f%%", 100.0 * o.falseShadow, 100.0 * o.leak);
+    ImGui::TextWrapped("away from edges: false shadow %.2f%%, leak %.2f%%",
+                       100.0 * o.falseShadowOutsideBand, 100.0 * o.leakOutsideBand);
     ImGui::Checkbox("error overlay", &mOverlay);
     tooltip("red: false shadow (acne), blue: light leak; pale inside the aliasing band");
     ImGui::SameLine();

@@ -92,6 +92,21 @@ void Viewer::runCommand(const view::Command& c) {
         }
         mMeasure = arg == "on";
         mRenderer.setPassTiming(mMeasure);
+    } else if (c.verb == "tab") {
+        mSelectTab = tabIndex(arg);
+        if (mSelectTab < 0) {
+            throw Error(ErrorKind::InvalidInput,
+                        "tab: expected Scene, Lights, Shadows or Filter, got '" + arg + "'");
+        }
+        mWaitFrames = 2;  // shown on the next frame, laid out by the one after
+    } else if (c.verb == "expect-fits") {
+        if (mControlsOverflow > 0.0f) {
+            char message[160];
+            std::snprintf(message, sizeof message,
+                          "expect-fits: the %s tab needs %.0f more pixels than the window has",
+                          kControlTabs[mTab], mControlsOverflow);
+            fail(message);
+        }
     } else if (c.verb == "stats") {
         printStats();
     } else if (c.verb == "quit") {

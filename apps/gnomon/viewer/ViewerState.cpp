@@ -143,6 +143,8 @@ const std::map<std::string, Arity>& verbs() {
         {"expect-score", {3, 3}},
         {"key", {1, 1}},
         {"stats", {0, 0}},
+        {"tab", {1, 1}},
+        {"expect-fits", {0, 0}},
         {"measure", {1, 1}},
         {"quit", {0, 0}},
         {"repeat", {2, -1}},
@@ -448,7 +450,7 @@ bool applyCommand(State& state, const Command& c) {
             choice<SideView>(c, 0, {{"shadow-map", SideView::ShadowMap}, {"none", SideView::None}});
     } else if (c.verb == "frusta") {
         state.frusta = onOff(c, 0);
-        ++state.revision;
+        ++state.viewRevision;
     } else if (c.verb == "fit-view") {
         state.fitView = onOff(c, 0);
         ++state.revision;

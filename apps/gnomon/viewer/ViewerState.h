@@ -30,7 +30,10 @@ struct State {
     SideView side = SideView::ShadowMap;
     bool playing = false;        // animation time advances with the clock
     double speed = 1.0;          // animation seconds per second of wall time
-    std::uint64_t revision = 0;  // bumped by every edit that changes the picture
+    std::uint64_t revision = 0;  // bumped by every edit that changes what a score measures
+    // Bumped by view-only toggles (light frusta, debug views): the views redraw, a score of
+    // the frame still holds.
+    std::uint64_t viewRevision = 0;
 };
 
 // One entry of the presets menu: `args` are flags of `gnomon render` (--scene included).
