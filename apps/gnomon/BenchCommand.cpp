@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "OutputSet.h"
 #include "Progress.h"
 #include "SvgPlot.h"
 #include "gnomon/gnomon.h"
@@ -361,7 +362,8 @@ std::vector<std::string> sweepValues(const BenchArgs& args) {
 
 // A sweep's results: a table on stdout, and bench.json, sweep.csv and sweep.svg.
 void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
-                const RenderOptions& baseOptions, const BenchArgs& args, nlohmann::json& out) {
+                const RenderOptions& baseOptions, const BenchArgs& args, nlohmann::json& out,
+                OutputSet& files) {
     out["sweep"] = args.sweep;
     out["runs"] = nlohmann::json::array();
     std::string csv =
@@ -405,42 +407,11 @@ void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
         plot.series[3].y.push_back(r.shadowsOff.median);
         plot.series[4].y.push_back(r.bareDepth.median);
     }
-    writeTextFile(args.outDir + "/bench.json", out.dump(2) + "\n");
-    writeTextFile(args.outDir + "/sweep.csv", csv);
-    writeTextFile(args.outDir + "/sweep.svg", toSvg(plot));
+    writeTextFile(files.file("bench.json"), out.dump(2) + "\n");
+    writeTextFile(files.file("sweep.csv"), csv);
+    writeTextFile(files.file("sweep.svg"), toSvg(plot));
     std::printf("wrote %s/bench.json, sweep.csv, sweep.svg\n", args.outDir.c_str());
 }
-
-}  // namespace
-
-namespace {
-
-// --out-dir, made before the measuring so that an unwritable place fails at once, and removed
-// again when the command fails before writing into it (when it made it).
-class OutDir {
-public:
-    explicit OutDir(std::string path) : mPath(std::move(path)) {
-        std::error_code ec;
-        mMade = !std::filesystem::exists(mPath, ec);
-        std::filesystem::create_directories(mPath, ec);
-        if (ec || !std::filesystem::is_directory(mPath, ec)) {
-            throw Error(ErrorKind::Io, "--out-dir: cannot create folder '" + mPath +
-                                           "': " + (ec ? ec.message() : "a file is in the way"));
-        }
-    }
-    ~OutDir() {
-        std::error_code ec;
-        if (mMade && !mKept) std::filesystem::remove(mPath, ec);  // only when still empty
-    }
-    OutDir(const OutDir&) = delete;
-    OutDir& operator=(const OutDir&) = delete;
-    void keep() const { mKept = true; }
-
-private:
-    std::string mPath;
-    bool mMade = false;
-    mutable bool mKept = false;
-};
 
 }  // namespace
 
@@ -458,7 +429,7 @@ int runBench(const BenchArgs& args, bool verbose) {
     args.flags.editScene(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     const std::vector<std::string> values = sweepValues(args);
-    const OutDir outDir(args.outDir);
+    OutputSet files(args.outDir, "--out-dir");
     ContextOptions context;
     context.verbose = verbose;
     Renderer renderer(context);
@@ -483,8 +454,8 @@ int runBench(const BenchArgs& args, bool verbose) {
                     args.staticMaps ? "kept" : "redrawn");
         printRun(run);
         out["runs"] = nlohmann::json::array({runJson(run)});
-        writeTextFile(args.outDir + "/bench.json", out.dump(2) + "\n");
-        outDir.keep();
+        writeTextFile(files.file("bench.json"), out.dump(2) + "\n");
+        files.keep();
         std::printf("wrote %s/bench.json\n", args.outDir.c_str());
         return 0;
     }
@@ -507,13 +478,13 @@ int runBench(const BenchArgs& args, bool verbose) {
         }
     } catch (const Interrupted& e) {
         if (runs.empty()) throw;
-        writeSweep(runs, base.name, baseOptions, args, out);
-        outDir.keep();
+        writeSweep(runs, base.name, baseOptions, args, out, files);
+        files.keep();
         throw Interrupted(std::string(e.what()) + "; kept the " + std::to_string(runs.size()) +
                           " of " + std::to_string(values.size()) + " values finished");
     }
-    writeSweep(runs, base.name, baseOptions, args, out);
-    outDir.keep();
+    writeSweep(runs, base.name, baseOptions, args, out, files);
+    files.keep();
     return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "OutputSet.h"
 #include "Progress.h"
 
 #include "gnomon/gnomon.h"
@@ -83,15 +84,11 @@ int runScore(const ScoreArgs& args, bool verbose) {
     Renderer renderer(context);
     const ScoreResult r = scoreWithProgress(renderer, scene, options, args.options);
 
-    std::error_code ec;
-    std::filesystem::create_directories(args.outDir, ec);
-    if (ec) {
-        throw Error(ErrorKind::Io,
-                    "--out-dir: cannot create folder '" + args.outDir + "': " + ec.message());
-    }
-    writePng(args.outDir + "/render.png", r.render);
-    writePng(args.outDir + "/errors.png", r.errors);
-    writeTextFile(args.outDir + "/score.json", toJson(r, scene.name, options));
+    OutputSet out(args.outDir, "--out-dir");
+    writePng(out.file("render.png"), r.render);
+    writePng(out.file("errors.png"), r.errors);
+    writeTextFile(out.file("score.json"), toJson(r, scene.name, options));
+    out.keep();
 
     std::printf("gnomon score: %s, %dx%d, filter %s, %s; reference: %s shadows, traced in %.2f s\n",
                 scene.name.c_str(), options.width, options.height, toString(options.shadow.filter),

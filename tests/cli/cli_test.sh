@@ -87,6 +87,14 @@ score)
     expect 0 "directional"
     for f in render.png errors.png score.json; do [[ -s "$work/s/$f" ]] || fail "no $f"; done
     grep -q '"false_shadow"' "$work/s/score.json" || fail "score.json lacks false_shadow"
+    # A score that fails leaves no folder behind; one that cannot write leaves no files.
+    run score --scene tutorial-room --size 96x96 --light-only 9 --out-dir "$work/none"
+    expect 2 "light-only 9"
+    [[ ! -e "$work/none" ]] || fail "a failed score left its --out-dir"
+    mkdir -p "$work/ro/errors.png"  # a folder where a file must go: the second write fails
+    run score --scene tutorial-room --size 96x96 --out-dir "$work/ro"
+    expect 1 "errors.png"
+    [[ ! -e "$work/ro/render.png" ]] || fail "a failed score left render.png"
     # No tolerance at all: acne everywhere, above any sensible bound: exit 3.
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --bias-constant 0 \
         --bias-depth-aware 0 --bias-slope 0 --bias-units 0 --normal-offset 0 --cull none --receiver-plane off \
