@@ -10,7 +10,7 @@ packages=(
     libepoxy-dev libegl-dev libegl1 libegl-mesa0 libgl1 libopengl0 libgl1-mesa-dri
     libglfw3-dev libimgui-dev libglm-dev libpng-dev libstb-dev libcli11-dev
     libtinygltf-dev nlohmann-json3-dev libembree-dev libassimp-dev
-    libgtest-dev libgmock-dev libbenchmark-dev
+    libgtest-dev libgmock-dev libbenchmark-dev libmeshoptimizer-dev
     xvfb xauth python3
     # the viewer's font (DejaVu Sans)
     fonts-dejavu-core

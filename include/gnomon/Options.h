@@ -110,6 +110,9 @@ struct ShadowOptions {
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
     BlendShadows blendShadows = BlendShadows::Dithered;  // shadows of blended materials
+    // Stand-in casters: the share of each mesh's triangles drawn into shadow maps, 0.001..1
+    // (meshoptimizer's simplification, made once per value); 1 = the full meshes.
+    float casterDetail = 1.0f;
 
     bool operator==(const ShadowOptions&) const = default;
 };

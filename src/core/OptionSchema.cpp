@@ -98,6 +98,15 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          .zeroAllowed = true,
          .defaultNote = "0: each light's own",
          NUMBER(shadow.mapSize, int)});
+    add({.name = "caster-detail",
+         .group = "Shadow maps",
+         .doc = "share of each mesh's triangles drawn into shadow maps: simplified stand-in "
+                "casters (meshoptimizer), made once per value; 1 = the full meshes",
+         .unit = "of the triangles",
+         .kind = K::Real,
+         .min = 0.001,
+         .max = 1,
+         NUMBER(shadow.casterDetail, float)});
     add({.name = "depth-format",
          .group = "Shadow maps",
          .doc = "shadow map storage (point-light cubes use depth32f for colour formats)",

@@ -10,14 +10,15 @@
 
 namespace gnomon::render {
 
-// Draws `indices` (ascending indices into scene.items()), each `instances` times.
+// Draws `indices` (ascending indices into scene.items()), each `instances` times, as their
+// stand-in casters when `standIns`.
 // `alphaTested(item)` and `culled(item)` say what an item needs; `useProgram(alphaTested)`
 // binds the plain or alpha-tested program (and sets its uniforms) whenever that changes,
 // starting with the plain one. Face culling is off afterwards.
 template <typename AlphaTested, typename Culled, typename UseProgram>
 void drawDepthRuns(const GpuScene& scene, const std::vector<std::uint32_t>& indices,
-                   GLsizei instances, const AlphaTested& alphaTested, const Culled& culled,
-                   const UseProgram& useProgram) {
+                   GLsizei instances, bool standIns, const AlphaTested& alphaTested,
+                   const Culled& culled, const UseProgram& useProgram) {
     bool culling = false, alpha = false;
     GLuint texture = ~0u;
     glDisable(GL_CULL_FACE);
@@ -30,7 +31,7 @@ void drawDepthRuns(const GpuScene& scene, const std::vector<std::uint32_t>& indi
         const bool differs = wantAlpha != alpha || (alpha && scene.textureOf(item) != texture) ||
                              wantCull != culling;
         if (differs || index != runStart + runLength) {
-            scene.drawRange(runStart, runLength, instances);
+            scene.drawRange(runStart, runLength, instances, standIns);
             runStart = index;
             runLength = 0;
         }
@@ -48,7 +49,7 @@ void drawDepthRuns(const GpuScene& scene, const std::vector<std::uint32_t>& indi
         }
         ++runLength;
     }
-    scene.drawRange(runStart, runLength, instances);
+    scene.drawRange(runStart, runLength, instances, standIns);
     glDisable(GL_CULL_FACE);
 }
 

@@ -7,6 +7,7 @@
 
 #include "scene/MeshTopology.h"
 #include "scene/SceneUtil.h"
+#include "shadow/StandIn.h"
 
 namespace gnomon::render {
 namespace {
@@ -54,12 +55,14 @@ GLint glWrap(TextureWrap w) {
 
 }  // namespace
 
-void GpuScene::uploadGeometry(const Scene& scene) {
+void GpuScene::uploadGeometry(const Scene& scene, float casterDetail) {
     std::vector<GpuVertex> vertices;
     std::vector<std::uint32_t> indices;
     mMeshRanges.clear();
+    mStandInRanges.clear();
     for (const Mesh& m : scene.meshes) {
         mMeshRanges.emplace_back(indices.size() * sizeof(std::uint32_t), GLint(vertices.size()));
+        mStandInRanges.emplace_back(mMeshRanges.back().first, GLsizei(m.indices.size()));
         for (size_t i = 0; i < m.positions.size(); ++i) {
             vertices.push_back({m.positions[i], m.normals[i],
                                 m.colours.empty() ? glm::vec3(1.0f) : m.colours[i],
@@ -67,6 +70,16 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         }
         indices.insert(indices.end(), m.indices.begin(), m.indices.end());
     }
+    // Stand-in casters after all full meshes, sharing their vertices (same base vertex).
+    if (casterDetail < 1.0f) {
+        for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+            const std::vector<std::uint32_t> standIn =
+                shadow::standInIndices(scene.meshes[m], casterDetail);
+            mStandInRanges[m] = {indices.size() * sizeof(std::uint32_t), GLsizei(standIn.size())};
+            indices.insert(indices.end(), standIn.begin(), standIn.end());
+        }
+    }
+    mCasterDetail = casterDetail;
     mVertices =
         gl::Buffer("scene vertices", vertices.size() * sizeof(GpuVertex), vertices.data(), 0);
     mIndices =
@@ -104,19 +117,20 @@ void GpuScene::uploadTextures(const Scene& scene) {
     mHaveTextures = true;
 }
 
-bool GpuScene::sync(const Scene& scene, double seconds) {
+bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     // The scene's revision names the state of its meshes, materials, textures and objects:
     // the same one at the same time leaves nothing here to change, and nothing is read (the
     // hashes below read every byte). A new revision is hashed: a copy of the scene, or an
     // edit that changed nothing the GPU holds, uploads nothing.
     const bool sameContent =
         mHaveGeometry && mHaveTextures && scene.revision.value() == mSyncedRevision;
-    if (sameContent && seconds == mSyncedSeconds) return false;
+    const bool sameDetail = casterDetail == mCasterDetail;
+    if (sameContent && sameDetail && seconds == mSyncedSeconds) return false;
     bool changed = false;
-    if (!sameContent) {
+    if (!sameContent || !sameDetail) {
         const std::uint64_t hash = hashGeometry(scene);
-        if (!mHaveGeometry || hash != mGeometryHash) {
-            uploadGeometry(scene);
+        if (!mHaveGeometry || hash != mGeometryHash || !sameDetail) {
+            uploadGeometry(scene, casterDetail);
             mGeometryHash = hash;
             changed = true;
         }
@@ -176,6 +190,8 @@ bool GpuScene::sync(const Scene& scene, double seconds) {
             mat.alphaMode,
             mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
             mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};
+        mItems[i].standInFirstIndexByte = mStandInRanges[o.mesh].first;
+        mItems[i].standInIndexCount = mStandInRanges[o.mesh].second;
     }
     // Opaque first, then masked, then blended; by texture within each (binds once each).
     std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {
@@ -216,23 +232,30 @@ bool GpuScene::uploadDrawCommands() {
         glVertexArrayBindingDivisor(mVao.id(), 1, 1);
         mDivisor = 1;
     }
-    // Draw commands in item order, for 1 and for 6 instances; uploaded when they differ.
-    mCommandScratch.resize(2 * n);
+    // Draw commands in item order, for 1 and for 6 instances, then the same for the stand-in
+    // casters; uploaded when they differ.
+    mCommandScratch.resize(4 * n);
     for (std::size_t i = 0; i < n; ++i) {
         const DrawItem& item = mItems[i];
         const DrawCommand c{GLuint(item.indexCount), 1,
                             GLuint(item.firstIndexByte / sizeof(std::uint32_t)), item.baseVertex,
                             item.object};
+        const DrawCommand s{GLuint(item.standInIndexCount), 1,
+                            GLuint(item.standInFirstIndexByte / sizeof(std::uint32_t)),
+                            item.baseVertex, item.object};
         mCommandScratch[i] = c;
         mCommandScratch[n + i] = c;
         mCommandScratch[n + i].instanceCount = 6;
+        mCommandScratch[2 * n + i] = s;
+        mCommandScratch[3 * n + i] = s;
+        mCommandScratch[3 * n + i].instanceCount = 6;
     }
     if (!mCommands || mCommandScratch.size() != mCommandData.size() ||
         std::memcmp(mCommandScratch.data(), mCommandData.data(),
                     mCommandData.size() * sizeof(DrawCommand)) != 0) {
         mCommandData.swap(mCommandScratch);
         mCommands =
-            gl::Buffer("draw commands", std::max<std::size_t>(n, 1) * 2 * sizeof(DrawCommand),
+            gl::Buffer("draw commands", std::max<std::size_t>(n, 1) * 4 * sizeof(DrawCommand),
                        n ? mCommandData.data() : nullptr, 0);
         return true;
     }
@@ -260,10 +283,12 @@ void GpuScene::draw(const DrawItem& item, GLsizei instances) const {
         item.object);
 }
 
-void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances) const {
+void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances,
+                         bool standIns) const {
     if (count == 0) return;
     setInstanceDivisor(instances);
-    const std::size_t command = (instances == 6 ? mItems.size() : 0) + first;
+    const std::size_t command =
+        ((standIns ? 2 : 0) + (instances == 6 ? 1 : 0)) * mItems.size() + first;
     glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(command * sizeof(DrawCommand)),
                                 GLsizei(count), 0);

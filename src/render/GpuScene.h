@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "core/Aabb.h"
@@ -40,6 +41,9 @@ struct DrawItem {
     AlphaMode alphaMode = AlphaMode::Opaque;
     GLuint texture = 0;         // base colour texture, 0 = none
     bool materialPath = false;  // textured or not opaque: needs the material shader variants
+    // The stand-in caster shadow passes draw (--caster-detail; the full mesh at 1).
+    GLsizei standInIndexCount = 0;
+    std::size_t standInFirstIndexByte = 0;
 };
 
 // Does `item` draw into shadow maps with these options (blended casters may not)?
@@ -55,16 +59,20 @@ inline bool alphaTestedCaster(const DrawItem& item, const ShadowOptions& options
 
 class GpuScene {
 public:
-    // Makes the GPU copy match `scene` at `seconds`; returns true when anything changed.
-    // Reads the scene's meshes, materials, textures and objects only when its revision or
-    // `seconds` differ from the last call's.
-    bool sync(const Scene& scene, double seconds);
+    // Makes the GPU copy match `scene` at `seconds`, with stand-in casters keeping
+    // `casterDetail` of each mesh's triangles; returns true when anything changed. Reads the
+    // scene's meshes, materials, textures and objects only when its revision or `seconds`
+    // differ from the last call's; simplifies the meshes only when the geometry or
+    // `casterDetail` changed.
+    bool sync(const Scene& scene, double seconds, float casterDetail = 1.0f);
     // Binds the vertex array, the object buffer (binding 0) and the draw commands.
     void bind() const;
     // Issues one draw (`instances` copies: 1, or 6 for the cube faces of a point light).
     void draw(const DrawItem& item, GLsizei instances = 1) const;
-    // Draws items [first, first + count) in one call (each 1 or 6 times).
-    void drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances = 1) const;
+    // Draws items [first, first + count) in one call (each 1 or 6 times), their stand-in
+    // casters when `standIns` (shadow passes).
+    void drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances = 1,
+                   bool standIns = false) const;
     const std::vector<DrawItem>& items() const { return mItems; }
     // The item's base colour texture, or a 1x1 white one (alpha 1) when it has none.
     GLuint textureOf(const DrawItem& item) const {
@@ -75,11 +83,15 @@ public:
     const Aabb& casterBounds() const { return mCasterBounds; }
     // Changes whenever geometry or object data changed.
     std::uint64_t revision() const { return mRevision; }
-    // Content hash of all vertex and index data.
-    std::uint64_t geometryHash() const { return mGeometryHash; }
+    // Content hash of all vertex and index data, stand-in casters included.
+    std::uint64_t geometryHash() const {
+        std::uint32_t detail = 0;
+        std::memcpy(&detail, &mCasterDetail, sizeof detail);
+        return mGeometryHash ^ (std::uint64_t(detail) * 0x9e3779b97f4a7c15ull);
+    }
 
 private:
-    void uploadGeometry(const Scene& scene);
+    void uploadGeometry(const Scene& scene, float casterDetail);
     void uploadTextures(const Scene& scene);
     bool uploadDrawCommands();
 
@@ -98,13 +110,16 @@ private:
     };
     gl::Buffer mVertices, mIndices, mObjects;
     gl::Buffer mObjectIds;  // 0..n-1: attribute 4, one per instance
-    gl::Buffer mCommands;   // one command per item, once drawing 1 instance, then 6
+    // One command per item, four times: drawing 1 instance, 6, then their stand-ins' 1 and 6.
+    gl::Buffer mCommands;
     std::vector<DrawCommand> mCommandData, mCommandScratch;
     mutable GLsizei mDivisor = 1;
     gl::VertexArray mVao;
     std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
     std::vector<DrawItem> mItems;
-    std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
+    std::vector<std::pair<std::size_t, GLint>> mMeshRanges;       // first index byte, base vertex
+    std::vector<std::pair<std::size_t, GLsizei>> mStandInRanges;  // first index byte, count
+    float mCasterDetail = 1.0f;  // what the stand-ins were made for
     std::vector<Aabb> mMeshBounds;
     std::vector<char> mMeshClosed;  // isClosedSurface per mesh, at upload
     Aabb mBounds, mCasterBounds;

@@ -168,7 +168,7 @@ struct Renderer::Impl {
     void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
         check(s, options);
         makeCurrent();
-        scene.sync(s, options.time);
+        scene.sync(s, options.time, options.shadow.casterDetail);
 
         const float aspect = float(options.width) / float(options.height);
         const glm::mat4 viewFromWorld = shadow::viewFromWorld(s.camera);

@@ -196,8 +196,9 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
 template <typename SetUniforms>
 void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options, int variant,
                              GLsizei instances, const SetUniforms& setUniforms) {
+    // Stand-in casters always: at --caster-detail 1 they are the full meshes.
     drawDepthRuns(
-        scene, mVisible, instances,
+        scene, mVisible, instances, /*standIns=*/true,
         [&](const DrawItem& item) { return alphaTestedCaster(item, options); },
         // Only solids may lose faces: an open surface culled from the light's side would
         // cast no shadow at all (and one from the other side would not either).
@@ -385,7 +386,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         ++stats.rendered;
         std::uint64_t triangles = 0;
         for (std::uint32_t index : mVisible) {
-            triangles += std::uint64_t(scene.items()[index].indexCount / 3) * (cube ? 6 : 1);
+            triangles += std::uint64_t(scene.items()[index].standInIndexCount / 3) * (cube ? 6 : 1);
         }
         stats.triangles += triangles;
         if (clock && timings) {

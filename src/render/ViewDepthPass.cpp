@@ -37,7 +37,8 @@ void ViewDepthPass::draw(const GpuScene& scene, const glm::mat4& clipFromWorld) 
         if (items[i].indexCount > 0 && items[i].alphaMode != AlphaMode::Blend) mItems.push_back(i);
     }
     drawDepthRuns(
-        scene, mItems, 1, [](const DrawItem& item) { return item.alphaMode == AlphaMode::Mask; },
+        scene, mItems, 1, /*standIns=*/false,
+        [](const DrawItem& item) { return item.alphaMode == AlphaMode::Mask; },
         [](const DrawItem& item) { return !item.doubleSided; },
         [&](bool alpha) {
             glUseProgram(program(alpha).id());

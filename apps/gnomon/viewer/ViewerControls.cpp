@@ -284,7 +284,7 @@ void Viewer::shadowMapControls() {
             ImGui::TextDisabled("map-size: each light's own");
         }
         flagTip("--map-size");
-        options({"depth-format", "map-filter", "outside"});
+        options({"caster-detail", "depth-format", "map-filter", "outside"});
     }
     if (ImGui::CollapsingHeader("Tolerances", ImGuiTreeNodeFlags_DefaultOpen)) {
         options({"bias-constant", "bias-depth-aware", "bias-slope", "bias-units", "receiver-plane",

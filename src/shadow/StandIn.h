@@ -1,0 +1,22 @@
+// Stand-in casters: a coarser copy of a mesh drawn into shadow maps instead of the full one
+// (the cheaper shadow geometry of W. Brown's course text, §12.6; engines call them shadow
+// LODs or proxies). Made at load time with meshoptimizer: vertices welded by position (a
+// depth pass needs no normals or texture seams), then simplified to the share of triangles
+// asked for. The indices refer to the mesh's own vertices, so the stand-in shares its vertex
+// buffer.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gnomon/Scene.h"
+
+namespace gnomon::shadow {
+
+// Indices of a stand-in keeping about `detail` (0 < detail <= 1) of the mesh's triangles:
+// the mesh's own for 1 or for meshes too small to simplify. Simplification keeps the
+// surface where it can (meshoptimizer's edge collapses); where seams and borders stop it
+// short of the target, a cruder grid-based pass reaches it.
+std::vector<std::uint32_t> standInIndices(const Mesh& mesh, float detail);
+
+}  // namespace gnomon::shadow

@@ -1,0 +1,104 @@
+// Stand-in casters (--caster-detail): a finely tessellated sphere over a floor, seen from
+// straight above. A tenth of its triangles in the shadow pass
+// cuts the pass's triangles about tenfold and leaves the shadow where it was: the floor under
+// the sphere dark, beyond its radius lit, and the shadow's area within a few percent.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "GlTest.h"
+#include "scene/MeshBuilder.h"
+
+namespace gnomon::test {
+namespace {
+
+constexpr float kHalfView = 3.0f;
+constexpr int kSize = 128;
+
+Mesh sphere(float radius, int columns, int rows) {
+    Mesh m;
+    m.name = "sphere";
+    for (int r = 0; r <= rows; ++r) {
+        const float theta = 3.14159265f * float(r) / float(rows);
+        for (int c = 0; c <= columns; ++c) {
+            const float phi = 6.2831853f * float(c) / float(columns);
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                              std::sin(theta) * std::sin(phi));
+            m.positions.push_back(glm::vec3(0.0f, 1.5f, 0.0f) + radius * n);
+            m.normals.push_back(n);
+        }
+    }
+    const auto at = [&](int r, int c) { return std::uint32_t(r * (columns + 1) + c); };
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < columns; ++c) {
+            m.indices.insert(m.indices.end(), {at(r, c), at(r + 1, c + 1), at(r + 1, c)});
+            m.indices.insert(m.indices.end(), {at(r, c), at(r, c + 1), at(r + 1, c + 1)});
+        }
+    }
+    return m;
+}
+
+Scene sphereOverFloor() {
+    Scene s;
+    s.name = "sphere over floor";
+    Material grey;
+    grey.baseColour = glm::vec3(0.8f);
+    grey.specular = 0.0f;
+    s.materials.push_back(grey);
+    s.meshes.push_back(mesh::box("floor", {0.0f, -0.05f, 0.0f}, {8.0f, 0.1f, 8.0f}));
+    s.meshes.push_back(sphere(1.0f, 128, 64));
+    // The sphere receives no shadow (its own lit top is not what is measured) and casts.
+    s.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, false, true});
+    s.objects.push_back({"sphere", 1, 0, glm::mat4(1.0f), {}, true, false});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    sun.shadowMapSize = 1024;
+    s.lights.push_back(sun);
+    s.camera = lookingStraightDown(kHalfView);
+    s.ambient = glm::vec3(0.05f);
+    s.options.width = s.options.height = kSize;
+    return s;
+}
+
+// The camera looks straight down and would see the sphere over its own shadow: the sun is
+// tilted 45 degrees so that the shadow falls beside it.
+TEST(StandInCasters, TenthOfTheTrianglesCastsTheSameShadow) {
+    Scene s = sphereOverFloor();
+    s.lights[0].direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));  // shadow to +x
+    RenderOptions full = s.options, coarse = s.options;
+    coarse.shadow.casterDetail = 0.1f;
+    const Image a = sharedRenderer().render(s, full);
+    const std::uint64_t fullTriangles = sharedRenderer().lastFrameStats().shadowTriangles;
+    const Image b = sharedRenderer().render(s, coarse);
+    const std::uint64_t coarseTriangles = sharedRenderer().lastFrameStats().shadowTriangles;
+    writePng(outputDir() + "/stand_in_full.png", a);
+    writePng(outputDir() + "/stand_in_coarse.png", b);
+    EXPECT_LE(coarseTriangles * 8, fullTriangles)
+        << coarseTriangles << " triangles against " << fullTriangles;
+
+    // The shadow of a sphere at height 1.5 under a 45-degree sun: a disc around x = 1.5
+    // (stretched along x) on the floor, right of the sphere's own outline.
+    const auto pixel = [&](float x, float z) {
+        return std::pair<int, int>{int((x + kHalfView) / (2.0f * kHalfView) * kSize),
+                                   int((z + kHalfView) / (2.0f * kHalfView) * kSize)};
+    };
+    for (const Image* image : {&a, &b}) {
+        const auto [sx, sy] = pixel(2.2f, 0.0f);
+        const auto [lx, ly] = pixel(-2.5f, 0.0f);
+        EXPECT_LT(luminance(image->at(sx, sy)), 100) << "the shadow's centre is lit";
+        EXPECT_GT(luminance(image->at(lx, ly)), 300) << "the lit floor is dark";
+    }
+    long darkA = 0, darkB = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = kSize / 2 + kSize / 6; x < kSize; ++x) {  // right of the sphere's outline
+            darkA += luminance(a.at(x, y)) < 200;
+            darkB += luminance(b.at(x, y)) < 200;
+        }
+    }
+    ASSERT_GT(darkA, 100);
+    EXPECT_LT(std::abs(darkA - darkB), darkA / 20) << darkA << " dark pixels against " << darkB;
+}
+
+}  // namespace
+}  // namespace gnomon::test
