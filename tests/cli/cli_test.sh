@@ -75,7 +75,7 @@ PY
         fail "sweep.csv header"
     grep -q "<polyline" "$work/s/sweep.svg" || fail "sweep.svg has no lines"
     run bench --scene tutorial-room --sweep colour
-    expect 2 "--sweep: expected lights, map-size, triangles, cascades or filter"
+    expect 2 "--sweep: expected lights, map-size, triangles, cascades, filter or caster-detail"
     run bench --scene tutorial-room --sweep map-size --values 256,big --frames 1 --warmup 0 \
         --out-dir "$work/s"
     expect 2 "'big' is not a number"
