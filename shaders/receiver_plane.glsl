@@ -1,0 +1,64 @@
+// Receiver-plane depth for the shadow lookups of shadow_lookup.glsl (included there, after
+// LightData): the receiver's plane, its depth gradient in a map, and the per-tap depth offsets
+// along it.
+
+// The receiver's plane, world space: set by main() from the screen-space derivatives of the
+// fragment's position, which give the triangle's own plane (the interpolated normal of a
+// smooth mesh is not it). Its sign does not matter.
+vec3 gPlaneNormal = vec3(0.0, 1.0, 0.0);
+
+// Receiver-plane depth (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC
+// 2006; Dou et al., "Adaptive Depth Bias for Shadow Maps", I3D 2014). A plane stays a plane
+// through the light's projection, so the depth it stores is affine in map coordinates:
+// depth(t) = coord.z + dot(gradient, t - coord.xy). Comparing each texel against the depth
+// its own centre has on the receiver's plane removes the slope from the tolerance: what is
+// left covers rounding. `clip` is the lookup point in map clip space, `coord`
+// after the divide; two tangent steps of about a texel give the gradient per map unit.
+// The steepest receiver plane followed, as depth per distance across the light (tan of
+// the angle between the surface's normal and the light): steeper planes are followed only
+// this far, and the depth pass's slope-scaled offset covers the rest. Measured on Sponza's
+// arches and the built-in scenes: 1-2 leak least; 4 and more let grazing planes reach past
+// real occluders within the filter's footprint.
+const float kPlaneMaxSlope = 2.0;
+// ...except on the side where the plane comes towards the light, followed up to this many
+// times further. There a surface turned almost edge-on to the light meets its neighbours
+// across convex edges (a cube's lit top beside a grazing side): they lie behind the side's
+// plane, so the full plane finds them lit, while the capped one, too deep there, finds
+// them in front and shadows the whole side in stripes (SimpleInstancing with a side sun:
+// 0.14 % of the view falsely shadowed away from edges with the cap alone, 0.04 % with 6x).
+// Larger factors fix that further but leak more along real occluders' edges (Sponza's
+// atrium, ToyCar); scripts/quality-real.py measures both.
+const float kPlaneMaxApproach = 6.0;
+// The plane's full, uncapped gradient of the last receiverPlaneGradient call.
+vec2 gPlaneFull = vec2(0.0);
+// The depth offset of a tap `o` away on the receiver's plane, from its capped gradient `g`
+// and its full one `full` (the same units): capped as above, less so towards the light.
+float planeAlong(vec2 g, vec2 full, vec2 o) {
+    float capped = dot(g, o);
+    return min(capped, max(dot(full, o), kPlaneMaxApproach * capped));
+}
+vec4 planeAlong4(vec4 capped, vec4 full) {
+    return min(capped, max(full, kPlaneMaxApproach * capped));
+}
+vec2 receiverPlaneGradient(LightData light, vec4 clip, vec3 coord, float texelWorld,
+                           float texelCoord, vec3 wsToLight) {
+    vec3 n = gPlaneNormal;
+    vec3 t1 = normalize(abs(n.x) > 0.5 ? vec3(n.y, -n.x, 0.0) : vec3(0.0, n.z, -n.y));
+    vec3 t2 = cross(n, t1);
+    vec4 c1 = clip + light.textureFromWorld * vec4(t1 * texelWorld, 0.0);
+    vec4 c2 = clip + light.textureFromWorld * vec4(t2 * texelWorld, 0.0);
+    vec3 d1 = c1.xyz / c1.w - coord, d2 = c2.xyz / c2.w - coord;
+    float det = d1.x * d2.y - d2.x * d1.y;
+    // A plane seen edge-on by the light has no depth gradient in the map: no texel but its
+    // own line shows it, and the single-depth comparison is as good as any.
+    gPlaneFull = vec2(0.0);
+    if (!(abs(det) > 1e-6 * length(d1.xy) * length(d2.xy))) return vec2(0.0);
+    vec2 g = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+    gPlaneFull = g;
+    // Clamped to kPlaneMaxSlope: the depth the surface changes over one texel when it is
+    // tilted that much, from a step towards the light.
+    vec4 c3 = clip + light.textureFromWorld * vec4(wsToLight * texelWorld * kPlaneMaxSlope, 0.0);
+    float maxPerTexel = abs(coord.z - c3.z / c3.w);
+    float perTexel = length(g) * texelCoord;
+    return perTexel > maxPerTexel ? g * (maxPerTexel / perTexel) : g;
+}
