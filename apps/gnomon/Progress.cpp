@@ -55,11 +55,6 @@ Activity::~Activity() {
     if (mThread.joinable()) mThread.join();
 }
 
-void Activity::relabel(std::string label) {
-    std::lock_guard<std::mutex> lock(mMutex);
-    mLabel = std::move(label);
-}
-
 void Activity::run() {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();

@@ -42,8 +42,6 @@ public:
     ~Activity();
     Activity(const Activity&) = delete;
     Activity& operator=(const Activity&) = delete;
-    // A new label for the same line (a sweep's next value).
-    void relabel(std::string label);
 
 private:
     void run();

@@ -473,3 +473,27 @@ TEST(Scene, AddGroundPutsAReceiverUnderTheScene) {
 
 }  // namespace
 }  // namespace gnomon
+
+namespace gnomon {
+namespace {
+
+// The default sun stands over the camera's right shoulder: its light travels away from the
+// camera (shadows fall beyond their casters, not towards the viewer), from the camera's right
+// (they fall to the left, beside the casters), 50 degrees down.
+TEST(DefaultSun, ComesOverTheCamerasRightShoulder) {
+    Camera cam;
+    cam.eye = {0.0f, 2.0f, 10.0f};
+    cam.centre = {0.0f, 0.0f, 0.0f};
+    const glm::vec3 d = defaultSunDirection(cam);
+    EXPECT_NEAR(glm::length(d), 1.0f, 1e-5f);
+    EXPECT_NEAR(-d.y, std::sin(glm::radians(50.0f)), 1e-4f);
+    EXPECT_LT(d.z, 0.0f) << "travels towards the camera";
+    EXPECT_LT(d.x, 0.0f) << "comes from the camera's left";
+    // Looking straight down there is no shoulder: a fixed high sun.
+    cam.eye = {0.0f, 10.0f, 0.0f};
+    const glm::vec3 down = defaultSunDirection(cam);
+    EXPECT_LT(down.y, -0.8f);
+}
+
+}  // namespace
+}  // namespace gnomon
