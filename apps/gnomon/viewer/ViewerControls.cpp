@@ -108,8 +108,12 @@ void Viewer::sceneControls() {
         mSavePath = mState.scene.name + "-tuned.json";
     }
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    if (ImGui::BeginCombo("built-in", mState.source.c_str())) {
-        for (const SceneInfo& s : builtinScenes()) {
+    // The combo names a built-in scene; a file loaded instead shows in the field below.
+    static const std::vector<SceneInfo> builtins = builtinScenes();  // fixed: read once
+    const bool isBuiltin = std::any_of(builtins.begin(), builtins.end(),
+                                       [&](const SceneInfo& s) { return s.name == mState.source; });
+    if (ImGui::BeginCombo("built-in", isBuiltin ? mState.source.c_str() : "(a file, below)")) {
+        for (const SceneInfo& s : builtins) {
             if (ImGui::Selectable(s.name.c_str(), s.name == mState.source)) {
                 guarded([&] { view::applyFlags(mState, {"--scene", s.name}); });
             }

@@ -72,6 +72,43 @@ void Viewer::views(float x, float mainW, float viewW, float viewH) {
     ImGui::End();
 }
 
+// Where a directional light's icon goes: towards the light from the view's centre, as far as
+// it is seen, else at the view's border in that direction (a sun over the camera's shoulder
+// is behind it). False when the view's centre itself does not project.
+template <typename Project>
+bool sunOnView(const Camera& cam, const glm::vec3& direction, const Project& project,
+               const ImVec2& origin, const ImVec2& size, ImVec2& out) {
+    const float reach = 0.5f * glm::length(cam.centre - cam.eye);
+    const glm::vec3 toSun = -glm::normalize(direction);
+    const float margin = 22.0f;
+    const auto inside = [&](const ImVec2& q) {
+        return q.x >= origin.x + margin && q.x <= origin.x + size.x - margin &&
+               q.y >= origin.y + margin && q.y <= origin.y + size.y - margin;
+    };
+    if (project(cam.centre + toSun * reach, out) && inside(out)) return true;
+    ImVec2 c, q;
+    if (!project(cam.centre, c) || !project(cam.centre + toSun * (0.01f * reach), q)) return false;
+    float dx = q.x - c.x, dy = q.y - c.y;
+    const float length = std::sqrt(dx * dx + dy * dy);
+    if (length < 1e-4f) {
+        dx = 0.0f;  // straight at the camera: the top edge
+        dy = -1.0f;
+    } else {
+        dx /= length;
+        dy /= length;
+    }
+    const float inf = 1e9f;
+    const float tx = dx > 0.0f   ? (origin.x + size.x - margin - c.x) / dx
+                     : dx < 0.0f ? (origin.x + margin - c.x) / dx
+                                 : inf;
+    const float ty = dy > 0.0f   ? (origin.y + size.y - margin - c.y) / dy
+                     : dy < 0.0f ? (origin.y + margin - c.y) / dy
+                                 : inf;
+    const float t = std::max(0.0f, std::min(tx, ty));
+    out = {c.x + dx * t, c.y + dy * t};
+    return true;
+}
+
 // Each light as an icon over the camera's view, in its colour, ringed when selected: a disc at
 // a point, spot or area light's position (a spot's with a stroke along its axis), a sun
 // (disc and rays) towards a directional light, above the view's centre. Returns the light
@@ -97,7 +134,8 @@ int Viewer::lightIcons(const ImVec2& origin, const ImVec2& size, bool hovered) {
         const bool sun = l.type == LightType::Directional;
         const glm::vec3 at = sun ? cam.centre - glm::normalize(l.direction) * reach : l.position;
         ImVec2 p;
-        if (!project(at, p)) continue;
+        if (sun && !sunOnView(cam, l.direction, project, origin, size, p)) continue;
+        if (!sun && !project(at, p)) continue;
         // The light's hue at full brightness: dim colours still read as icons.
         const float peak = std::max({l.colour.r, l.colour.g, l.colour.b, 1e-6f});
         const glm::vec3 c = glm::clamp(l.colour / peak, 0.0f, 1.0f);
