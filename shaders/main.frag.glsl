@@ -14,6 +14,7 @@
 // per light and nothing else, the least a main pass with these shadows can do.
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
+#include "contact_shadows.glsl"
 
 in VertexOut {
     vec3 wsPosition;
@@ -123,10 +124,25 @@ void recordVisibility(LightData light, float visibility) {
             vec3 wsToLight = mat3(uWorldFromView) * vsToLight;                           \
             gTexelWorld = 0.0;                                                          \
             visibility = LOOKUP(light, vIn.wsPosition, s.wsN, wsToLight, -vIn.vsPosition.z); \
+            CONTACT(light, visibility, vsToLight);                                      \
             RECORD(light, visibility);                                                  \
         }                                                                               \
         shade(light, s, vsToLight, falloff, visibility, lit, factor);                   \
     }
+
+#ifdef CONTACT_SHADOWS
+// Point and spot lights: the march stops short of the light.
+#define CONTACT(light, visibility, vsToLight)                                            \
+    if (visibility > 0.0) {                                                             \
+        int kind = int(light.vsPosition.w);                                             \
+        float reach = kind == kDirectional || kind == kArea                             \
+                          ? 1e30                                                        \
+                          : length(light.vsPosition.xyz - vIn.vsPosition);              \
+        visibility = min(visibility, contactShadow(vIn.vsPosition, s.vsN, vsToLight, reach)); \
+    }
+#else
+#define CONTACT(light, visibility, vsToLight)
+#endif
 
 #ifdef VISIBILITY_PASS
 #define RECORD(light, visibility) recordVisibility(light, visibility)

@@ -113,6 +113,9 @@ struct ShadowOptions {
     // Stand-in casters: the share of each mesh's triangles drawn into shadow maps, 0.001..1
     // (meshoptimizer's simplification, made once per value); 1 = the full meshes.
     float casterDetail = 1.0f;
+    // Screen-space contact shadows: each pixel marches this far (world units) towards each
+    // shadowed light through the view's depth, for the contacts a map misses; 0 = off.
+    float contactLength = 0.0f;
 
     bool operator==(const ShadowOptions&) const = default;
 };

@@ -223,6 +223,14 @@ void addFiltering(std::vector<OptionSpec>& s) {
          .kind = K::Real,
          .max = 20,
          NUMBER(shadow.lightAngle, float)});
+    add({.name = "contact-length",
+         .group = "Filtering",
+         .doc = "screen-space contact shadows: march this far towards each shadowed light "
+                "through the view's depth, for contacts the map misses (0: off)",
+         .unit = "world units",
+         .kind = K::Real,
+         .max = 1e6,
+         NUMBER(shadow.contactLength, float)});
     add({.name = "map-filter",
          .group = "Filtering",
          .doc = "filtering of the stored depth before a comparison by hand (colour formats, and "

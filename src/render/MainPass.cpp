@@ -51,7 +51,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(in.shadowCubes != nullptr) << 21 | std::uint64_t(in.hasCascades) << 22 |
         std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24 |
         std::uint64_t(so.receiverPlane) << 25 | std::uint64_t(floor) << 26 |
-        std::uint64_t(ditherMode(options, floor)) << 27;
+        std::uint64_t(ditherMode(options, floor)) << 27 |
+        std::uint64_t(in.viewDepth != nullptr && so.enabled) << 29;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -97,6 +98,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
     if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
+    if (in.viewDepth && so.enabled) defines.push_back("CONTACT_SHADOWS");
     if (const int dither = ditherMode(options, floor)) {
         defines.push_back(dither == 2 ? "DITHER_SRGB" : "DITHER_LINEAR");
     }
@@ -172,6 +174,12 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         glBindSampler(2, mRawSampler.id());
         glBindSampler(3, mRawSampler.id());
     }
+    // The view's depth for contact shadows: unit 5, read raw.
+    if (in.viewDepth) {
+        if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
+        glBindTextureUnit(5, in.viewDepth->id());
+        glBindSampler(5, mRawSampler.id());
+    }
     return rawDepths;
 }
 
@@ -181,6 +189,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     const bool rawDepths = bindMaps(in, options.shadow);
 
     const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
+    const glm::mat4 viewFromClip = glm::inverse(in.clipFromView);
     // Spacing of stored depths per kind of map; -1 asks the shader for a float ulp.
     auto spacing = [](DepthFormat f) {
         return f == DepthFormat::Depth32F ? -1.0f : shadow::storedDepthSpacing(f, 0.5f);
@@ -198,6 +207,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glUniform4iv(6, 1, &in.lightRanges[0]);
         glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
                     spacing(cubeFormat));
+        if (in.viewDepth) {
+            glUniformMatrix4fv(8, 1, GL_FALSE, &viewFromClip[0][0]);
+            glUniform1f(9, options.shadow.contactLength);
+        }
     };
     // Opaque and masked items in their order (the fast program, then the material one where
     // needed, each texture bound once); blended ones after, farthest first, over them.

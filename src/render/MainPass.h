@@ -37,6 +37,8 @@ struct MainPassInputs {
     bool hasCascades = false;                 // some light is cascaded this frame
     const gl::Texture* shadowMaps = nullptr;  // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
+    // The view's depth at the output's size (ViewDepthPass), for contact shadows.
+    const gl::Texture* viewDepth = nullptr;
 };
 
 class MainPass {
@@ -65,7 +67,7 @@ private:
     // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;
-    gl::Sampler mRawSampler;  // PCSS blocker search: stored depth, NEAREST, no comparison
+    gl::Sampler mRawSampler;  // stored depth, NEAREST, no comparison (PCSS, contact shadows)
     int mMapSamplerKey = -1, mCubeSamplerKey = -1;          // the filters they were made for
     gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame

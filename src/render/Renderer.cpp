@@ -178,7 +178,8 @@ struct Renderer::Impl {
         stats.passes = std::move(keep);  // keeps its capacity
         render::PassClock* timer = passTiming ? clock.get() : nullptr;
         const shadow::ViewSamples* samples = nullptr;
-        if (render::LightPlan::wantsViewSamples(s, options)) {
+        const bool contact = options.shadow.enabled && options.shadow.contactLength > 0.0f;
+        if (render::LightPlan::wantsViewSamples(s, options) || contact) {
             if (timer) timer->start();
             samples = &viewDepth.sample(scene, s.camera, options.width, options.height);
             if (timer) stats.passes.push_back(timer->stop("view depth", -1, 0));
@@ -222,6 +223,7 @@ struct Renderer::Impl {
         }
         in.shadowMaps = any2D ? &shadowPass.maps() : nullptr;
         in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
+        in.viewDepth = contact ? &viewDepth.depth() : nullptr;
         if (timer) timer->start();
         if (options.debugView == DebugView::ShadowMap) {
             const int light = options.lightOnly >= 0 ? options.lightOnly

@@ -29,6 +29,8 @@ public:
                                       int height);
     // Drop the kept samples: the next sample() draws.
     void invalidate() { mValid = false; }
+    // The view's depth at the output's size, as the last sample() drew it (contact shadows).
+    const gl::Texture& depth() const { return mDepth; }
 
 private:
     const gl::Program& program(bool alphaTested);

@@ -1,0 +1,50 @@
+// Screen-space contact shadows (--contact-length): on tutorial-room-thin with a tolerance
+// large enough to detach the shadows from their casters (peter-panning, the failure they
+// are for), a march of one unit towards the sun gives back the contacts: the leak, scored
+// against the ray-traced reference, falls to under half, and false shadow barely rises.
+#include <gtest/gtest.h>
+
+#include "GlTest.h"
+
+namespace gnomon::test {
+namespace {
+
+RenderOptions detached(const Scene& s) {
+    RenderOptions o = s.options;
+    o.width = o.height = 256;
+    o.shadow.biasConstant = 0.06f;
+    return o;
+}
+
+TEST(ContactShadows, HalveTheLeakAtDetachedContacts) {
+    const Scene s = builtinScene("tutorial-room-thin");
+    RenderOptions off = detached(s), on = detached(s);
+    on.shadow.contactLength = 1.0f;
+    const ScoreResult without = score(sharedRenderer(), s, off);
+    const ScoreResult with = score(sharedRenderer(), s, on);
+    ASSERT_GT(without.overall.leak, 0.0005) << "the tolerance no longer detaches the shadows";
+    EXPECT_LT(with.overall.leak, 0.5 * without.overall.leak)
+        << "leak " << with.overall.leak << " with contact shadows, " << without.overall.leak
+        << " without";
+    EXPECT_LT(with.overall.falseShadow, without.overall.falseShadow + 0.0002)
+        << "false shadow " << with.overall.falseShadow << " with, " << without.overall.falseShadow
+        << " without";
+}
+
+// Where the map already has the contacts (the defaults), the march adds no false shadow.
+TEST(ContactShadows, AddNoFalseShadowWhereTheMapIsRight) {
+    const Scene s = builtinScene("tutorial-room");
+    RenderOptions off = s.options;
+    off.width = off.height = 256;
+    RenderOptions on = off;
+    on.shadow.contactLength = 0.5f;
+    const ScoreResult without = score(sharedRenderer(), s, off);
+    const ScoreResult with = score(sharedRenderer(), s, on);
+    EXPECT_LT(with.overall.falseShadowOutsideBand, 0.0005);
+    EXPECT_LT(with.overall.misclassified, without.overall.misclassified + 0.0005)
+        << with.overall.misclassified << " with contact shadows, " << without.overall.misclassified
+        << " without";
+}
+
+}  // namespace
+}  // namespace gnomon::test
