@@ -12,6 +12,8 @@
 // fragments discarded below their cutoff, blended ones written with their alpha.
 // FLOOR (gnomon bench's reference): the same lights and shadow lookups with one diffuse term
 // per light and nothing else, the least a main pass with these shadows can do.
+// CONTACT_SHADOWS: each shadowed light's visibility also marched through the view's depth
+// (contact_shadows.glsl). DITHER_LINEAR / DITHER_SRGB: ordered dithering of the output.
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
