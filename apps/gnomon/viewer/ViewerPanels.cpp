@@ -111,8 +111,8 @@ bool sunOnView(const Camera& cam, const glm::vec3& direction, const Project& pro
 
 // Each light as an icon over the camera's view, in its colour, ringed when selected: a disc at
 // a point, spot or area light's position (a spot's with a stroke along its axis), a sun
-// (disc and rays) towards a directional light, above the view's centre. Returns the light
-// whose icon the mouse is over, or -1.
+// (disc and rays) towards a directional light from the view's centre (sunOnView). Returns the
+// light whose icon the mouse is over, or -1.
 int Viewer::lightIcons(const ImVec2& origin, const ImVec2& size, bool hovered) {
     const Camera& cam = mState.scene.camera;
     const glm::mat4 clipFromWorld = cameraClipFromWorld(cam, size.x / std::max(size.y, 1.0f));
@@ -132,10 +132,9 @@ int Viewer::lightIcons(const ImVec2& origin, const ImVec2& size, bool hovered) {
     for (std::size_t i = 0; i < mState.scene.lights.size(); ++i) {
         const Light& l = mState.scene.lights[i];
         const bool sun = l.type == LightType::Directional;
-        const glm::vec3 at = sun ? cam.centre - glm::normalize(l.direction) * reach : l.position;
         ImVec2 p;
-        if (sun && !sunOnView(cam, l.direction, project, origin, size, p)) continue;
-        if (!sun && !project(at, p)) continue;
+        if (sun ? !sunOnView(cam, l.direction, project, origin, size, p) : !project(l.position, p))
+            continue;
         // The light's hue at full brightness: dim colours still read as icons.
         const float peak = std::max({l.colour.r, l.colour.g, l.colour.b, 1e-6f});
         const glm::vec3 c = glm::clamp(l.colour / peak, 0.0f, 1.0f);
