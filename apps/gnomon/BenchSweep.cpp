@@ -14,20 +14,6 @@
 namespace gnomon::cli {
 namespace {
 
-// The world box of `scene`'s vertices at rest (the CLI sees only the public API).
-void sceneBox(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
-    lo = glm::vec3(std::numeric_limits<float>::max());
-    hi = glm::vec3(std::numeric_limits<float>::lowest());
-    for (const Object& o : scene.objects) {
-        for (const glm::vec3& p : scene.meshes[o.mesh].positions) {
-            const glm::vec3 w = glm::vec3(o.worldFromModel * glm::vec4(p, 1.0f));
-            lo = glm::min(lo, w);
-            hi = glm::max(hi, w);
-        }
-    }
-    if (lo.x > hi.x) lo = hi = glm::vec3(0.0f);
-}
-
 // Splits every triangle into four by its edge midpoints (normals and colours interpolated).
 void subdivide(Mesh& mesh) {
     std::vector<std::uint32_t> indices;
@@ -95,7 +81,7 @@ void applySweep(const std::string& param, const std::string& value, const Scene&
         // N spot lights on a ring over the scene, aimed at its centre.
         const int n = integer(1, 256);
         glm::vec3 lo, hi;
-        sceneBox(base, lo, hi);
+        sceneBounds(base, lo, hi);
         const glm::vec3 centre = 0.5f * (lo + hi);
         const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
         scene.lights.clear();

@@ -221,6 +221,9 @@ const char* toString(Projection v);
 // nearest lookup): the textbooks' method.
 RenderOptions presetOptions(const Scene& scene, Preset preset);
 
+// The world box of every object at rest (time 0) into lo and hi; both 0 for an empty scene.
+void sceneBounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi);
+
 // The scenes gnomon ships, in a stable order.
 std::vector<SceneInfo> builtinScenes();
 // A built-in scene by name; throws gnomon::Error listing the known names.

@@ -193,6 +193,12 @@ RenderOptions presetOptions(const Scene& scene, Preset preset) {
     return o;
 }
 
+void sceneBounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
+    const Aabb box = worldBounds(scene, meshBounds(scene), 0.0, false);
+    lo = box.empty() ? glm::vec3(0.0f) : box.min;
+    hi = box.empty() ? glm::vec3(0.0f) : box.max;
+}
+
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
     if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
     return scene.lights[index].enabled;

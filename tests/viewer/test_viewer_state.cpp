@@ -85,6 +85,22 @@ TEST(ViewerState, FlagsSetTheOptionsTheyName) {
     EXPECT_FLOAT_EQ(s.options.shadow.biasSlope, s.scene.options.shadow.biasSlope);
 }
 
+// A camera placed by flags sees the whole scene from wherever it stands: its depth range is
+// refitted (the scene's own, sized for its authored eye, would cut a distant view away).
+TEST(ViewerState, CameraFlagsRefitTheDepthRange) {
+    State s = loaded("tutorial-room");
+    applyFlags(s, {"--camera-eye", "300,200,300", "--camera-target", "0,0,0"});
+    const Camera& c = s.scene.camera;
+    glm::vec3 lo, hi;
+    sceneBounds(s.scene, lo, hi);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                          corner & 4 ? hi.z : lo.z);
+        EXPECT_LT(glm::length(p - c.eye), c.far) << "corner " << corner;
+        EXPECT_GT(glm::length(p - c.eye), c.near) << "corner " << corner;
+    }
+}
+
 TEST(ViewerState, BadFlagsNameTheFlagAndChangeNothing) {
     State s = loaded("tutorial-room");
     const RenderOptions before = s.options;
