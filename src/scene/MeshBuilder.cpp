@@ -1,5 +1,9 @@
 #include "scene/MeshBuilder.h"
 
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+
 namespace gnomon::mesh {
 namespace {
 void addQuad(Mesh& m, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
@@ -36,6 +40,30 @@ Mesh quad(const std::string& name, const glm::vec3& a, const glm::vec3& b, const
     Mesh m;
     m.name = name;
     addQuad(m, a, b, c, d);
+    return m;
+}
+
+Mesh sphere(const std::string& name, const glm::vec3& centre, float radius, int columns, int rows) {
+    Mesh m;
+    m.name = name;
+    for (int r = 0; r <= rows; ++r) {
+        const float theta = glm::pi<float>() * float(r) / float(rows);
+        for (int c = 0; c <= columns; ++c) {
+            const float phi = glm::two_pi<float>() * float(c) / float(columns);
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                              std::sin(theta) * std::sin(phi));
+            m.positions.push_back(centre + radius * n);
+            m.normals.push_back(n);
+            m.uvs.emplace_back(float(c) / float(columns), float(r) / float(rows));
+        }
+    }
+    const auto at = [&](int r, int c) { return std::uint32_t(r * (columns + 1) + c); };
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < columns; ++c) {
+            m.indices.insert(m.indices.end(), {at(r, c), at(r + 1, c + 1), at(r + 1, c)});
+            m.indices.insert(m.indices.end(), {at(r, c), at(r, c + 1), at(r + 1, c + 1)});
+        }
+    }
     return m;
 }
 

@@ -15,29 +15,6 @@ namespace {
 constexpr float kHalfView = 3.0f;
 constexpr int kSize = 128;
 
-Mesh sphere(float radius, int columns, int rows) {
-    Mesh m;
-    m.name = "sphere";
-    for (int r = 0; r <= rows; ++r) {
-        const float theta = 3.14159265f * float(r) / float(rows);
-        for (int c = 0; c <= columns; ++c) {
-            const float phi = 6.2831853f * float(c) / float(columns);
-            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
-                              std::sin(theta) * std::sin(phi));
-            m.positions.push_back(glm::vec3(0.0f, 1.5f, 0.0f) + radius * n);
-            m.normals.push_back(n);
-        }
-    }
-    const auto at = [&](int r, int c) { return std::uint32_t(r * (columns + 1) + c); };
-    for (int r = 0; r < rows; ++r) {
-        for (int c = 0; c < columns; ++c) {
-            m.indices.insert(m.indices.end(), {at(r, c), at(r + 1, c + 1), at(r + 1, c)});
-            m.indices.insert(m.indices.end(), {at(r, c), at(r, c + 1), at(r + 1, c + 1)});
-        }
-    }
-    return m;
-}
-
 Scene sphereOverFloor() {
     Scene s;
     s.name = "sphere over floor";
@@ -46,7 +23,7 @@ Scene sphereOverFloor() {
     grey.specular = 0.0f;
     s.materials.push_back(grey);
     s.meshes.push_back(mesh::box("floor", {0.0f, -0.05f, 0.0f}, {8.0f, 0.1f, 8.0f}));
-    s.meshes.push_back(sphere(1.0f, 128, 64));
+    s.meshes.push_back(mesh::sphere("sphere", {0.0f, 1.5f, 0.0f}, 1.0f, 128, 64));
     // The sphere receives no shadow (its own lit top is not what is measured) and casts.
     s.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, false, true});
     s.objects.push_back({"sphere", 1, 0, glm::mat4(1.0f), {}, true, false});

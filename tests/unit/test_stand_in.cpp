@@ -3,38 +3,15 @@
 // keeps the caster's extent.
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "scene/MeshBuilder.h"
 #include "shadow/StandIn.h"
 
 namespace gnomon {
 namespace {
 
-// A UV sphere of radius 1 with a texture seam: the first and last column of vertices share
-// positions but not texture coordinates, as loaders deliver meshes.
+// A UV sphere of radius 1 with a texture seam, as loaders deliver meshes.
 Mesh uvSphere(int columns, int rows) {
-    Mesh m;
-    m.name = "sphere";
-    for (int r = 0; r <= rows; ++r) {
-        const float theta = 3.14159265f * float(r) / float(rows);
-        for (int c = 0; c <= columns; ++c) {
-            const float phi = 6.2831853f * float(c) / float(columns);
-            const glm::vec3 p(std::sin(theta) * std::cos(phi), std::cos(theta),
-                              std::sin(theta) * std::sin(phi));
-            m.positions.push_back(p);
-            m.normals.push_back(p);
-            m.uvs.emplace_back(float(c) / float(columns), float(r) / float(rows));
-        }
-    }
-    const auto at = [&](int r, int c) { return std::uint32_t(r * (columns + 1) + c); };
-    for (int r = 0; r < rows; ++r) {
-        for (int c = 0; c < columns; ++c) {
-            m.indices.insert(m.indices.end(), {at(r, c), at(r + 1, c), at(r + 1, c + 1)});
-            m.indices.insert(m.indices.end(), {at(r, c), at(r + 1, c + 1), at(r, c + 1)});
-        }
-    }
-    return m;
+    return mesh::sphere("sphere", glm::vec3(0.0f), 1.0f, columns, rows);
 }
 
 TEST(StandIn, FullDetailAndSmallMeshesAreTheMeshItself) {
