@@ -34,6 +34,13 @@ void subdivide(Mesh& mesh) {
 }
 
 // Scene and options for one value of a sweep.
+[[noreturn]] void unknownSweep(const std::string& param) {
+    throw Error(ErrorKind::InvalidInput,
+                "--sweep: expected lights, map-size, triangles, cascades, filter or "
+                "caster-detail, got '" +
+                    param + "'");
+}
+
 }  // namespace
 
 void applySweep(const std::string& param, const std::string& value, const Scene& base,
@@ -117,10 +124,7 @@ void applySweep(const std::string& param, const std::string& value, const Scene&
                 subdivide(mesh);
         }
     } else {
-        throw Error(ErrorKind::InvalidInput,
-                    "--sweep: expected lights, map-size, triangles, cascades, filter or "
-                    "caster-detail, got '" +
-                        param + "'");
+        unknownSweep(param);
     }
 }
 
@@ -151,10 +155,7 @@ std::vector<std::string> sweepValues(const BenchArgs& args) {
     std::vector<std::string> values;
     if (!args.sweep.empty()) {
         if (defaultValues(args.sweep).empty()) {
-            throw Error(ErrorKind::InvalidInput,
-                        "--sweep: expected lights, map-size, triangles, cascades, filter or "
-                        "caster-detail, got '" +
-                            args.sweep + "'");
+            unknownSweep(args.sweep);
         }
         if (args.values.empty()) {
             values = defaultValues(args.sweep);

@@ -1,7 +1,7 @@
-// The files one command writes into an output folder, all or none: the folder is made at
-// once (an unwritable place fails before the work), each file is written through a temporary
-// file and renamed (AtomicFile), and unless keep() is called, the destructor (a failure or an
-// interrupt on the way) removes the files written so far and the folder when it made it.
+// The files one command writes, all or none: an output folder is made at once (an unwritable
+// place fails before the work), each file is written through a temporary file and renamed
+// (AtomicFile), and unless keep() is called, the destructor (a failure or an interrupt on the
+// way) removes the files written so far and the folder when it made it.
 #pragma once
 
 #include <filesystem>
@@ -15,7 +15,9 @@ namespace gnomon::cli {
 
 class OutputSet {
 public:
-    // `flag` names the folder's option in messages ("--out-dir").
+    // Files anywhere (add()), no folder.
+    OutputSet() = default;
+    // With `folder` for file(); `flag` names the folder's option in messages ("--out-dir").
     OutputSet(std::string folder, const std::string& flag) : mFolder(std::move(folder)) {
         std::error_code ec;
         mMade = !std::filesystem::exists(mFolder, ec);
@@ -36,8 +38,10 @@ public:
     OutputSet& operator=(const OutputSet&) = delete;
 
     // The path of `name` in the folder, recorded as written (call before writing it).
-    std::string file(const std::string& name) {
-        mWritten.push_back(mFolder + "/" + name);
+    std::string file(const std::string& name) { return add(mFolder + "/" + name); }
+    // `path`, anywhere, recorded as written (call before writing it).
+    const std::string& add(const std::string& path) {
+        mWritten.push_back(path);
         return mWritten.back();
     }
     void keep() { mKept = true; }

@@ -14,6 +14,7 @@
 
 #include "BenchCommand.h"
 #include "HelpFormatter.h"
+#include "OutputSet.h"
 #include "Progress.h"
 #include "RenderOptionsCli.h"
 #include "ScoreCommand.h"
@@ -70,37 +71,19 @@ struct RenderArgs {
 // The image, then each light's map: all of them, or (on any failure) none of them.
 void writeOutputs(const RenderArgs& args, gnomon::Renderer& renderer, const gnomon::Image& image,
                   bool verbose) {
-    std::vector<std::string> written;
-    std::error_code ec;
-    const bool madeFolder =
-        !args.shadowMaps.empty() && !std::filesystem::exists(args.shadowMaps, ec);
-    try {
-        if (!args.shadowMaps.empty()) {
-            std::filesystem::create_directories(args.shadowMaps, ec);
-            if (ec || !std::filesystem::is_directory(args.shadowMaps)) {
-                throw gnomon::Error(gnomon::ErrorKind::Io,
-                                    "--shadow-maps: cannot create folder '" + args.shadowMaps +
-                                        "': " + (ec ? ec.message() : "a file is in the way"));
-            }
-        }
-        gnomon::writeImage(args.out, image);
-        written.push_back(args.out);
-        for (const gnomon::ShadowMapImage& map : args.shadowMaps.empty()
-                                                     ? std::vector<gnomon::ShadowMapImage>{}
-                                                     : renderer.shadowMaps()) {
-            const std::string path =
-                args.shadowMaps + "/light-" + std::to_string(map.light) +
-                (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") + ".png";
-            gnomon::writePng(path, map.depth);
-            written.push_back(path);
-            if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
-        }
-    } catch (...) {
-        for (const std::string& path : written)
-            std::filesystem::remove(path, ec);
-        if (madeFolder) std::filesystem::remove(args.shadowMaps, ec);
-        throw;
+    const bool maps = !args.shadowMaps.empty();
+    gnomon::cli::OutputSet files =
+        maps ? gnomon::cli::OutputSet(args.shadowMaps, "--shadow-maps") : gnomon::cli::OutputSet();
+    gnomon::writeImage(files.add(args.out), image);
+    for (const gnomon::ShadowMapImage& map :
+         maps ? renderer.shadowMaps() : std::vector<gnomon::ShadowMapImage>{}) {
+        const std::string path = files.file(
+            "light-" + std::to_string(map.light) +
+            (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") + ".png");
+        gnomon::writePng(path, map.depth);
+        if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
     }
+    files.keep();
 }
 
 int runRender(const RenderArgs& args, bool verbose) {
