@@ -75,6 +75,8 @@ void GpuScene::uploadGeometry(const Scene& scene, float casterDetail) {
         for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
             const std::vector<std::uint32_t> standIn =
                 shadow::standInIndices(scene.meshes[m], casterDetail);
+            // Meshes too small to simplify keep drawing their own range.
+            if (standIn.size() == scene.meshes[m].indices.size()) continue;
             mStandInRanges[m] = {indices.size() * sizeof(std::uint32_t), GLsizei(standIn.size())};
             indices.insert(indices.end(), standIn.begin(), standIn.end());
         }

@@ -52,7 +52,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24 |
         std::uint64_t(so.receiverPlane) << 25 | std::uint64_t(floor) << 26 |
         std::uint64_t(ditherMode(options, floor)) << 27 |
-        std::uint64_t(in.viewDepth != nullptr && so.enabled) << 29;
+        std::uint64_t(in.viewDepth != nullptr) << 29;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -98,7 +98,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
     if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
-    if (in.viewDepth && so.enabled) defines.push_back("CONTACT_SHADOWS");
+    if (in.viewDepth) defines.push_back("CONTACT_SHADOWS");
     if (const int dither = ditherMode(options, floor)) {
         defines.push_back(dither == 2 ? "DITHER_SRGB" : "DITHER_LINEAR");
     }

@@ -37,7 +37,8 @@ struct MainPassInputs {
     bool hasCascades = false;                 // some light is cascaded this frame
     const gl::Texture* shadowMaps = nullptr;  // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
-    // The view's depth at the output's size (ViewDepthPass), for contact shadows.
+    // The view's depth at the output's size (ViewDepthPass) when contact shadows are on (and
+    // shadows are): null otherwise.
     const gl::Texture* viewDepth = nullptr;
 };
 
