@@ -38,3 +38,14 @@ layout(std140, binding = 1) uniform Lights {
 // [z, w) cascaded (their cascade records follow at w and beyond). Lights that are off have
 // no record.
 layout(location = 6) uniform ivec4 uLightRanges;
+// The loops visit records through this list (render/TiledLights.h), from uLightFirst to the
+// ends in uLightRanges: every record in turn for an untiled draw, or the lights that reach
+// one screen tile. Read at the loop counter, a dynamically uniform index, it costs a scalar
+// load per light.
+layout(std140, binding = 2) uniform LightOrder {
+    ivec4 uLightOrder[1024];  // 4096 entries, four to a std140 slot
+};
+layout(location = 10) uniform int uLightFirst;
+int lightRecord(int k) {
+    return uLightOrder[k >> 2][k & 3];
+}

@@ -111,13 +111,14 @@ void recordVisibility(LightData light, float visibility) {
 }
 #endif
 
-// One loop per kind of light, over its range of records (uLightRanges: ends of the
-// unshadowed, single-map, cube and cascaded ranges). llvmpipe runs both sides of every branch
+// One loop per kind of light, over its range of the light order (uLightRanges: ends of the
+// unshadowed, single-map, cube and cascaded ranges; a screen tile's ranges hold only the
+// lights that reach it). llvmpipe runs both sides of every branch
 // it cannot prove uniform, so a single loop would pay for every kind's lookup on every light;
 // separate loops run each light's own lookup only, and lights that are off are not in any.
 #define SHADOWED_LOOP(first, last, LOOKUP)                                              \
-    for (int i = first; i < last; ++i) {                                                \
-        LightData light = lights[i];                                                    \
+    for (int k = first; k < last; ++k) {                                                \
+        LightData light = lights[lightRecord(k)];                                       \
         vec3 vsToLight;                                                                 \
         float falloff;                                                                  \
         lightAt(light, vsToLight, falloff);                                             \
@@ -202,10 +203,11 @@ vec3 floorDiffuse(LightData light, vec3 vsN, out vec3 vsToLight) {
 }
 
 #define FLOOR_LOOP(first, last, LOOKUP)                                                   \
-    for (int i = first; i < last; ++i) {                                                  \
+    for (int k = first; k < last; ++k) {                                                  \
         vec3 vsToLight;                                                                   \
-        vec3 diffuse = floorDiffuse(lights[i], vsN, vsToLight);                           \
-        lit += diffuse * LOOKUP(lights[i], vIn.wsPosition, wsN, mat3(uWorldFromView) * vsToLight, \
+        LightData light = lights[lightRecord(k)];                                         \
+        vec3 diffuse = floorDiffuse(light, vsN, vsToLight);                               \
+        lit += diffuse * LOOKUP(light, vIn.wsPosition, wsN, mat3(uWorldFromView) * vsToLight, \
                                 -vIn.vsPosition.z);                                       \
     }
 
@@ -214,8 +216,8 @@ void main() {
     vec3 vsN = normalize(vIn.vsNormal), wsN = normalize(vIn.wsNormal);
     vec3 lit = uAmbient;
     vec3 unused;
-    for (int i = 0; i < UNSHADOWED_END; ++i)
-        lit += floorDiffuse(lights[i], vsN, unused);
+    for (int k = uLightFirst; k < UNSHADOWED_END; ++k)
+        lit += floorDiffuse(lights[lightRecord(k)], vsN, unused);
     SHADOWED_KINDS(FLOOR_LOOP)
     fragColour = vec4(lit * vIn.colour, 1.0);
 }
@@ -225,20 +227,22 @@ void main() {
 // half a step either way: a smooth gradient, which plain rounding turns into flat bands one
 // step apart, becomes a fine fixed pattern whose local average is the true colour. The same
 // pixel always gets the same offset, so images stay deterministic. For sRGB output the step is
-// one of the encoded values the target stores, so the offset is applied in that encoding.
+// one of the encoded values the target stores: the offset, meant in that encoding, is carried
+// back to linear by the curve's slope at c, dc/de = 2.4 c / (e + 0.055) (1 / 12.92 on the
+// linear toe). To first order that is the encoded offset (off by under 1.5 % of it, at the
+// darkest end of the power segment) for one power per channel where encoding and decoding
+// cost two.
 const float kBayer4[16] = float[](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0,
                                   15.0, 7.0, 13.0, 5.0);
-vec3 srgbEncode(vec3 c) {
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
-}
-vec3 srgbDecode(vec3 e) {
-    return mix(e / 12.92, pow((e + 0.055) / 1.055, vec3(2.4)), step(0.04045, e));
-}
 vec3 dither(vec3 c) {
     ivec2 p = ivec2(gl_FragCoord.xy) & 3;
     float offset = ((kBayer4[p.y * 4 + p.x] + 0.5) / 16.0 - 0.5) / 255.0;
 #ifdef DITHER_SRGB
-    return srgbDecode(clamp(srgbEncode(clamp(c, 0.0, 1.0)) + offset, 0.0, 1.0));
+    c = clamp(c, 0.0, 1.0);
+    vec3 power = max(c, 0.0031308);  // the power segment's slope, kept finite on the toe
+    vec3 slope = mix(vec3(1.0 / 12.92), 2.4 * power / (1.055 * pow(power, vec3(1.0 / 2.4))),
+                     step(0.0031308, c));
+    return c + offset * slope;
 #else
     return c + offset;
 #endif
@@ -274,8 +278,8 @@ void main() {
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
     float factor = 1.0;
-    for (int i = 0; i < UNSHADOWED_END; ++i) {
-        LightData light = lights[i];
+    for (int k = uLightFirst; k < UNSHADOWED_END; ++k) {
+        LightData light = lights[lightRecord(k)];
         vec3 vsToLight;
         float falloff;
         lightAt(light, vsToLight, falloff);

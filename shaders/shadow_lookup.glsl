@@ -13,7 +13,12 @@ layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 layout(location = 7) uniform vec3 uDepthAware;
 
 float depthTolerance(LightData light, float stored, float spacing) {
-    float step = spacing >= 0.0 ? spacing : exp2(floor(log2(max(stored, 1e-30))) - 23.0);
+    // One ulp of a positive normal float: its exponent bits alone are 2^floor(log2 x), times
+    // 2^-23. Bit operations, where exp2(floor(log2(x))) cost two transcendentals per lookup.
+    float step = spacing >= 0.0
+                     ? spacing
+                     : uintBitsToFloat(floatBitsToUint(max(stored, 1e-30)) & 0x7f800000u) *
+                           exp2(-23.0);
     return light.shadowBias.x + uDepthAware.x * step;
 }
 
@@ -82,10 +87,16 @@ mat2 poissonRotation() {
 // tilted by theta to the light changes stored depth by tan(theta) per texel of world size w;
 // a filter reaching k texels (plus one for bilinear) needs the point (k + 1) w sin(theta) off
 // the surface to stay lit everywhere it should.
+// NORMAL_OFFSET: compiled in only when --normal-offset is not 0 (its default), so lookups do
+// not pay for a zero shift.
 vec3 normalOffset(LightData light, vec3 wsNormal, vec3 wsToLight, float texelWorld) {
+#ifdef NORMAL_OFFSET
     float nDotL = clamp(dot(wsNormal, wsToLight), 0.0, 1.0);
     float sinTheta = sqrt(1.0 - nDotL * nDotL);
     return wsNormal * (light.shadowBias.y * kFilterReach * texelWorld * sinTheta);
+#else
+    return vec3(0.0);
+#endif
 }
 
 #include "receiver_plane.glsl"
@@ -342,8 +353,12 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     vec4 clip = light.textureFromWorld * vec4(wsPosition, 1.0);
     float texelWorld = light.shadow.y * (light.shadow.z == kFrameOrthographic ? 1.0 : clip.w);
     gTexelWorld = texelWorld;
+#ifdef NORMAL_OFFSET
     vec3 offset = normalOffset(light, wsNormal, wsToLight, texelWorld);
-    vec4 shadowCoord = light.textureFromWorld * vec4(wsPosition + offset, 1.0);
+    vec4 shadowCoord = clip + light.textureFromWorld * vec4(offset, 0.0);
+#else
+    vec4 shadowCoord = clip;
+#endif
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
 
 #ifdef OUTSIDE_CLAMP

@@ -138,11 +138,11 @@ int runRender(const RenderArgs& args, bool verbose) {
         const gnomon::FrameStats stats = renderer.lastFrameStats();
         std::fprintf(stderr,
                      "gnomon: %d shadow map(s), %d shadow pass(es) drawing %llu triangles "
-                     "(%d caster draws culled), main pass %llu triangles, %.1f MiB of shadow "
-                     "maps\n",
+                     "(%d caster draws culled), main pass %llu triangles in %d light tile(s), "
+                     "%.1f MiB of shadow maps\n",
                      stats.shadowMaps, stats.shadowPasses,
                      (unsigned long long)stats.shadowTriangles, stats.castersCulled,
-                     (unsigned long long)stats.mainTriangles,
+                     (unsigned long long)stats.mainTriangles, std::max(1, stats.lightTiles),
                      double(stats.shadowMapBytes) / (1024.0 * 1024.0));
         for (const gnomon::MapUsage& u : renderer.mapUsage()) {
             std::fprintf(stderr, "gnomon: light %d%s: %d² map, the view uses %.0f %% of it\n",

@@ -142,6 +142,9 @@ struct ShadingOptions {
     OutputEncoding output = OutputEncoding::Linear;  // colours as computed, or sRGB-encoded
     // Ordered dithering of the 8-bit colours (within half a step) against banding.
     bool dither = true;
+    // Main pass in screen tiles, each looking up only the lights that can reach it (tiled
+    // forward shading): the same image, fewer lookups where spots or ranged lights are.
+    bool lightTiles = true;
 
     bool operator==(const ShadingOptions&) const = default;
 };

@@ -49,6 +49,7 @@ struct FrameStats {
     std::uint64_t shadowTriangles = 0;  // triangles submitted to shadow maps (cubes: x 6)
     std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass
     int castersCulled = 0;              // caster draws skipped as outside a light's volume
+    int lightTiles = 0;                 // screen tiles of the main pass (0: drawn untiled)
     std::vector<PassTiming> passes;     // with setPassTiming(true): each pass drawn, in order
 };
 

@@ -285,6 +285,13 @@ void addShading(std::vector<OptionSpec>& s) {
          .kind = K::Real,
          .max = 1,
          NUMBER(shading.shadowFactor, float)});
+    add({.name = "light-tiles",
+         .group = "Shading",
+         .doc = "draw the main pass in screen tiles, each with only the lights that reach it "
+                "(the same image; off: every light on every pixel)",
+         .kind = K::Switch,
+         .max = 1,
+         NUMBER(shading.lightTiles, bool)});
 }
 
 // When options have an effect: those of the shadow technique only with shadows on, and a

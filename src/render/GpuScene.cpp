@@ -153,9 +153,13 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     bool dataChanged = resized;
     mBounds = Aabb();
     mCasterBounds = Aabb();
+    mHasUnlit = false;
+    mHasBlended = false;
     for (size_t i = 0; i < n; ++i) {
         const Object& o = scene.objects[i];
         const Material& mat = scene.materials[o.material];
+        mHasUnlit = mHasUnlit || mat.unlit;
+        mHasBlended = mHasBlended || mat.alphaMode == AlphaMode::Blend;
         GpaObject g;
         g.worldFromModel = o.worldFromModelAt(seconds);
         g.worldFromModelNormal =

@@ -81,6 +81,10 @@ public:
     // World bounds of all objects (or casters only) at the synced time.
     const Aabb& bounds() const { return mBounds; }
     const Aabb& casterBounds() const { return mCasterBounds; }
+    // Does any object have an unlit material (shadows darken it whatever the light's falloff)?
+    bool hasUnlit() const { return mHasUnlit; }
+    // Does any item blend (drawn over the view's depth, so not within it)?
+    bool hasBlended() const { return mHasBlended; }
     // Changes whenever geometry or object data changed.
     std::uint64_t revision() const { return mRevision; }
     // Content hash of all vertex and index data, stand-in casters included.
@@ -123,6 +127,7 @@ private:
     std::vector<Aabb> mMeshBounds;
     std::vector<char> mMeshClosed;  // isClosedSurface per mesh, at upload
     Aabb mBounds, mCasterBounds;
+    bool mHasUnlit = false, mHasBlended = false;
     std::uint64_t mRevision = 0;
     std::uint64_t mSyncedRevision = 0;  // the Scene::revision and time last synced
     double mSyncedSeconds = 0.0;

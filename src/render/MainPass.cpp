@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gl/Program.h"
+#include "render/TiledLights.h"
 #include "shadow/DepthPacking.h"
 
 namespace gnomon::render {
@@ -35,6 +36,8 @@ MainPass::MainPass() {
     mMaxLights = std::min(256, int(blockBytes / GLint(sizeof(GpuLight))));
     mLights = gl::Buffer("lights", std::size_t(mMaxLights) * sizeof(GpuLight), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
+    mOrder = gl::Buffer("light order", std::size_t(kLightOrderCapacity) * sizeof(std::int32_t),
+                        nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
@@ -52,7 +55,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24 |
         std::uint64_t(so.receiverPlane) << 25 | std::uint64_t(floor) << 26 |
         std::uint64_t(ditherMode(options, floor)) << 27 |
-        std::uint64_t(in.viewDepth != nullptr) << 29;
+        std::uint64_t(in.viewDepth != nullptr) << 29 | std::uint64_t(so.normalOffset > 0.0f) << 30;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -97,6 +100,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     }
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
     if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
+    if (s.normalOffset > 0.0f) defines.push_back("NORMAL_OFFSET");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
     if (in.viewDepth) defines.push_back("CONTACT_SHADOWS");
     if (const int dither = ditherMode(options, floor)) {
@@ -118,15 +122,21 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         .first->second;
 }
 
-// Lights: uploaded only when they differ from what the GPU holds.
-void MainPass::uploadLights(const std::vector<GpuLight>& lights) {
+// Lights and their order: uploaded only when they differ from what the GPU holds.
+void MainPass::uploadLights(const std::vector<GpuLight>& lights,
+                            const std::vector<std::int32_t>& order) {
     const size_t bytes = lights.size() * sizeof(GpuLight);
     if (lights.size() != mUploaded.size() ||
         (bytes > 0 && std::memcmp(lights.data(), mUploaded.data(), bytes) != 0)) {
         mLights.update(0, bytes, lights.data());
         mUploaded = lights;
     }
+    if (order != mUploadedOrder && !order.empty()) {
+        mOrder.update(0, order.size() * sizeof(std::int32_t), order.data());
+        mUploadedOrder = order;
+    }
     glBindBufferBase(GL_UNIFORM_BUFFER, 1, mLights.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, 2, mOrder.id());
 }
 
 // The maps and their samplers on units 0 (2D) and 1 (cubes), and on 2 and 3 without
@@ -185,7 +195,8 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
 
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
                       const gl::Texture* visibility, bool floor) {
-    uploadLights(*in.lights);
+    const TiledLights& tiled = *in.tiled;
+    uploadLights(*in.lights, tiled.order());
     const bool rawDepths = bindMaps(in, options.shadow);
 
     const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
@@ -197,6 +208,9 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     const DepthFormat cubeFormat = isColourFormat(options.shadow.depthFormat)
                                        ? DepthFormat::Depth32F
                                        : options.shadow.depthFormat;
+    // The light order's range the draws use: every light, or one tile's.
+    glm::ivec4 ranges = tiled.ranges();
+    int first = 0;
     auto use = [&](const gl::Program& p) {
         glUseProgram(p.id());
         glUniformMatrix4fv(1, 1, GL_FALSE, &in.viewFromWorld[0][0]);
@@ -204,7 +218,8 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glUniform3fv(3, 1, &in.ambient[0]);
         glUniform1f(4, options.shading.shadowFactor);
         glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
-        glUniform4iv(6, 1, &in.lightRanges[0]);
+        glUniform4iv(6, 1, &ranges[0]);
+        glUniform1i(10, first);
         glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
                     spacing(cubeFormat));
         if (in.viewDepth) {
@@ -279,9 +294,24 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glCullFace(GL_BACK);
-    draw(false);
+    if (tiled.tiles().empty()) {
+        draw(false);
+    } else {
+        // Each pixel lies in one tile: drawn there once, blended surfaces in the same order.
+        glEnable(GL_SCISSOR_TEST);
+        for (const LightTile& tile : tiled.tiles()) {
+            glScissor(tile.scissor.x, tile.scissor.y, tile.scissor.z, tile.scissor.w);
+            ranges = tile.ends;
+            first = tile.first;
+            draw(false);
+        }
+        glDisable(GL_SCISSOR_TEST);
+        ranges = tiled.ranges();
+        first = 0;
+    }
     if (visibility) {
-        // The surfaces that won the depth test, again: each light's visibility per pixel.
+        // The surfaces that won the depth test, again: each light's visibility per pixel,
+        // untiled (the score reads every light's visibility everywhere).
         glBindImageTexture(0, visibility->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);

@@ -28,14 +28,18 @@ struct GpuLight {
     glm::vec4 soft{0.0f};
 };
 
+class TiledLights;
+
 struct MainPassInputs {
     glm::mat4 viewFromWorld{1.0f};
     glm::mat4 clipFromView{1.0f};
     glm::vec3 ambient{0.0f};
     const std::vector<GpuLight>* lights = nullptr;  // the scene's lights, then cascade records
-    glm::ivec4 lightRanges{0};                // ends of the unshadowed, map, cube, cascaded records
-    bool hasCascades = false;                 // some light is cascaded this frame
-    const gl::Texture* shadowMaps = nullptr;  // 2D array; null when no light has one
+    // The light order and screen tiles (ranges: ends of the unshadowed, map, cube and
+    // cascaded records).
+    const TiledLights* tiled = nullptr;
+    bool hasCascades = false;                  // some light is cascaded this frame
+    const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
     // The view's depth at the output's size (ViewDepthPass) when contact shadows are on (and
     // shadows are): null otherwise.
@@ -58,13 +62,15 @@ private:
     // `material`: the MATERIAL_PATH variant (textures, masks, blending).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
                                bool visibilityPass, bool material, bool floor);
-    void uploadLights(const std::vector<GpuLight>& lights);
+    void uploadLights(const std::vector<GpuLight>& lights, const std::vector<std::int32_t>& order);
     bool bindMaps(const MainPassInputs& in, const ShadowOptions& so);
 
     std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
     int mMaxLights = 0;
     gl::Buffer mLights;  // sized for mMaxLights once; the used part is updated on change
     std::vector<GpuLight> mUploaded;
+    gl::Buffer mOrder;  // the light order (kLightOrderCapacity entries), updated on change
+    std::vector<std::int32_t> mUploadedOrder;
     // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;

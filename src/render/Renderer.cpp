@@ -16,6 +16,7 @@
 #include "render/MainPass.h"
 #include "render/PassClock.h"
 #include "render/ShadowPass.h"
+#include "render/TiledLights.h"
 #include "render/ViewDepthPass.h"
 #include "scene/SceneUtil.h"
 
@@ -43,6 +44,7 @@ struct Renderer::Impl {
     render::GpuScene scene;
     render::ShadowPass shadowPass;
     render::MainPass mainPass;
+    render::TiledLights tiled;
     render::DebugPass debugPass;
     gl::Texture colour, depth;
     gl::Texture visibilityTexture;  // RG32F, a layer per light: gnomon score only
@@ -179,12 +181,15 @@ struct Renderer::Impl {
         render::PassClock* timer = passTiming ? clock.get() : nullptr;
         const shadow::ViewSamples* samples = nullptr;
         const bool contact = options.shadow.enabled && options.shadow.contactLength > 0.0f;
-        if (render::LightPlan::wantsViewSamples(s, options) || contact) {
+        if (render::LightPlan::wantsViewSamples(s, options) || contact ||
+            render::TiledLights::wantsDepth(s, options)) {
             if (timer) timer->start();
             samples = &viewDepth.sample(scene, s.camera, options.width, options.height);
             if (timer) stats.passes.push_back(timer->stop("view depth", -1, 0));
         }
-        plan.plan(s, options, scene, viewFromWorld, samples);
+        // Drawn for the tiles alone, the samples do not fit the lights.
+        const bool fitSamples = render::LightPlan::wantsViewSamples(s, options) || contact;
+        plan.plan(s, options, scene, viewFromWorld, fitSamples ? samples : nullptr);
         lastCamera = s.camera;
         lastWidth = options.width;
         lastHeight = options.height;
@@ -213,7 +218,18 @@ struct Renderer::Impl {
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
         in.ambient = s.ambient;
         in.lights = &plan.records();
-        in.lightRanges = plan.ranges();
+        // Screen tiles with fewer lights, where that is exact: an unlit surface or the
+        // shadowed-factor rule darkens by a light's shadow whatever its falloff.
+        // The view's depth bounds each tile's volume, when blended surfaces (not in it) do
+        // not lie over it.
+        const shadow::DepthCells cells = viewDepth.cells();
+        tiled.plan(plan.records(), plan.ranges(), in.clipFromView, options.width, options.height,
+                   stats.mainTriangles,
+                   options.shading.lightTiles &&
+                       options.shading.shadowedRule != ShadowedRule::Factor && !scene.hasUnlit(),
+                   samples && !scene.hasBlended() ? &cells : nullptr);
+        in.tiled = &tiled;
+        stats.lightTiles = int(tiled.tiles().size());
         in.hasCascades = plan.hasCascades();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;

@@ -14,6 +14,7 @@
 
 #include "gl/Objects.h"
 #include "render/GpuScene.h"
+#include "shadow/LightTiles.h"
 #include "shadow/ViewSamples.h"
 
 namespace gnomon::render {
@@ -31,6 +32,8 @@ public:
     void invalidate() { mValid = false; }
     // The view's depth at the output's size, as the last sample() drew it (contact shadows).
     const gl::Texture& depth() const { return mDepth; }
+    // The reduced depth the last sample() read back: per cell, nearest and farthest.
+    shadow::DepthCells cells() const { return {&mRead, mGrid}; }
 
 private:
     const gl::Program& program(bool alphaTested);

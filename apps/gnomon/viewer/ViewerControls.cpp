@@ -305,7 +305,7 @@ void Viewer::filterControls() {
         options({"cascades", "fit-to", "cascade-lambda", "cascade-blend"});
     }
     if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"shadowed", "shadow-factor", "output-encoding", "dither"});
+        options({"shadowed", "shadow-factor", "output-encoding", "dither", "light-tiles"});
         changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
         tooltip("the scene's ambient light colour, times each material's colour");
         ImGui::TextDisabled("shininess: per material, from the scene");
