@@ -36,6 +36,9 @@ def run(args):
     return result.stdout
 
 
+FLICKER_MARK = "<!-- flicker: made by scripts/quality-flicker.py -->"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--frames", type=int, default=5, help="frames timed per cell")
@@ -101,8 +104,15 @@ def main():
             f"| {scene} | {label} | {pct(s['misclassified'])} | {pct(s['false_shadow'])} | "
             f"{pct(s['leak'])} | {pct(s['false_shadow_outside_band'])} | "
             f"{pct(s['leak_outside_band'])} | {frame:.1f} |")
+    # The temporal-stability section (scripts/quality-flicker.py) is kept as it was.
+    kept = ""
+    if os.path.exists(args.out):
+        with open(args.out) as f:
+            old = f.read()
+        if FLICKER_MARK in old:
+            kept = "\n" + old[old.index(FLICKER_MARK):]
     with open(args.out + ".tmp", "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines) + "\n" + kept)
     os.replace(args.out + ".tmp", args.out)
     print(f"wrote {args.out}", file=sys.stderr)
 

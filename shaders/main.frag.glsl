@@ -42,6 +42,17 @@ layout(location = 5) uniform mat4 uWorldFromView;
 
 layout(location = 0) out vec4 fragColour;
 
+#ifdef HAS_CASCADES
+// The view depth that picks a cascade, as a row applied to the world position: the depth
+// along the camera the cascades were fitted to. That is the drawing camera's (the same as
+// -vsPosition.z) except when gnomon score draws one view with another frame's maps, to see
+// what only the maps' motion changes.
+layout(location = 11) uniform vec4 uCascadeDepth;
+#define CASCADE_DEPTH dot(uCascadeDepth, vec4(vIn.wsPosition, 1.0))
+#else
+#define CASCADE_DEPTH 0.0
+#endif
+
 #ifdef VISIBILITY_PASS
 layout(early_fragment_tests) in;
 layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
@@ -126,7 +137,7 @@ void recordVisibility(LightData light, float visibility) {
         if (s.receives) {                                                               \
             vec3 wsToLight = mat3(uWorldFromView) * vsToLight;                           \
             gTexelWorld = 0.0;                                                          \
-            visibility = LOOKUP(light, vIn.wsPosition, s.wsN, wsToLight, -vIn.vsPosition.z); \
+            visibility = LOOKUP(light, vIn.wsPosition, s.wsN, wsToLight, CASCADE_DEPTH);     \
             CONTACT(light, visibility, vsToLight);                                      \
             RECORD(light, visibility);                                                  \
         }                                                                               \
@@ -208,7 +219,7 @@ vec3 floorDiffuse(LightData light, vec3 vsN, out vec3 vsToLight) {
         LightData light = lights[lightRecord(k)];                                         \
         vec3 diffuse = floorDiffuse(light, vsN, vsToLight);                               \
         lit += diffuse * LOOKUP(light, vIn.wsPosition, wsN, mat3(uWorldFromView) * vsToLight, \
-                                -vIn.vsPosition.z);                                       \
+                                CASCADE_DEPTH);                                           \
     }
 
 void main() {

@@ -32,6 +32,16 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
     cmd->add_option("--max-error", args.maxError,
                     "exit 3 when the overall misclassified fraction exceeds this, 0..1 "
                     "(default: never)");
+    cmd->add_option("--path", args.path,
+                    "score every frame of a path and the flicker between frames: orbit, dolly, "
+                    "sun, still, or a path file (docs/quality.md); writes path.json")
+        ->type_name("NAME|FILE");
+    cmd->add_option("--frames", args.frames,
+                    "frames of --path, 2..10000 (default " + std::to_string(args.frames) +
+                        "; a path file: its first N, 0 = all)")
+        ->type_name("N");
+    cmd->add_flag("--error-maps", args.errorMaps,
+                  "with --path: errors-NNN.png per frame, flicker in yellow");
     args.flags.add(*cmd);
     return cmd;
 }
@@ -68,6 +78,59 @@ ScoreResult scoreWithProgress(Renderer& renderer, const Scene& scene, const Rend
     }
 }
 
+// --path: every frame scored, a line per frame as it finishes (the progress), path.json and
+// on request each frame's error map; Ctrl-C keeps the frames finished.
+int runScorePath(const ScoreArgs& args, Scene& scene, const RenderOptions& options,
+                 Renderer& renderer) {
+    const ScenePath path = makeScenePath(args.path, scene, args.frames);
+    OutputSet out(args.outDir, "--out-dir");
+    ScoreProgress progress;
+    std::printf("gnomon score: %s over path %s, %d frames, %dx%d, filter %s, stabilise %s\n",
+                scene.name.c_str(), path.name.c_str(), path.frames(), options.width, options.height,
+                toString(options.shadow.filter), options.shadow.stabilise ? "on" : "off");
+    std::printf("%5s  %13s  %12s  %9s  %9s  %11s\n", "frame", "misclassified", "false shadow",
+                "leak", "flicker", "compared");
+    std::fflush(stdout);
+    // The frame lines are the progress (a frame takes a second or a few); Ctrl-C stops after
+    // the frame being scored.
+    const PathScoreResult r =
+        scorePath(renderer, scene, options, path, args.options, args.errorMaps, &progress,
+                  [&](const PathScoreResult& soFar) {
+                      const PathFrameScore& f = soFar.frames.back();
+                      std::printf("%5zu  %12.3f%%  %11.3f%%  %8.3f%%  %8.4f%%  %11ld\n",
+                                  soFar.frames.size() - 1, 100.0 * f.overall.misclassified,
+                                  100.0 * f.overall.falseShadow, 100.0 * f.overall.leak,
+                                  100.0 * f.flicker, f.compared);
+                      std::fflush(stdout);
+                      if (interrupted()) progress.cancel = true;
+                  });
+    if (r.frames.empty())
+        checkInterrupt("scoring the first frame of the path; nothing was written");
+    for (std::size_t i = 0; i < r.frames.size() && args.errorMaps; ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "errors-%03zu.png", i);
+        writePng(out.file(name), r.frames[i].errors);
+    }
+    writeTextFile(out.file("path.json"), toJson(r, scene.name, options));
+    out.keep();
+    std::printf(
+        "mean over %zu frames: misclassified %.3f%%, flicker %.4f%% (max %.4f%%); "
+        "traced in %.1f s\nwrote %s/path.json%s\n",
+        r.frames.size(), 100.0 * r.meanMisclassified, 100.0 * r.meanFlicker, 100.0 * r.maxFlicker,
+        r.traceSeconds, args.outDir.c_str(), args.errorMaps ? " and errors-NNN.png" : "");
+    if (r.interrupted) {
+        throw Interrupted("interrupted while scoring the path; kept the " +
+                          std::to_string(r.frames.size()) + " of " + std::to_string(r.framesAsked) +
+                          " frames finished");
+    }
+    if (args.maxError >= 0.0 && r.meanMisclassified > args.maxError) {
+        std::fprintf(stderr, "gnomon: mean misclassified %.4f%% exceeds --max-error %.4f%%\n",
+                     100.0 * r.meanMisclassified, 100.0 * args.maxError);
+        return 3;
+    }
+    return 0;
+}
+
 }  // namespace
 
 int runScore(const ScoreArgs& args, bool verbose) {
@@ -82,6 +145,8 @@ int runScore(const ScoreArgs& args, bool verbose) {
     ContextOptions context;
     context.verbose = verbose;
     Renderer renderer(context);
+    if (!args.path.empty()) return runScorePath(args, scene, options, renderer);
+    if (args.errorMaps) throw Error(ErrorKind::InvalidInput, "--error-maps needs --path");
     const ScoreResult r = scoreWithProgress(renderer, scene, options, args.options);
 
     OutputSet out(args.outDir, "--out-dir");

@@ -105,8 +105,12 @@ struct ShadowOptions {
     // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
     int cascades = 0;
     FitTo fitTo = FitTo::ViewDepth;  // what fitted lights cover (docs/techniques.md)
-    float cascadeLambda = 0.75f;     // splits: 0 uniform .. 1 logarithmic
-    float cascadeBlend = 0.1f;       // fraction of each cascade blended into the next, 0..0.5
+    // Fitted maps that follow the view keep a quantised size and move in whole texels, so
+    // their edges hold still while the camera moves; false refits them exactly every frame
+    // (each map uses its texels a little better, and its shadows shimmer).
+    bool stabilise = true;
+    float cascadeLambda = 0.75f;  // splits: 0 uniform .. 1 logarithmic
+    float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
     BlendShadows blendShadows = BlendShadows::Dithered;  // shadows of blended materials

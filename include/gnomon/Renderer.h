@@ -93,6 +93,12 @@ public:
     Image render(const Scene& scene, const RenderOptions& options);
     // The same frame, and each light's shadow visibility per pixel as the main pass computed it.
     Image render(const Scene& scene, const RenderOptions& options, ShadowVisibility& visibility);
+    // The same, with the shadow maps fitted to `fitCamera`'s view instead of the scene
+    // camera's (cascade splits and the fitted maps follow it; the picture is the scene
+    // camera's): what a view's shadows become when only the maps move, as gnomon score's
+    // flicker metric asks. Fitted maps draw again whenever the fit camera changes.
+    Image render(const Scene& scene, const RenderOptions& options, ShadowVisibility& visibility,
+                 const Camera& fitCamera);
     // The same frame left on the GPU, not read back (the viewer): frameTexture() names it.
     void draw(const Scene& scene, const RenderOptions& options);
     // The texture holding the last frame: its bytes are what render() returns (sRGB-encoded

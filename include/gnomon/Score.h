@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "gnomon/Options.h"
 #include "gnomon/Renderer.h"
 #include "gnomon/Scene.h"
+#include "gnomon/ScenePath.h"
 
 namespace gnomon {
 
@@ -70,6 +72,41 @@ ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& o
 
 // The result as JSON (every field, fractions as numbers in [0, 1]).
 std::string toJson(const ScoreResult& result, const std::string& scene,
+                   const RenderOptions& options);
+
+// Temporal stability over a path (gnomon score --path): every frame scored as score() does,
+// and between each frame and the one before it the flicker: the previous frame's view drawn
+// again with this frame's maps and lights, and the share of its pixel x light pairs whose
+// rendered shadow changed while the reference's did not (truth/Flicker.h: the camera's own
+// motion and steadily misplaced edges do not count). Each frame after the first costs a
+// second render when the camera moved.
+struct PathFrameScore {
+    ShadowScore overall;
+    long compared = 0;     // pixel x light pairs compared with the frame before
+    long flickered = 0;    // of them: rendered shadow changed, reference's did not
+    double flicker = 0.0;  // flickered / compared; 0 on the first frame
+    Image errors;  // with keepErrorMaps: the error map, flicker in yellow (where the previous
+                   // frame's view saw it)
+};
+struct PathScoreResult {
+    std::string path;
+    int framesAsked = 0;
+    std::vector<PathFrameScore> frames;  // the frames finished, in order
+    double meanFlicker = 0.0;            // over frame pairs (frames 1..)
+    double maxFlicker = 0.0;
+    double meanMisclassified = 0.0;
+    bool softReference = false;
+    double traceSeconds = 0.0;
+    bool interrupted = false;  // progress->cancel stopped it: `frames` holds what was finished
+};
+// `scene` is moved along `path` and put back as it was. `progress` (optional): each frame's
+// tracing, and cancel, after which the frames finished are returned with `interrupted`.
+// `onFrame` (optional) is called after each frame with the result so far.
+PathScoreResult scorePath(Renderer& renderer, Scene& scene, const RenderOptions& options,
+                          const ScenePath& path, const ScoreOptions& scoreOptions,
+                          bool keepErrorMaps, ScoreProgress* progress = nullptr,
+                          const std::function<void(const PathScoreResult&)>& onFrame = {});
+std::string toJson(const PathScoreResult& result, const std::string& scene,
                    const RenderOptions& options);
 
 }  // namespace gnomon

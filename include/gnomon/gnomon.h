@@ -8,6 +8,7 @@
 #include "gnomon/Renderer.h"
 #include "gnomon/Scene.h"
 #include "gnomon/SceneFile.h"
+#include "gnomon/ScenePath.h"
 #include "gnomon/Score.h"
 
 namespace gnomon {

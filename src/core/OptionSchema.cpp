@@ -121,6 +121,13 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          .kind = K::Choice,
          .choices = namesOf<FitTo>(),
          ENUM(shadow.fitTo, FitTo)});
+    add({.name = "stabilise",
+         .group = "Shadow maps",
+         .doc = "fitted maps that follow the view keep a quantised size and move in whole "
+                "texels, so edges hold still as the camera moves (off: refitted exactly, shimmers)",
+         .kind = K::Switch,
+         .max = 1,
+         NUMBER(shadow.stabilise, bool)});
     add({.name = "outside",
          .group = "Shadow maps",
          .doc = "lookups outside a light's map: lit, or clamp (shows the textbooks' error)",

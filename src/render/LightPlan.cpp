@@ -67,7 +67,9 @@ bool LightPlan::wantsViewSamples(const Scene& s, const RenderOptions& options) {
 }
 
 void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-                     const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples) {
+                     const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
+                     const Camera* fitCamera) {
+    mFitCamera = fitCamera ? *fitCamera : s.camera;
     mShadowed.clear();
     mLights.clear();
     mCascadeRecords.clear();
@@ -81,8 +83,10 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
         if (item.receives) mFit.receivers.push_back(item.bounds);
     }
     mFit.viewKnown = true;
-    mFit.viewClipFromWorld = shadow::clipFromView(s.camera, aspect) * viewFromWorld;
+    mFit.viewClipFromWorld =
+        shadow::clipFromView(mFitCamera, aspect) * shadow::viewFromWorld(mFitCamera);
     mFit.samples = samples;
+    mFit.stabilise = options.shadow.stabilise;
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         const Light& light = s.lights[i];
         GpuLight g;
@@ -122,7 +126,7 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
             planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds(), g);
         } else if (shadowing) {
             const shadow::LightCameraFrame frame =
-                shadow::lightCameraFrame(light, s.camera, mFit, mapSize);
+                shadow::lightCameraFrame(light, mFitCamera, mFit, mapSize);
             if (frame.valid) {
                 fillShadowRecord(g, frame, light, options.shadow);
                 g.soft.w = float(i);
@@ -183,7 +187,7 @@ void LightPlan::orderLights(std::size_t sceneLights) {
 void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
                              const glm::vec3& direction, int mapSize, int count, float aspect,
                              const Aabb& sceneBounds, GpuLight& g) {
-    const Camera& cam = s.camera;
+    const Camera& cam = mFitCamera;
     const shadow::ViewSamples* samples = mFit.samples;
     float near = cam.near, far = cam.far;
     if (samples) {
@@ -196,6 +200,11 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         for (const glm::vec3& c : sceneBounds.corners())
             farthest = std::max(farthest, glm::dot(c - cam.eye, forward));
         far = std::min(cam.far, farthest);
+    }
+    if (options.shadow.stabilise) {
+        shadow::stabiliseDepthRange(near, far);
+        near = std::max(near, cam.near);
+        far = std::min(far, cam.far);
     }
     const float blend = options.shadow.cascadeBlend;
     const std::vector<float> splits =
@@ -219,7 +228,8 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         }
         // No sample or no caster in this slice: a sphere around it still shadows correctly.
         if (!frame.valid) {
-            frame = shadow::cascadeFrame(direction, cam, aspect, from, to, sceneBounds, mapSize);
+            frame = shadow::cascadeFrame(direction, cam, aspect, from, to, sceneBounds, mapSize,
+                                         options.shadow.stabilise);
         }
         GpuLight c = g;
         fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);

@@ -26,9 +26,12 @@ public:
     static bool wantsViewSamples(const Scene& s, const RenderOptions& options);
 
     // Plans every light of `s` (the GPU copy `scene` gives the items' world boxes).
-    // `samples`: what the view sees, or null to fit to boxes.
+    // `samples`: what the view sees, or null to fit to boxes. `fitCamera`: the camera the
+    // maps follow when not the scene's (samples then come from its view); the records stay
+    // in the drawing view's space (`viewFromWorld`).
     void plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-              const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples);
+              const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
+              const Camera* fitCamera = nullptr);
     // After the shadow pass placed each map: its layer and its share of its array.
     void finish(const ShadowPass& pass);
 
@@ -51,6 +54,7 @@ private:
     std::vector<int> mRemap;                // scene light -> record, reused
     std::vector<std::uint8_t> mHasMap;      // scene light has a map this frame
     glm::ivec4 mRanges{0};
+    Camera mFitCamera;
     shadow::FitScene mFit;  // reused every frame
 };
 

@@ -222,6 +222,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glUniform1i(10, first);
         glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
                     spacing(cubeFormat));
+        if (in.hasCascades) glUniform4fv(11, 1, &in.cascadeDepth[0]);
         if (in.viewDepth) {
             glUniformMatrix4fv(8, 1, GL_FALSE, &viewFromClip[0][0]);
             glUniform1f(9, options.shadow.contactLength);

@@ -33,6 +33,9 @@ class TiledLights;
 struct MainPassInputs {
     glm::mat4 viewFromWorld{1.0f};
     glm::mat4 clipFromView{1.0f};
+    // With cascades: the view depth that picks one, as a row on world positions (the depth
+    // along the camera the cascades were fitted to; see main.frag.glsl).
+    glm::vec4 cascadeDepth{0.0f};
     glm::vec3 ambient{0.0f};
     const std::vector<GpuLight>* lights = nullptr;  // the scene's lights, then cascade records
     // The light order and screen tiles (ranges: ends of the unshadowed, map, cube and

@@ -167,7 +167,9 @@ struct Renderer::Impl {
     }
 
     // The frame in `target`, not read back.
-    void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
+    // `fitCamera` (null: the scene's): the camera the shadow maps follow (Renderer.h).
+    void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility,
+              const Camera* fitCamera = nullptr) {
         check(s, options);
         makeCurrent();
         scene.sync(s, options.time, options.shadow.casterDetail);
@@ -184,12 +186,19 @@ struct Renderer::Impl {
         if (render::LightPlan::wantsViewSamples(s, options) || contact ||
             render::TiledLights::wantsDepth(s, options)) {
             if (timer) timer->start();
-            samples = &viewDepth.sample(scene, s.camera, options.width, options.height);
+            samples = &viewDepth.sample(scene, fitCamera ? *fitCamera : s.camera, options.width,
+                                        options.height);
             if (timer) stats.passes.push_back(timer->stop("view depth", -1, 0));
         }
         // Drawn for the tiles alone, the samples do not fit the lights.
         const bool fitSamples = render::LightPlan::wantsViewSamples(s, options) || contact;
-        plan.plan(s, options, scene, viewFromWorld, fitSamples ? samples : nullptr);
+        plan.plan(s, options, scene, viewFromWorld, fitSamples ? samples : nullptr, fitCamera);
+        if (fitCamera) {
+            // The samples were the fit camera's view: contact shadows need the drawn one's,
+            // and the tiles are not worth it for this rare frame.
+            if (contact) viewDepth.sample(scene, s.camera, options.width, options.height);
+            samples = nullptr;
+        }
         lastCamera = s.camera;
         lastWidth = options.width;
         lastHeight = options.height;
@@ -216,6 +225,8 @@ struct Renderer::Impl {
         render::MainPassInputs in;
         in.viewFromWorld = viewFromWorld;
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
+        const glm::mat4 fitView = fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld;
+        in.cascadeDepth = -glm::vec4(fitView[0][2], fitView[1][2], fitView[2][2], fitView[3][2]);
         in.ambient = s.ambient;
         in.lights = &plan.records();
         // Screen tiles with fewer lights, where that is exact: an unlit surface or the
@@ -225,7 +236,7 @@ struct Renderer::Impl {
         const shadow::DepthCells cells = viewDepth.cells();
         tiled.plan(plan.records(), plan.ranges(), in.clipFromView, options.width, options.height,
                    stats.mainTriangles,
-                   options.shading.lightTiles &&
+                   options.shading.lightTiles && !fitCamera &&
                        options.shading.shadowedRule != ShadowedRule::Factor && !scene.hasUnlit(),
                    samples && !scene.hasBlended() ? &cells : nullptr);
         in.tiled = &tiled;
@@ -301,8 +312,9 @@ struct Renderer::Impl {
         return {panelColour.id(), width, height};
     }
 
-    Image render(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility) {
-        draw(s, options, visibility);
+    Image render(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility,
+                 const Camera* fitCamera = nullptr) {
+        draw(s, options, visibility, fitCamera);
         render::PassClock* timer = passTiming ? clock.get() : nullptr;
         if (timer) timer->start();
         glBindFramebuffer(GL_FRAMEBUFFER, target.id());
@@ -332,6 +344,11 @@ Image Renderer::render(const Scene& scene, const RenderOptions& options) {
 Image Renderer::render(const Scene& scene, const RenderOptions& options,
                        ShadowVisibility& visibility) {
     return mImpl->render(scene, options, &visibility);
+}
+
+Image Renderer::render(const Scene& scene, const RenderOptions& options,
+                       ShadowVisibility& visibility, const Camera& fitCamera) {
+    return mImpl->render(scene, options, &visibility, &fitCamera);
 }
 
 void Renderer::draw(const Scene& scene, const RenderOptions& options) {

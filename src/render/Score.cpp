@@ -7,8 +7,8 @@
 
 #include "gnomon/Error.h"
 #include "gnomon/Renderer.h"
+#include "render/ScoreDetail.h"
 #include "truth/Metrics.h"
-#include "truth/Reference.h"
 
 namespace gnomon {
 
@@ -37,30 +37,41 @@ ScoreFrame renderForScore(Renderer& renderer, const Scene& scene, const RenderOp
     return frame;
 }
 
-ScoreResult scoreFrame(ScoreFrame frame, const Scene& scene, const RenderOptions& options,
-                       const ScoreOptions& scoreOptions, ScoreProgress* progress) {
+namespace detail {
+
+truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
+                               const ScoreOptions& scoreOptions, ScoreProgress* progress,
+                               double& seconds) {
     checkScoreOptions(options, scoreOptions);
-    if (frame.visibility.width != options.width || frame.visibility.height != options.height) {
+    truth::ReferenceOptions ro;
+    ro.softSamples = options.shadow.filter == ShadowFilter::Pcss ? scoreOptions.softSamples : 0;
+    ro.threads = scoreOptions.threads;
+    if (progress) {
+        progress->rowsDone = 0;
+        progress->rows = options.height;
+        ro.rowsDone = &progress->rowsDone;
+        ro.cancel = &progress->cancel;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    truth::Reference reference = truth::traceReference(scene, options, ro);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return reference;
+}
+
+ScoreResult compareWithReference(const ScoreFrame& frame, const truth::Reference& reference,
+                                 const Scene& scene, const RenderOptions& options,
+                                 const ScoreOptions& scoreOptions) {
+    checkScoreOptions(options, scoreOptions);
+    if (frame.visibility.width != options.width || frame.visibility.height != options.height ||
+        reference.width != options.width || reference.height != options.height) {
         throw Error(ErrorKind::InvalidInput,
                     "score: the frame's visibility is " + std::to_string(frame.visibility.width) +
                         "x" + std::to_string(frame.visibility.height) + ", the options ask for " +
                         std::to_string(options.width) + "x" + std::to_string(options.height));
     }
     ScoreResult result;
-    result.render = std::move(frame.render);
+    result.render = frame.render;
     result.softReference = options.shadow.filter == ShadowFilter::Pcss;
-    truth::ReferenceOptions ro;
-    ro.softSamples = result.softReference ? scoreOptions.softSamples : 0;
-    ro.threads = scoreOptions.threads;
-    if (progress) {
-        progress->rows = options.height;
-        ro.rowsDone = &progress->rowsDone;
-        ro.cancel = &progress->cancel;
-    }
-    const auto start = std::chrono::steady_clock::now();
-    const truth::Reference reference = truth::traceReference(scene, options, ro);
-    result.traceSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // One aliasing band for the numbers and the map.
     const ShadowVisibility& visibility = frame.visibility;
     const std::vector<std::uint8_t> band = truth::aliasingBand(
@@ -71,6 +82,19 @@ ScoreResult scoreFrame(ScoreFrame frame, const Scene& scene, const RenderOptions
     result.overall = scores.overall;
     result.errors = truth::errorMap(reference, visibility.visibility, band, result.softReference,
                                     result.render);
+    return result;
+}
+
+}  // namespace detail
+
+ScoreResult scoreFrame(ScoreFrame frame, const Scene& scene, const RenderOptions& options,
+                       const ScoreOptions& scoreOptions, ScoreProgress* progress) {
+    double seconds = 0.0;
+    const truth::Reference reference =
+        detail::traceForScore(scene, options, scoreOptions, progress, seconds);
+    ScoreResult result =
+        detail::compareWithReference(frame, reference, scene, options, scoreOptions);
+    result.traceSeconds = seconds;
     return result;
 }
 

@@ -52,27 +52,8 @@ std::string lowerExtension(const std::string& path) {
 
 Scene parseText(const std::string& text, const std::string& path, LoadState& state);
 
-std::string readFileText(const std::string& path) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec))
-        throw Error(ErrorKind::InvalidInput, "cannot read scene file '" + path + "': no such file");
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec) throw Error(ErrorKind::Io, "cannot read scene file '" + path + "': " + ec.message());
-    if (size > kMaxFileBytes) {
-        throw Error(ErrorKind::InvalidInput, path + ": the file is " + std::to_string(size >> 20) +
-                                                 " MiB; scene files are limited to " +
-                                                 std::to_string(kMaxFileBytes >> 20) +
-                                                 " MiB (put geometry in a model file)");
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) throw Error(ErrorKind::Io, "cannot read scene file '" + path + "'");
-    return text.str();
-}
-
 Scene loadFile(const std::string& path, LoadState& state) {
-    return parseText(readFileText(path), path, state);
+    return parseText(readFileText(path, "scene file"), path, state);
 }
 
 // The included scene, as a built-in name or a path relative to the including file's folder.
@@ -425,7 +406,7 @@ Scene parseSceneFile(const std::string& text, const std::string& path) {
 }
 
 Scene loadSceneFile(const std::string& path) {
-    return parseSceneFile(readFileText(path), path);
+    return parseSceneFile(readFileText(path, "scene file"), path);
 }
 
 void saveSceneFile(const std::string& path, const std::string& source, const Scene& scene,
@@ -439,5 +420,28 @@ void saveSceneFile(const std::string& path, const std::string& source, const Sce
     }
     writeSceneFile(path, include, scene, options, ground);
 }
+
+namespace scenefile {
+
+std::string readFileText(const std::string& path, const std::string& what) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+        throw Error(ErrorKind::InvalidInput,
+                    "cannot read " + what + " '" + path + "': no such file");
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) throw Error(ErrorKind::Io, "cannot read " + what + " '" + path + "': " + ec.message());
+    if (size > kMaxFileBytes) {
+        throw Error(ErrorKind::InvalidInput, path + ": the file is " + std::to_string(size >> 20) +
+                                                 " MiB; " + what + "s are limited to " +
+                                                 std::to_string(kMaxFileBytes >> 20) + " MiB");
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in && !in.eof()) throw Error(ErrorKind::Io, "cannot read " + what + " '" + path + "'");
+    return text.str();
+}
+
+}  // namespace scenefile
 
 }  // namespace gnomon

@@ -27,6 +27,10 @@ std::string peekShape(const Reader& r, const Json& j, const std::string& path);
 // The mesh of `shape` from the fields `f` (whose keys were checked against shapeKeys(shape)).
 Mesh readShape(const Fields& f, const std::string& shape, const std::string& name);
 
+// The text of a JSON file of `what` kind ("scene file"), refused past kMaxFileBytes; Error
+// naming the file when it is missing or unreadable.
+std::string readFileText(const std::string& path, const std::string& what);
+
 // ---- Materials, lights, camera, options
 Material readMaterial(const Reader& r, const Json& j, const std::string& path,
                       const std::string& name);

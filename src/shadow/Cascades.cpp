@@ -25,6 +25,12 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda)
     return splits;
 }
 
+void stabiliseDepthRange(float& nearest, float& farthest) {
+    constexpr float kSteps = 8.0f;  // per octave
+    if (nearest > 0.0f) nearest = std::exp2(std::floor(std::log2(nearest) * kSteps) / kSteps);
+    if (farthest > 0.0f) farthest = std::exp2(std::ceil(std::log2(farthest) * kSteps) / kSteps);
+}
+
 int autoCascadeCount(float nearest, float farthest) {
     if (!(nearest > 0.0f) || !(farthest > nearest)) return 1;
     const float octaves = std::log2(farthest / nearest) / 3.0f;  // factors of 8
@@ -32,8 +38,8 @@ int autoCascadeCount(float nearest, float farthest) {
 }
 
 LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& view, float aspect,
-                              float splitNear, float splitFar, const Aabb& sceneBounds,
-                              int mapSize) {
+                              float splitNear, float splitFar, const Aabb& sceneBounds, int mapSize,
+                              bool stabilise) {
     // The slice's eight corners in world space.
     const glm::mat4 worldFromView = glm::inverse(viewFromWorld(view));
     const float a = view.aspect > 0.0f ? view.aspect : aspect;
@@ -58,7 +64,7 @@ LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& vie
     float radius = 0.0f;
     for (const glm::vec3& c : corners)
         radius = std::max(radius, glm::length(c - centre));
-    radius = std::ceil(radius * 16.0f) / 16.0f;  // a steady size, not float noise
+    if (stabilise) radius = std::ceil(radius * 16.0f) / 16.0f;  // a steady size, not float noise
 
     LightCameraFrame f;
     f.kind = FrameKind::Orthographic;
@@ -68,11 +74,17 @@ LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& vie
     const glm::mat4 rotation = safeLookAt(glm::vec3(0.0f), dir, glm::vec3(0, 1, 0));
     glm::vec3 lsCentre = glm::vec3(rotation * glm::vec4(centre, 1.0f));
     const float texel = 2.0f * radius / float(mapSize);
-    lsCentre.x = std::floor(lsCentre.x / texel) * texel;
-    lsCentre.y = std::floor(lsCentre.y / texel) * texel;
+    if (stabilise) {
+        lsCentre.x = std::floor(lsCentre.x / texel) * texel;
+        lsCentre.y = std::floor(lsCentre.y / texel) * texel;
+    }
     // Depth: from the sphere's far side back to the farthest scene corner towards the light.
     const Aabb lsScene = sceneBounds.transformed(rotation);
-    const float zFar = lsCentre.z - radius;                            // farthest from the light
+    // In depth, the centre on a grid of an eighth of the radius: the depth range, and so the
+    // stored depths' scale and offset, change now and then rather than with every move.
+    if (stabilise) lsCentre.z = std::ceil(lsCentre.z / (0.125f * radius)) * (0.125f * radius);
+    const float zFar =
+        lsCentre.z - 1.125f * radius;  // farthest from the light, with the snap's room
     const float zNear = std::max(lsCentre.z + radius, lsScene.max.z);  // nearest to the light
     f.lightFromWorld =
         glm::translate(glm::mat4(1.0f), -glm::vec3(lsCentre.x, lsCentre.y, 0.0f)) * rotation;

@@ -89,7 +89,7 @@ struct FitBoxes {
 FitBoxes visibleReceivers(const FitScene& scene, bool receivers = true) {
     FitBoxes f;
     f.casters = &scene.casters;
-    f.snap = scene.viewKnown;
+    f.snap = scene.viewKnown && scene.stabilise;
     if (!receivers) return f;
     std::array<glm::vec3, 8> frustum{};
     if (scene.viewKnown) frustum = frustumCorners(scene.viewClipFromWorld);
@@ -169,8 +169,12 @@ LightCameraFrame fitOrthographic(const glm::mat4& rotation, const Aabb& receiver
         lo = glm::floor((centre - 0.5f * side) / texel) * texel;
         hi = lo + side;
         size = glm::vec2(side);
-        zNear = std::ceil(zNear / texel) * texel;
-        zFar = std::floor(zFar / texel) * texel;
+        // Depth: a quantised range from a near plane on a grid of 1/16 of it, so the stored
+        // depths' scale and offset change now and then, not with every move of the view.
+        const float step = quantizeUp(zNear - zFar) / 16.0f;
+        const float range = quantizeUp(zNear - zFar + step);  // room for the near plane's snap
+        zNear = std::ceil(zNear / step) * step;
+        zFar = zNear - range;
     }
     f.valid = true;
     f.lightFromWorld = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -zNear)) * rotation;

@@ -64,6 +64,7 @@ struct FitScene {
     bool viewKnown = false;
     glm::mat4 viewClipFromWorld{1.0f};
     const ViewSamples* samples = nullptr;
+    bool stabilise = true;  // with viewKnown: square, quantise and snap (see below)
 };
 
 // The light camera of `light` for a frame: Manual and Course use the light's numbers; Fit
@@ -101,9 +102,16 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda)
 // as the view turns) and its origin moves in whole map texels (so the shadow does not
 // shimmer as the view moves); depth reaches back to `sceneBounds` so every caster between
 // the light and the slice is in the map.
+// `stabilise` false: the sphere's exact radius and centre (the shimmering textbook form).
 LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& view, float aspect,
-                              float splitNear, float splitFar, const Aabb& sceneBounds,
-                              int mapSize);
+                              float splitNear, float splitFar, const Aabb& sceneBounds, int mapSize,
+                              bool stabilise = true);
+
+// The depth range cascades split when it follows the view's samples and maps are stabilised:
+// [nearest, farthest] widened to steps of an eighth of an octave (a factor 2^(1/8)), so the
+// splits, and which cascade a surface reads, move only now and then as the view moves rather
+// than every frame.
+void stabiliseDepthRange(float& nearest, float& farthest);
 
 // Sample distribution cascades (Lauritzen et al. 2011): how many cascades a view needs whose
 // samples span view depths [nearest, farthest]: one per factor of 8 in depth, 1..4.

@@ -102,6 +102,19 @@ score)
     expect 3 "exceeds --max-error"
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --max-error 2
     expect 2 "--max-error must be a fraction"
+    # Over a path: a line per frame, path.json and each frame's error map.
+    run score --scene tutorial-room --size 64x64 --path still --frames 3 --error-maps \
+        --out-dir "$work/p"
+    expect 0 "mean over 3 frames"
+    for f in path.json errors-000.png errors-002.png; do [[ -s "$work/p/$f" ]] || fail "no $f"; done
+    grep -q '"mean_flicker": 0.0' "$work/p/path.json" || fail "a still path flickered"
+    run score --scene tutorial-room --size 64x64 --path loop --out-dir "$work/q"
+    expect 2 "unknown path 'loop': expected orbit, dolly, sun, still or a path file"
+    [[ ! -e "$work/q" ]] || fail "a failed path score left its --out-dir"
+    run score --scene tutorial-room --size 64x64 --path orbit --frames 1 --out-dir "$work/q"
+    expect 2 "2..10000 frames"
+    run score --scene tutorial-room --size 64x64 --error-maps --out-dir "$work/q"
+    expect 2 "--error-maps needs --path"
     ;;
 unknown_scene)
     run render --scene no-such-scene --out "$work/a.png"

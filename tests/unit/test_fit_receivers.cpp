@@ -74,9 +74,10 @@ TEST(FitReceivers, DirectionalHoldsTheShadowedReceiversAndNoMore) {
     EXPECT_LE(width, 2.0f * 1.15f);
     EXPECT_NEAR(f.texelWorldSize, width / 1024.0f, 1e-6f);
     // Depth: from the block's top (the nearest caster) to the floor's bottom, plus margins
-    // of 1/1000 at either end and up to a texel of snapping at either end.
+    // of 1/1000 at either end, then quantised (steps of 1/16 of a power of two, with a
+    // step's room for snapping the near plane): at most 2/16 more.
     EXPECT_GE(f.far - f.near, 2.1f);
-    EXPECT_LE(f.far - f.near, 2.1f * 1.002f + 2.0f * f.texelWorldSize);
+    EXPECT_LE(f.far - f.near, 2.1f * 1.002f * (1.0f + 2.0f / 16.0f));
 }
 
 // When the floor casts too, the map covers the floor the camera sees (7.3 wide plus the

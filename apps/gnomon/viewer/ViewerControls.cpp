@@ -302,7 +302,7 @@ void Viewer::filterControls() {
                  "contact-length"});
     }
     if (ImGui::CollapsingHeader("Cascades", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"cascades", "fit-to", "cascade-lambda", "cascade-blend"});
+        options({"cascades", "fit-to", "stabilise", "cascade-lambda", "cascade-blend"});
     }
     if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) {
         options({"shadowed", "shadow-factor", "output-encoding", "dither", "light-tiles"});
