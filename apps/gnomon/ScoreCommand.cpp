@@ -34,7 +34,7 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
                     "(default: never)");
     cmd->add_option("--path", args.path,
                     "score every frame of a path and the flicker between frames: orbit, dolly, "
-                    "sun, still, or a path file (docs/quality.md); writes path.json")
+                    "sun, still, or a path file (docs/tune.md); writes path.json")
         ->type_name("NAME|FILE");
     cmd->add_option("--frames", args.frames,
                     "frames of --path, 2..10000 (default " + std::to_string(args.frames) +

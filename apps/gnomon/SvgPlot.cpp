@@ -67,6 +67,7 @@ std::string toSvg(const Plot& plot) {
                "\" text-anchor=\"end\">" + label + "</text>\n";
     }
     for (std::size_t i = 0; i < plot.x.size(); ++i) {
+        if (plot.xTicks[i].empty()) continue;
         svg += "<line x1=\"" + num(px(plot.x[i])) + "\" x2=\"" + num(px(plot.x[i])) + "\" y1=\"" +
                num(top) + "\" y2=\"" + num(top + ph) + "\" stroke=\"#eee\"/>\n";
         svg += "<text x=\"" + num(px(plot.x[i])) + "\" y=\"" + num(top + ph + 18) +
@@ -88,8 +89,10 @@ std::string toSvg(const Plot& plot) {
             svg += "<circle cx=\"" + num(px(plot.x[i])) + "\" cy=\"" + num(py(v)) +
                    "\" r=\"3\" fill=\"" + colour + "\"/>\n";
         }
-        svg += "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" + std::string(colour) +
-               "\" points=\"" + points + "\"/>\n";
+        if (!plot.series[s].markersOnly) {
+            svg += "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" + std::string(colour) +
+                   "\" points=\"" + points + "\"/>\n";
+        }
         const double ly = top + 14 + 20 * double(s);
         svg += "<line x1=\"" + num(left + pw + 14) + "\" x2=\"" + num(left + pw + 36) + "\" y1=\"" +
                num(ly - 4) + "\" y2=\"" + num(ly - 4) + "\" stroke-width=\"2\" stroke=\"" + colour +

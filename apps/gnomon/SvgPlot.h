@@ -8,12 +8,13 @@ namespace gnomon::cli {
 
 struct PlotSeries {
     std::string name;
-    std::vector<double> y;  // one per x value; negative = missing
+    std::vector<double> y;     // one per x value; negative = missing
+    bool markersOnly = false;  // points not joined (a scatter rather than a curve)
 };
 
 struct Plot {
     std::string title, xLabel, yLabel;
-    std::vector<std::string> xTicks;  // label of each x position
+    std::vector<std::string> xTicks;  // label of each x position ("": no tick there)
     std::vector<double> x;            // positions (already log2 where the axis is)
     std::vector<PlotSeries> series;
 };

@@ -1,9 +1,10 @@
 // gnomon: the command-line tool. Subcommands: `scenes` lists the built-in scenes, `render`
 // draws one frame to a PNG (and optionally each light's shadow map), `score` measures its
-// shadows against a ray-traced reference, `bench` times each pass (and sweeps a parameter),
-// `view` opens the interactive viewer (a window; docs/viewer.md). Exit codes: 0 success,
-// 1 failure (writing output, OpenGL), 2 bad usage or input (a missing or broken input file
-// too), 3 score above --max-error.
+// shadows against a ray-traced reference (over a camera or light path too), `tune` searches
+// shadow settings against that reference within a frame-time budget, `bench` times each pass
+// (and sweeps a parameter), `view` opens the interactive viewer (a window; docs/viewer.md). Exit
+// codes: 0 success, 1 failure (writing output, OpenGL), 2 bad usage or input (a missing or broken
+// input file too), 3 score above --max-error.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -18,6 +19,7 @@
 #include "Progress.h"
 #include "RenderOptionsCli.h"
 #include "ScoreCommand.h"
+#include "TuneCommand.h"
 #include "Viewer.h"
 #include "gnomon/gnomon.h"
 
@@ -238,6 +240,9 @@ int main(int argc, char** argv) {
     gnomon::cli::ScoreArgs scoreArgs;
     CLI::App* scoreCmd = gnomon::cli::addScoreCommand(app, scoreArgs);
 
+    gnomon::cli::TuneArgs tuneArgs;
+    CLI::App* tuneCmd = gnomon::cli::addTuneCommand(app, tuneArgs);
+
     gnomon::cli::BenchArgs benchArgs;
     CLI::App* benchCmd = gnomon::cli::addBenchCommand(app, benchArgs);
 
@@ -267,6 +272,7 @@ int main(int argc, char** argv) {
         if (*optionsCmd) return runOptions(markdown);
         if (*renderCmd) return runRender(render, verbose);
         if (*scoreCmd) return gnomon::cli::runScore(scoreArgs, verbose);
+        if (*tuneCmd) return gnomon::cli::runTune(tuneArgs, verbose);
         if (*benchCmd) return gnomon::cli::runBench(benchArgs, verbose);
         if (*viewCmd) return gnomon::cli::runView(viewArgs, verbose);
     } catch (const gnomon::cli::Interrupted& e) {

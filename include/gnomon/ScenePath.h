@@ -27,7 +27,7 @@ struct ScenePath {
 // - "sun": the camera stays; directional and area lights turn about the vertical (+y),
 //   0.25 degree a frame (a time-of-day sweep);
 // - "still": nothing moves (what the flicker metric must call 0).
-// Anything else is a path file (docs/quality.md): {"gnomon-path": 1, "cameras": [camera, ...]}
+// Anything else is a path file (docs/tune.md): {"gnomon-path": 1, "cameras": [camera, ...]}
 // with cameras written as in scene files, one frame each; `frames` then takes the first
 // frames of the file (0: all of them).
 // Throws gnomon::Error (InvalidInput) for an unknown name, a bad file or a bad frame count.

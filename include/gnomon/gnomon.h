@@ -10,6 +10,7 @@
 #include "gnomon/SceneFile.h"
 #include "gnomon/ScenePath.h"
 #include "gnomon/Score.h"
+#include "gnomon/Tune.h"
 
 namespace gnomon {
 // "MAJOR.MINOR.PATCH" of the library.

@@ -115,6 +115,15 @@ score)
     expect 2 "2..10000 frames"
     run score --scene tutorial-room --size 64x64 --error-maps --out-dir "$work/q"
     expect 2 "--error-maps needs --path"
+    # tune: a line per trial, the front, and a scene file render takes as is.
+    run tune --scene tutorial-room --size 48x48 --sweeps 1 --out-dir "$work/t"
+    expect 0 "front (nothing tried is both faster and better)"
+    for f in tuned.json tune.json front.svg; do [[ -s "$work/t/$f" ]] || fail "no $f"; done
+    run render --scene "$work/t/tuned.json" --out "$work/t/r.png"
+    [[ $(cat "$work/code") == 0 && -s "$work/t/r.png" ]] || fail "tuned.json does not render"
+    run tune --scene tutorial-room --size 48x48 --sweeps 11 --out-dir "$work/u"
+    expect 2 "--sweeps must be in 1..10"
+    [[ ! -e "$work/u" ]] || fail "a rejected tune left its --out-dir"
     ;;
 unknown_scene)
     run render --scene no-such-scene --out "$work/a.png"

@@ -1,0 +1,172 @@
+#include "TuneCommand.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "OutputSet.h"
+#include "Progress.h"
+#include "SvgPlot.h"
+#include "gnomon/gnomon.h"
+
+namespace gnomon::cli {
+
+CLI::App* addTuneCommand(CLI::App& app, TuneArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "tune",
+        "search shadow settings for the least error against ray-traced truth in a time budget");
+    cmd->add_option(
+           "--scene", args.scene,
+           "built-in scene name (see `gnomon scenes`), scene file (.json), glTF file (.gltf, "
+           ".glb) or other model file (assimp: .obj, .ply, .fbx...)")
+        ->required();
+    cmd->add_option("--views", args.views,
+                    "more views to score besides the scene's camera: a path file "
+                    "(docs/tune.md), one view per camera")
+        ->type_name("FILE");
+    cmd->add_option("--budget-ms", args.options.budgetMs,
+                    "frame-time budget, measured as bench measures (default: the starting "
+                    "settings' own frame time)")
+        ->type_name("MS");
+    cmd->add_option("--sweeps", args.options.maxSweeps,
+                    "most passes over the settings, 1..10 (default " +
+                        std::to_string(args.options.maxSweeps) + ")")
+        ->type_name("N");
+    cmd->add_option("--out-dir", args.outDir,
+                    "folder for tune.json (every trial), front.svg and tuned.json (default tune)")
+        ->type_name("DIR");
+    cmd->add_option("--out", args.out,
+                    "the scene file with the chosen settings (default OUT-DIR/tuned.json)")
+        ->type_name("FILE");
+    args.flags.add(*cmd);
+    return cmd;
+}
+
+namespace {
+
+double pct(double f) {
+    return 100.0 * f;
+}
+
+void printTrial(std::size_t i, const TuneTrial& t, double budget) {
+    std::printf("%5zu  %13.3f%%  %13.3f%%  %9.1f%s  %s\n", i, pct(t.misclassified),
+                pct(t.awayFromEdges), t.frameMs, t.frameMs > budget ? "*" : " ",
+                t.flags.empty() ? "(starting settings)" : t.flags.c_str());
+    std::fflush(stdout);
+}
+
+// Error against frame time: every trial as a point, the front joined and labelled with its
+// times. Trials above 4x the starting error (acne everywhere) would flatten the rest: left out
+// and counted in the title.
+std::string frontSvg(const TuneResult& r, const std::string& scene) {
+    const double cap = 4.0 * std::max(r.trials.front().error, 1e-4);
+    std::vector<int> order;
+    for (std::size_t i = 0; i < r.trials.size(); ++i)
+        if (r.trials[i].error <= cap) order.push_back(int(i));
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return r.trials[a].frameMs < r.trials[b].frameMs; });
+    Plot plot;
+    char title[160];
+    std::snprintf(title, sizeof title, "gnomon tune: %s (budget %.0f ms; %zu of %zu trials shown)",
+                  scene.c_str(), r.budgetMs, order.size(), r.trials.size());
+    plot.title = title;
+    plot.xLabel = "frame ms";
+    plot.yLabel = "misclassified + away from edges, %";
+    PlotSeries all{"every trial", {}, true}, front{"front", {}, false};
+    for (int i : order) {
+        const TuneTrial& t = r.trials[std::size_t(i)];
+        const bool onFront = std::find(r.front.begin(), r.front.end(), i) != r.front.end();
+        char tick[32];
+        std::snprintf(tick, sizeof tick, "%.0f", t.frameMs);
+        plot.xTicks.push_back(onFront ? tick : "");
+        plot.x.push_back(t.frameMs);
+        all.y.push_back(pct(t.error));
+        front.y.push_back(onFront ? pct(t.error) : -1.0);
+    }
+    plot.series = {all, front};
+    return toSvg(plot);
+}
+
+void printSummary(const TuneResult& r) {
+    const TuneTrial& start = r.trials.front();
+    std::printf("\nfront (nothing tried is both faster and better):\n");
+    for (int i : r.front)
+        printTrial(std::size_t(i), r.trials[std::size_t(i)], r.budgetMs);
+    // On the front: nothing tried has a lower error for no more time (an equal error found
+    // faster is timing noise as often as not, so it does not count).
+    const auto beaten = std::find_if(r.trials.begin(), r.trials.end(), [&](const TuneTrial& t) {
+        return t.error < start.error && t.frameMs <= start.frameMs;
+    });
+    if (beaten == r.trials.end()) {
+        std::printf("the starting settings are on the front\n");
+    } else {
+        std::printf(
+            "the starting settings are not on the front: trial %zd is better and no "
+            "slower\n",
+            beaten - r.trials.begin());
+    }
+    if (r.best < 0) {
+        std::printf("no setting tried fits the budget of %.1f ms\n", r.budgetMs);
+        return;
+    }
+    const TuneTrial& best = r.trials[std::size_t(r.best)];
+    if (r.best == 0) {
+        std::printf(
+            "the starting settings are already the best within %.1f ms: %.3f%% "
+            "misclassified, %.3f%% away from edges\n",
+            r.budgetMs, pct(start.misclassified), pct(start.awayFromEdges));
+        return;
+    }
+    std::printf(
+        "best within %.1f ms: %s\n  misclassified %.3f%% (from %.3f%%, %.2fx), away "
+        "from edges %.3f%% (from %.3f%%), %.1f ms (from %.1f)\n",
+        r.budgetMs, best.flags.c_str(), pct(best.misclassified), pct(start.misclassified),
+        start.misclassified > 0 ? best.misclassified / start.misclassified : 1.0,
+        pct(best.awayFromEdges), pct(start.awayFromEdges), best.frameMs, start.frameMs);
+}
+
+}  // namespace
+
+int runTune(const TuneArgs& args, bool verbose) {
+    if (args.options.maxSweeps < 1 || args.options.maxSweeps > 10)
+        throw Error(ErrorKind::InvalidInput, "--sweeps must be in 1..10");
+    if (!(args.options.budgetMs >= 0.0 && args.options.budgetMs < 1e6))
+        throw Error(ErrorKind::InvalidInput, "--budget-ms must be in [0, 1e6)");
+    Scene scene = loadWithProgress(args.scene);
+    printWarnings(scene);
+    args.flags.editScene(scene);
+    const RenderOptions start = args.flags.resolve(scene);
+    TuneOptions options = args.options;
+    if (!args.views.empty()) options.extraViews = makeScenePath(args.views, scene, 0).cameras;
+    OutputSet out(args.outDir, "--out-dir");
+    ContextOptions context;
+    context.verbose = verbose;
+    Renderer renderer(context);
+    std::printf("gnomon tune: %s, %d view(s), %dx%d; a trial per line (* over the budget)\n",
+                scene.name.c_str(), 1 + int(options.extraViews.size()), start.width, start.height);
+    std::printf("%5s  %14s  %14s  %10s  %s\n", "trial", "misclassified", "away from edges",
+                "frame ms", "settings changed");
+    TuneProgress progress;
+    std::size_t shown = 0;
+    double budget = options.budgetMs;
+    const TuneResult r = tune(renderer, scene, start, options, &progress, [&](const TuneTrial& t) {
+        if (shown == 0 && budget <= 0.0) budget = t.frameMs;
+        printTrial(shown++, t, budget);
+        if (interrupted()) progress.cancel = true;
+    });
+    printSummary(r);
+    const std::string tuned = args.out.empty() ? out.file("tuned.json") : out.add(args.out);
+    saveSceneFile(tuned, args.scene, scene,
+                  r.best >= 0 ? r.trials[std::size_t(r.best)].options : start, args.flags.ground);
+    writeTextFile(out.file("tune.json"), toJson(r, scene.name));
+    writeTextFile(out.file("front.svg"), frontSvg(r, scene.name));
+    out.keep();
+    std::printf("wrote %s, %s/tune.json and front.svg (%.1f s tracing the references)\n",
+                tuned.c_str(), args.outDir.c_str(), r.traceSeconds);
+    if (r.interrupted) {
+        throw Interrupted("interrupted while tuning; kept the best of the " +
+                          std::to_string(r.trials.size()) + " trials finished");
+    }
+    return 0;
+}
+
+}  // namespace gnomon::cli

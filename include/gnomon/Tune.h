@@ -1,0 +1,66 @@
+// Shadow settings calibrated against ray-traced truth (gnomon tune): a search over the
+// tolerances, filter and its size, map size and cascades for the lowest error over one or
+// more views within a frame-time budget. The reference of each view is traced once and
+// reused for every setting tried.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gnomon/Options.h"
+#include "gnomon/Renderer.h"
+#include "gnomon/Scene.h"
+#include "gnomon/Score.h"
+
+namespace gnomon {
+
+struct TuneOptions {
+    // Frame-time budget in ms, measured as gnomon bench measures a frame (every map redrawn,
+    // from the first view); 0: the starting settings' own frame time. Each trial is timed
+    // over `timedFrames` frames alternating with the starting settings, and reported as the
+    // starting settings' time times the ratio of the two medians (drift cancels out).
+    double budgetMs = 0.0;
+    int timedFrames = 5;
+    int maxSweeps = 3;
+    std::vector<Camera> extraViews;  // scored besides the scene's camera
+    ScoreOptions score;
+};
+
+// One setting tried, scored over every view (means) and timed.
+struct TuneTrial {
+    RenderOptions options;
+    std::string flags;  // what differs from the starting settings, as CLI flags ("" = none)
+    double misclassified = 0.0;
+    double awayFromEdges = 0.0;  // false shadow + leak outside the aliasing band
+    double error = 0.0;          // what the search minimises: misclassified + awayFromEdges
+    double frameMs = 0.0;
+};
+
+struct TuneResult {
+    std::vector<TuneTrial> trials;  // trials[0]: the starting settings
+    int best = -1;                  // the lowest error within the budget (-1: none fits)
+    std::vector<int> front;         // error-versus-time front, fastest first
+    double budgetMs = 0.0;
+    int views = 0;
+    int sweeps = 0;
+    bool interrupted = false;  // progress->cancel stopped it: what was found so far
+    double traceSeconds = 0.0;
+};
+
+struct TuneProgress {
+    std::atomic<int> trialsDone{0};
+    std::atomic<bool> cancel{false};
+};
+
+// Searches from `start` on `scene` (its camera is moved to each view and put back).
+// `onTrial` (optional) is called after each trial. Throws gnomon::Error as score does.
+TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
+                const TuneOptions& options, TuneProgress* progress = nullptr,
+                const std::function<void(const TuneTrial&)>& onTrial = {});
+
+// The result as JSON: every trial with its flags and numbers, the best and the front.
+std::string toJson(const TuneResult& result, const std::string& scene);
+
+}  // namespace gnomon

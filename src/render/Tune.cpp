@@ -1,0 +1,243 @@
+// gnomon::tune: coordinate descent (core/TuneSearch.h) over shadow settings, each trial
+// rendered and scored over every view against references traced once, and timed as bench
+// times a frame.
+#include "gnomon/Tune.h"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "core/TuneSearch.h"
+#include "gnomon/Error.h"
+#include "gnomon/OptionSchema.h"
+#include "render/ScoreDetail.h"
+
+namespace gnomon {
+
+namespace {
+
+bool hasFittedSun(const Scene& s) {
+    for (const Light& l : s.lights) {
+        if (l.type == LightType::Directional && l.castsShadows &&
+            l.shadowCamera.policy == ShadowCameraPolicy::Fit) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// The settings searched, each with the starting value among its values; `start` gets the
+// index of that value per parameter.
+std::vector<search::Parameter> searchSpace(const Scene& scene, const RenderOptions& o,
+                                           search::Point& start) {
+    std::vector<search::Parameter> space = {
+        {"filter", {"none", "pcf", "poisson", "pcss"}},
+        {"pcf-size", {"1", "3", "5", "7"}},
+        {"map-size", {"512", "1024", "2048", "4096"}},
+        {"receiver-plane", {"on", "off"}},
+        {"normal-offset", {"0", "0.5", "1", "2"}},
+        {"bias-depth-aware", {"0.5", "1", "2", "4"}},
+        {"bias-slope", {"0", "1.5", "3"}},
+        {"bias-constant", {"0", "0.00005", "0.0002"}},
+    };
+    if (hasFittedSun(scene)) space.push_back({"cascades", {"auto", "1", "2", "3", "4"}});
+    start.clear();
+    for (search::Parameter& p : space) {
+        const OptionSpec& spec = *findOption(p.name);
+        // The same value however it is spelled ("5e-05" and "0.00005").
+        auto at = std::find_if(p.values.begin(), p.values.end(), [&](const std::string& v) {
+            RenderOptions candidate = o;
+            return !parseOption(spec, v, candidate) && spec.get(candidate) == spec.get(o);
+        });
+        if (at == p.values.end()) at = p.values.insert(p.values.begin(), formatOption(spec, o));
+        start.push_back(int(at - p.values.begin()));
+    }
+    return space;
+}
+
+RenderOptions optionsAt(const std::vector<search::Parameter>& space, const search::Point& point,
+                        const RenderOptions& start, std::string& flags) {
+    RenderOptions o = start;
+    flags.clear();
+    for (std::size_t i = 0; i < space.size(); ++i) {
+        const OptionSpec& spec = *findOption(space[i].name);
+        const std::string& value = space[i].values[std::size_t(point[i])];
+        if (const auto problem = parseOption(spec, value, o))
+            throw Error(ErrorKind::InvalidInput, "tune: --" + space[i].name + ": " + *problem);
+        if (spec.get(o) != spec.get(start))
+            flags += (flags.empty() ? "--" : " --") + space[i].name + " " + value;
+    }
+    return o;
+}
+
+// Puts the scene's camera back however the search ends.
+struct RestoreCamera {
+    Scene& scene;
+    Camera camera;
+    ~RestoreCamera() { scene.camera = camera; }
+};
+
+class Evaluator {
+public:
+    Evaluator(Renderer& renderer, Scene& scene, std::vector<Camera> views,
+              const TuneOptions& options)
+        : mRenderer(renderer), mScene(scene), mViews(std::move(views)), mOptions(options) {}
+
+    // Scores `o` over every view (means), and times it on the first against `start` (the
+    // starting settings; the very object for their own trial).
+    TuneTrial run(const RenderOptions& o, const RenderOptions& start, std::string flags,
+                  double& traceSeconds) {
+        TuneTrial t;
+        t.options = o;
+        t.flags = std::move(flags);
+        for (std::size_t v = 0; v < mViews.size(); ++v) {
+            mScene.camera = mViews[v];
+            const ScoreFrame frame = renderForScore(mRenderer, mScene, o, mOptions.score);
+            const ScoreResult r = detail::compareWithReference(frame, reference(v, o, traceSeconds),
+                                                               mScene, o, mOptions.score);
+            t.misclassified += r.overall.misclassified / double(mViews.size());
+            t.awayFromEdges += (r.overall.falseShadowOutsideBand + r.overall.leakOutsideBand) /
+                               double(mViews.size());
+        }
+        t.error = t.misclassified + t.awayFromEdges;
+        t.frameMs = frameMs(o, start);
+        return t;
+    }
+
+private:
+    // Traced once per view (and once more soft, for pcss, as gnomon score compares it).
+    const truth::Reference& reference(std::size_t view, const RenderOptions& o,
+                                      double& traceSeconds) {
+        const bool soft = o.shadow.filter == ShadowFilter::Pcss;
+        const auto key = std::make_pair(view, soft);
+        auto found = mReferences.find(key);
+        if (found == mReferences.end()) {
+            double seconds = 0.0;
+            found = mReferences
+                        .emplace(key,
+                                 detail::traceForScore(mScene, o, mOptions.score, nullptr, seconds))
+                        .first;
+            traceSeconds += seconds;
+        }
+        return found->second;
+    }
+
+    // As gnomon bench times a frame (pass timing on, every map redrawn, wall time of
+    // render()), alternating with the starting settings: the ratio of the two medians times
+    // the starting settings' first median. The machine's drift (15-35 % here) hits both
+    // alike, so a cheaper setting is not refused the budget for having been timed at a
+    // slow moment.
+    double frameMs(const RenderOptions& o, const RenderOptions& start) {
+        mScene.camera = mViews.front();
+        mRenderer.setPassTiming(true);
+        std::vector<double> mine, theirs;
+        auto time = [&](const RenderOptions& options) {
+            mRenderer.invalidateShadowMaps();
+            const auto begin = std::chrono::steady_clock::now();
+            mRenderer.render(mScene, options);
+            return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                             begin)
+                .count();
+        };
+        const bool same = &o == &start;
+        time(o);  // warm-up: programs compiled, buffers sized
+        if (!same) time(start);
+        for (int i = 0; i < mOptions.timedFrames; ++i) {
+            mine.push_back(time(o));
+            if (!same) theirs.push_back(time(start));
+        }
+        mRenderer.setPassTiming(false);
+        const double median = medianOf(mine);
+        if (same) return mBaselineMs = median;
+        return medianOf(theirs) > 0.0 ? mBaselineMs * median / medianOf(theirs) : median;
+    }
+
+    static double medianOf(std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    }
+
+    Renderer& mRenderer;
+    Scene& mScene;
+    std::vector<Camera> mViews;
+    const TuneOptions& mOptions;
+    std::map<std::pair<std::size_t, bool>, truth::Reference> mReferences;
+    double mBaselineMs = 0.0;  // the starting settings' first median
+};
+
+}  // namespace
+
+TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
+                const TuneOptions& options, TuneProgress* progress,
+                const std::function<void(const TuneTrial&)>& onTrial) {
+    if (!(options.budgetMs >= 0.0) || options.timedFrames < 1 || options.timedFrames > 1000 ||
+        options.maxSweeps < 1) {
+        throw Error(ErrorKind::InvalidInput,
+                    "tune: the budget must be >= 0 ms, timed frames 1..1000, sweeps >= 1");
+    }
+    const RestoreCamera restore{scene, scene.camera};
+    std::vector<Camera> views = {scene.camera};
+    views.insert(views.end(), options.extraViews.begin(), options.extraViews.end());
+    TuneResult result;
+    result.views = int(views.size());
+    search::Point startPoint;
+    const std::vector<search::Parameter> space = searchSpace(scene, start, startPoint);
+    Evaluator evaluator(renderer, scene, views, options);
+    std::string flags;
+    // The starting settings first: their frame time is the budget when none is given.
+    result.trials.push_back(evaluator.run(start, start, "", result.traceSeconds));
+    if (onTrial) onTrial(result.trials.back());
+    if (progress) ++progress->trialsDone;
+    result.budgetMs = options.budgetMs > 0.0 ? options.budgetMs : result.trials[0].frameMs;
+    std::map<search::Point, int> trialOf = {{startPoint, 0}};
+    const search::SearchResult found = search::coordinateDescent(
+        space, startPoint, result.budgetMs,
+        [&](const search::Point& p) {
+            if (!trialOf.count(p)) {
+                const RenderOptions o = optionsAt(space, p, start, flags);
+                result.trials.push_back(evaluator.run(o, start, flags, result.traceSeconds));
+                trialOf[p] = int(result.trials.size()) - 1;
+                if (onTrial) onTrial(result.trials.back());
+                if (progress) ++progress->trialsDone;
+            }
+            const TuneTrial& t = result.trials[std::size_t(trialOf[p])];
+            return search::Evaluation{t.error, t.frameMs};
+        },
+        options.maxSweeps, [&] { return progress && progress->cancel.load(); });
+    result.sweeps = found.sweeps;
+    result.interrupted = found.stopped;
+    if (found.best >= 0) result.best = trialOf[found.trials[std::size_t(found.best)].point];
+    std::vector<search::Trial> all;
+    for (const TuneTrial& t : result.trials)
+        all.push_back({{}, {t.error, t.frameMs}});
+    result.front = search::paretoFront(all);
+    return result;
+}
+
+std::string toJson(const TuneResult& r, const std::string& scene) {
+    auto trial = [](const TuneTrial& t) {
+        return nlohmann::json{{"flags", t.flags},
+                              {"misclassified", t.misclassified},
+                              {"away_from_edges", t.awayFromEdges},
+                              {"error", t.error},
+                              {"frame_ms", t.frameMs}};
+    };
+    nlohmann::json j;
+    j["scene"] = scene;
+    j["views"] = r.views;
+    j["budget_ms"] = r.budgetMs;
+    j["sweeps"] = r.sweeps;
+    j["interrupted"] = r.interrupted;
+    j["trace_seconds"] = r.traceSeconds;
+    j["best"] = r.best;
+    j["front"] = r.front;
+    j["trials"] = nlohmann::json::array();
+    for (const TuneTrial& t : r.trials)
+        j["trials"].push_back(trial(t));
+    return j.dump(2) + "\n";
+}
+
+}  // namespace gnomon

@@ -1,0 +1,88 @@
+// gnomon tune's search without GL: coordinate descent finds the known optimum of a space
+// whose best point is known (found here by trying every point), respects the budget, stops
+// when asked, and the front keeps exactly the trials nothing beats.
+#include <gtest/gtest.h>
+
+#include "core/TuneSearch.h"
+
+namespace gnomon::search {
+namespace {
+
+std::vector<Parameter> space() {
+    return {{"a", {"0", "1", "2", "3", "4"}}, {"b", {"0", "1", "2", "3"}}, {"c", {"0", "1", "2"}}};
+}
+
+// Separable error with its minimum at (3, 1, 2); time grows with a and c.
+Evaluation model(const Point& p) {
+    const double a = p[0] - 3.0, b = p[1] - 1.0, c = p[2] - 2.0;
+    return {a * a + 2.0 * b * b + 0.5 * c * c, 10.0 + 4.0 * p[0] + 3.0 * p[2]};
+}
+
+// The best point within `budget` by trying all 60.
+Point bruteForce(double budget) {
+    Point best;
+    double bestError = 1e300;
+    for (int a = 0; a < 5; ++a)
+        for (int b = 0; b < 4; ++b)
+            for (int c = 0; c < 3; ++c) {
+                const Evaluation e = model({a, b, c});
+                if (e.ms <= budget && e.error < bestError) {
+                    bestError = e.error;
+                    best = {a, b, c};
+                }
+            }
+    return best;
+}
+
+TEST(TuneSearch, FindsTheKnownOptimum) {
+    int calls = 0;
+    const SearchResult r = coordinateDescent(space(), {0, 3, 0}, 1e9, [&](const Point& p) {
+        ++calls;
+        return model(p);
+    });
+    ASSERT_GE(r.best, 0);
+    EXPECT_EQ(r.trials[std::size_t(r.best)].point, (Point{3, 1, 2}));
+    EXPECT_EQ(calls, int(r.trials.size()));  // each point once
+    EXPECT_LT(calls, 60);                    // fewer than trying every point
+    EXPECT_FALSE(r.stopped);
+}
+
+TEST(TuneSearch, StaysWithinTheBudget) {
+    for (double budget : {10.0, 16.0, 20.0, 25.0}) {
+        SCOPED_TRACE(budget);
+        const SearchResult r = coordinateDescent(space(), {0, 0, 0}, budget, model);
+        ASSERT_GE(r.best, 0);
+        const Trial& best = r.trials[std::size_t(r.best)];
+        EXPECT_LE(best.eval.ms, budget);
+        EXPECT_EQ(best.point, bruteForce(budget));
+    }
+}
+
+TEST(TuneSearch, AStartOverBudgetGivesWay) {
+    const SearchResult r = coordinateDescent(space(), {4, 3, 2}, 16.0, model);
+    ASSERT_GE(r.best, 0);
+    EXPECT_LE(r.trials[std::size_t(r.best)].eval.ms, 16.0);
+}
+
+TEST(TuneSearch, StopsWhenAskedAndKeepsWhatItFound) {
+    int calls = 0;
+    const SearchResult r = coordinateDescent(
+        space(), {0, 0, 0}, 1e9,
+        [&](const Point& p) {
+            ++calls;
+            return model(p);
+        },
+        3, [&] { return calls >= 4; });
+    EXPECT_TRUE(r.stopped);
+    EXPECT_EQ(r.trials.size(), 4u);
+    EXPECT_GE(r.best, 0);
+}
+
+TEST(TuneSearch, FrontHoldsWhatNothingBeats) {
+    std::vector<Trial> t = {{{0}, {5.0, 10.0}}, {{1}, {3.0, 20.0}}, {{2}, {4.0, 25.0}},
+                            {{3}, {1.0, 30.0}}, {{4}, {6.0, 5.0}},  {{5}, {3.0, 20.0}}};
+    EXPECT_EQ(paretoFront(t), (std::vector<int>{4, 0, 1, 3}));
+}
+
+}  // namespace
+}  // namespace gnomon::search
