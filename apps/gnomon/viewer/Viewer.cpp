@@ -38,7 +38,7 @@ Viewer::Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHe
 int Viewer::run() {
     auto last = Clock::now();
     while (!mWindow.shouldClose() && !mQuit) {
-        const bool idle = !mScripted && !mState.playing && !mJob && !dirty();
+        const bool idle = !mScripted && !mState.playing && !mJob && !mTuneJob && !dirty();
         if (idle) {
             mWindow.waitEvents(0.25);
         } else {
@@ -81,6 +81,7 @@ void Viewer::frame() {
     }
     handleKeys();
     pollScore();  // before any draw list refers to the overlay texture it may replace
+    pollTune();
     const ImGuiIO& io = ImGui::GetIO();
     const float W = io.DisplaySize.x, H = io.DisplaySize.y;
     const float panelW = std::min(380.0f, W * 0.4f), measureH = std::min(190.0f, H * 0.3f);

@@ -8,6 +8,7 @@
 #include <functional>
 #include <initializer_list>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -33,6 +34,24 @@ struct ScoreJob {
     std::thread thread;
 
     ~ScoreJob() {
+        progress.cancel = true;
+        if (thread.joinable()) thread.join();
+    }
+};
+
+// gnomon tune for the current view, on its own thread with its own headless renderer (the
+// window's context stays with the app loop): many renders, so never on the loop itself.
+struct TuneJob {
+    TuneProgress progress;
+    std::atomic<bool> done{false};
+    std::optional<TuneResult> result;
+    std::string error;
+    std::mutex mutex;
+    std::string latest;  // the last trial, as a line (guarded by `mutex`)
+    std::uint64_t revision = 0;
+    std::thread thread;
+
+    ~TuneJob() {
         progress.cancel = true;
         if (thread.joinable()) thread.join();
     }
@@ -103,11 +122,15 @@ private:
     void measurePanel(float x, float y, float width, float height);
     void passTimes();
     void scorePanel();
+    void tunePanel();
 
     // ---- Score job and files (ViewerJobs.cpp) ----
 
     void startScore();
     void pollScore();
+    void startTune();
+    void pollTune();
+    void applyTune();
     std::string nextScreenshotPath();
     void screenshot(const std::string& path);
     void save(const std::string& path);
@@ -158,9 +181,14 @@ private:
     bool mOverlay = false;
     float mOverlayOpacity = 0.6f;
 
+    std::unique_ptr<TuneJob> mTuneJob;
+    std::optional<TuneResult> mTune;
+    std::uint64_t mTunedRevision = 0;
+    std::string mTuneError;
+
     std::vector<view::Command> mScript;
     std::size_t mNext = 0;
-    bool mScripted = false, mWaitScore = false, mQuit = false;
+    bool mScripted = false, mWaitScore = false, mWaitTune = false, mQuit = false;
     int mWaitFrames = 0;
     int mRepeatLeft = 0;
     view::Command mRepeated;

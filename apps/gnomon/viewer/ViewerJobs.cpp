@@ -1,5 +1,7 @@
-// The viewer's work beyond drawing: the ground-truth score on its own thread, and the files
-// it writes (screenshots equal to `gnomon render`'s, scene files).
+// The viewer's work beyond drawing: the ground-truth score and gnomon tune on their own
+// threads, and the files it writes (screenshots equal to `gnomon render`'s, scene files).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <thread>
@@ -47,6 +49,71 @@ void Viewer::pollScore() {
         if (mScripted) fail("score: " + mJob->error);
     }
     mJob.reset();
+}
+
+// The search runs at most 384 pixels on the long side (each trial renders, scores and times
+// the view; at the window's size a tune would take many minutes), in a headless renderer of
+// its own on the job's thread, over a copy of the scene.
+void Viewer::startTune() {
+    RenderOptions options = mMainOptions;
+    options.debugView = DebugView::None;
+    const float scale = std::min(1.0f, 384.0f / float(std::max(options.width, options.height)));
+    options.width = std::max(16, int(std::lround(float(options.width) * scale)));
+    options.height = std::max(16, int(std::lround(float(options.height) * scale)));
+    mTuneError.clear();
+    auto job = std::make_unique<TuneJob>();
+    job->revision = mState.revision;
+    TuneJob* raw = job.get();
+    auto scene = std::make_shared<Scene>(mState.scene);
+    job->thread = std::thread([raw, scene, options]() {
+        try {
+            Renderer renderer;
+            TuneOptions tuneOptions;
+            tuneOptions.maxSweeps = 2;
+            raw->result = tune(
+                renderer, *scene, options, tuneOptions, &raw->progress, [raw](const TuneTrial& t) {
+                    char line[200];
+                    std::snprintf(line, sizeof line, "%.3f%% in %.1f ms: %s",
+                                  100.0 * t.misclassified, t.frameMs,
+                                  t.flags.empty() ? "(current settings)" : t.flags.c_str());
+                    const std::lock_guard<std::mutex> lock(raw->mutex);
+                    raw->latest = line;
+                });
+        } catch (const std::exception& e) {
+            raw->error = e.what();
+        }
+        raw->done = true;
+    });
+    mTuneJob = std::move(job);
+}
+
+void Viewer::pollTune() {
+    if (!mTuneJob || !mTuneJob->done) return;
+    mTuneJob->thread.join();
+    if (mTuneJob->result) {
+        mTune = std::move(mTuneJob->result);
+        mTunedRevision = mTuneJob->revision;
+        const TuneTrial& start = mTune->trials.front();
+        const TuneTrial& best = mTune->best >= 0 ? mTune->trials[std::size_t(mTune->best)] : start;
+        std::printf(
+            "gnomon view: tune: %zu trials; best within %.1f ms: %s (misclassified "
+            "%.4f, from %.4f)\n",
+            mTune->trials.size(), mTune->budgetMs,
+            best.flags.empty() ? "the current settings" : best.flags.c_str(), best.misclassified,
+            start.misclassified);
+    } else {
+        mTuneError = mTuneJob->error;
+        if (mScripted) fail("tune: " + mTuneJob->error);
+    }
+    mTuneJob.reset();
+}
+
+// The best settings' shadow options over the current ones (the view's size stays).
+void Viewer::applyTune() {
+    if (!mTune || mTune->best < 0)
+        throw Error(ErrorKind::InvalidInput, "apply-tune: no tune result to apply");
+    mState.options.shadow = mTune->trials[std::size_t(mTune->best)].options.shadow;
+    changed(true);
 }
 
 std::string Viewer::nextScreenshotPath() {

@@ -206,6 +206,7 @@ void Viewer::measurePanel(float x, float y, float width, float height) {
     }
     ImGui::NextColumn();
     scorePanel();
+    tunePanel();
     ImGui::Columns(1);
     ImGui::End();
 }
@@ -285,6 +286,45 @@ void Viewer::scorePanel() {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(120);
     ImGui::SliderFloat("opacity", &mOverlayOpacity, 0.0f, 1.0f);
+}
+
+void Viewer::tunePanel() {
+    ImGui::Separator();
+    if (mTuneJob) {
+        std::string latest;
+        {
+            const std::lock_guard<std::mutex> lock(mTuneJob->mutex);
+            latest = mTuneJob->latest;
+        }
+        ImGui::Text("tuning: trial %d", mTuneJob->progress.trialsDone.load() + 1);
+        ImGui::TextWrapped("last: %s", latest.c_str());
+        if (ImGui::Button("Stop tuning")) mTuneJob->progress.cancel = true;
+        tooltip("keeps the best found so far");
+        return;
+    }
+    if (ImGui::Button("Tune settings vs truth")) guarded([&] { startTune(); });
+    tooltip(
+        "gnomon tune for this view: searches filter, map size, tolerances and cascades for the "
+        "least error against the ray-traced reference within this view's frame time, at up to "
+        "384 pixels, in the background");
+    if (!mTuneError.empty()) ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", mTuneError.c_str());
+    if (!mTune) return;
+    const TuneTrial& start = mTune->trials.front();
+    if (mTune->best <= 0) {
+        ImGui::TextWrapped(
+            "%zu trials: the settings tuned were already the best within %.1f ms "
+            "(%.3f%% misclassified)",
+            mTune->trials.size(), mTune->budgetMs, 100.0 * start.misclassified);
+        return;
+    }
+    const TuneTrial& best = mTune->trials[std::size_t(mTune->best)];
+    ImGui::TextWrapped("%zu trials; best within %.1f ms: %s", mTune->trials.size(), mTune->budgetMs,
+                       best.flags.c_str());
+    ImGui::TextWrapped("misclassified %.3f%% (from %.3f%%), %.1f ms", 100.0 * best.misclassified,
+                       100.0 * start.misclassified, best.frameMs);
+    if (mTunedRevision != mState.revision)
+        ImGui::TextColored({1, 0.8f, 0.3f, 1}, "(settings changed since this tune)");
+    if (ImGui::Button("Apply")) guarded([&] { applyTune(); });
 }
 
 }  // namespace gnomon::cli::viewer

@@ -25,6 +25,10 @@ void Viewer::runScript() {
         if (mJob) return;
         mWaitScore = false;
     }
+    if (mWaitTune) {
+        if (mTuneJob) return;
+        mWaitTune = false;
+    }
     if (mRepeatLeft > 0) {  // one repetition per frame
         --mRepeatLeft;
         try {
@@ -37,7 +41,7 @@ void Viewer::runScript() {
         return;
     }
     while (mNext < mScript.size() && mWaitFrames == 0 && mRepeatLeft == 0 && !mWaitScore &&
-           !mQuit) {
+           !mWaitTune && !mQuit) {
         const view::Command& c = mScript[mNext++];
         try {
             runCommand(c);
@@ -49,7 +53,8 @@ void Viewer::runScript() {
         }
         if (mExitCode != 0) return;
     }
-    if (mNext >= mScript.size() && mWaitFrames == 0 && mRepeatLeft == 0 && !mWaitScore)
+    if (mNext >= mScript.size() && mWaitFrames == 0 && mRepeatLeft == 0 && !mWaitScore &&
+        !mWaitTune)
         mScripted = false;
 }
 
@@ -79,6 +84,14 @@ void Viewer::runCommand(const view::Command& c) {
         startScore();
     } else if (c.verb == "wait-score") {
         mWaitScore = true;
+    } else if (c.verb == "tune") {
+        settleOptions();
+        mTuneJob.reset();
+        startTune();
+    } else if (c.verb == "wait-tune") {
+        mWaitTune = true;
+    } else if (c.verb == "apply-tune") {
+        applyTune();
     } else if (c.verb == "expect-score") {
         expectScore(c);
     } else if (c.verb == "key") {

@@ -141,6 +141,9 @@ const std::map<std::string, Arity>& verbs() {
         {"score", {0, 0}},
         {"wait-score", {0, 0}},
         {"expect-score", {3, 3}},
+        {"tune", {0, 0}},
+        {"wait-tune", {0, 0}},
+        {"apply-tune", {0, 0}},
         {"key", {1, 1}},
         {"stats", {0, 0}},
         {"tab", {1, 1}},
@@ -336,7 +339,7 @@ std::vector<Command> parseScript(const std::string& text, const std::string& pat
         if (c.verb == "repeat") {
             const Command inner = repeatedCommand(c);
             if (inner.verb == "repeat" || inner.verb == "wait" || inner.verb == "wait-score" ||
-                inner.verb == "quit") {
+                inner.verb == "wait-tune" || inner.verb == "quit") {
                 bad(path + ":" + std::to_string(lineNumber) + ": repeat cannot repeat " +
                     inner.verb);
             }
