@@ -91,18 +91,13 @@ void printSummary(const TuneResult& r) {
     std::printf("\nfront (nothing tried is both faster and better):\n");
     for (int i : r.front)
         printTrial(std::size_t(i), r.trials[std::size_t(i)], r.budgetMs);
-    // On the front: nothing tried has a lower error for no more time (an equal error found
-    // faster is timing noise as often as not, so it does not count).
-    const auto beaten = std::find_if(r.trials.begin(), r.trials.end(), [&](const TuneTrial& t) {
-        return t.error < start.error && t.frameMs <= start.frameMs;
-    });
-    if (beaten == r.trials.end()) {
+    if (r.beatsStart < 0) {
         std::printf("the starting settings are on the front\n");
     } else {
         std::printf(
-            "the starting settings are not on the front: trial %zd is better and no "
+            "the starting settings are not on the front: trial %d is better and no "
             "slower\n",
-            beaten - r.trials.begin());
+            r.beatsStart);
     }
     if (r.best < 0) {
         std::printf("no setting tried fits the budget of %.1f ms\n", r.budgetMs);

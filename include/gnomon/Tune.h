@@ -42,6 +42,9 @@ struct TuneResult {
     std::vector<TuneTrial> trials;  // trials[0]: the starting settings
     int best = -1;                  // the lowest error within the budget (-1: none fits)
     std::vector<int> front;         // error-versus-time front, fastest first
+    // No trial has a lower error for no more time than the starting settings (-1: none
+    // beats them), else the first trial that does.
+    int beatsStart = -1;
     double budgetMs = 0.0;
     int views = 0;
     int sweeps = 0;

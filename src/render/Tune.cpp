@@ -214,6 +214,11 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     for (const TuneTrial& t : result.trials)
         all.push_back({{}, {t.error, t.frameMs}});
     result.front = search::paretoFront(all);
+    // An equal error found faster is timing noise as often as not: it does not count.
+    for (std::size_t i = 1; i < result.trials.size() && result.beatsStart < 0; ++i) {
+        const TuneTrial &t = result.trials[i], &s0 = result.trials.front();
+        if (t.error < s0.error && t.frameMs <= s0.frameMs) result.beatsStart = int(i);
+    }
     return result;
 }
 
@@ -233,6 +238,8 @@ std::string toJson(const TuneResult& r, const std::string& scene) {
     j["interrupted"] = r.interrupted;
     j["trace_seconds"] = r.traceSeconds;
     j["best"] = r.best;
+    j["start_on_front"] = r.beatsStart < 0;
+    j["beats_start"] = r.beatsStart;
     j["front"] = r.front;
     j["trials"] = nlohmann::json::array();
     for (const TuneTrial& t : r.trials)
