@@ -83,8 +83,8 @@ LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& vie
     // In depth, the centre on a grid of an eighth of the radius: the depth range, and so the
     // stored depths' scale and offset, change now and then rather than with every move.
     if (stabilise) lsCentre.z = std::ceil(lsCentre.z / (0.125f * radius)) * (0.125f * radius);
-    const float zFar =
-        lsCentre.z - 1.125f * radius;  // farthest from the light, with the snap's room
+    // Farthest from the light, with room for the snap when there is one.
+    const float zFar = lsCentre.z - (stabilise ? 1.125f : 1.0f) * radius;
     const float zNear = std::max(lsCentre.z + radius, lsScene.max.z);  // nearest to the light
     f.lightFromWorld =
         glm::translate(glm::mat4(1.0f), -glm::vec3(lsCentre.x, lsCentre.y, 0.0f)) * rotation;
