@@ -58,7 +58,7 @@ truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
     return reference;
 }
 
-ScoreResult compareWithReference(const ScoreFrame& frame, const truth::Reference& reference,
+ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& reference,
                                  const Scene& scene, const RenderOptions& options,
                                  const ScoreOptions& scoreOptions) {
     checkScoreOptions(options, scoreOptions);
@@ -70,7 +70,7 @@ ScoreResult compareWithReference(const ScoreFrame& frame, const truth::Reference
                         std::to_string(options.width) + "x" + std::to_string(options.height));
     }
     ScoreResult result;
-    result.render = frame.render;
+    result.render = std::move(frame.render);
     result.softReference = options.shadow.filter == ShadowFilter::Pcss;
     // One aliasing band for the numbers and the map.
     const ShadowVisibility& visibility = frame.visibility;

@@ -13,24 +13,6 @@ namespace gnomon {
 
 namespace {
 
-// Puts the scene's camera and lights back when the path is done, however it ends.
-class RestoreView {
-public:
-    explicit RestoreView(Scene& scene)
-        : mScene(scene), mCamera(scene.camera), mLights(scene.lights) {}
-    ~RestoreView() {
-        mScene.camera = mCamera;
-        mScene.lights = mLights;
-    }
-    RestoreView(const RestoreView&) = delete;
-    RestoreView& operator=(const RestoreView&) = delete;
-
-private:
-    Scene& mScene;
-    Camera mCamera;
-    std::vector<Light> mLights;
-};
-
 void summarise(PathScoreResult& r) {
     double flicker = 0.0, misclassified = 0.0;
     r.maxFlicker = 0.0;
@@ -99,7 +81,7 @@ PathScoreResult scorePath(Renderer& renderer, Scene& scene, const RenderOptions&
                           const ScenePath& path, const ScoreOptions& scoreOptions,
                           bool keepErrorMaps, ScoreProgress* progress,
                           const std::function<void(const PathScoreResult&)>& onFrame) {
-    const RestoreView restore(scene);
+    const detail::RestoreView restore(scene);
     PathScoreResult out;
     out.path = path.name;
     out.framesAsked = path.frames();

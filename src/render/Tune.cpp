@@ -73,13 +73,6 @@ RenderOptions optionsAt(const std::vector<search::Parameter>& space, const searc
     return o;
 }
 
-// Puts the scene's camera back however the search ends.
-struct RestoreCamera {
-    Scene& scene;
-    Camera camera;
-    ~RestoreCamera() { scene.camera = camera; }
-};
-
 class Evaluator {
 public:
     Evaluator(Renderer& renderer, Scene& scene, std::vector<Camera> views,
@@ -95,7 +88,7 @@ public:
         t.flags = std::move(flags);
         for (std::size_t v = 0; v < mViews.size(); ++v) {
             mScene.camera = mViews[v];
-            const ScoreFrame frame = renderForScore(mRenderer, mScene, o, mOptions.score);
+            ScoreFrame frame = renderForScore(mRenderer, mScene, o, mOptions.score);
             const ScoreResult r = detail::compareWithReference(frame, reference(v, o, traceSeconds),
                                                                mScene, o, mOptions.score);
             t.misclassified += r.overall.misclassified / double(mViews.size());
@@ -178,7 +171,7 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
         throw Error(ErrorKind::InvalidInput,
                     "tune: the budget must be >= 0 ms, timed frames 1..1000, sweeps >= 1");
     }
-    const RestoreCamera restore{scene, scene.camera};
+    const detail::RestoreView restore(scene);
     std::vector<Camera> views = {scene.camera};
     views.insert(views.end(), options.extraViews.begin(), options.extraViews.end());
     TuneResult result;

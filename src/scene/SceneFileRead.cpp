@@ -320,11 +320,11 @@ Light readLight(const Reader& r, const Json& j, const std::string& path, std::si
     return l;
 }
 
-Camera readCamera(const Reader& r, const Json& j, const std::string& path) {
+Camera readCamera(const Reader& r, const Json& j, const std::string& path, const Camera& start) {
     const Fields f(r, j, path,
                    {"eye", "centre", "up", "projection", "fovy", "aspect", "near", "far", "left",
                     "right", "bottom", "top"});
-    Camera c;
+    Camera c = start;
     f.get("eye", c.eye);
     f.get("centre", c.centre);
     f.get("up", c.up);

@@ -35,7 +35,9 @@ std::string readFileText(const std::string& path, const std::string& what);
 Material readMaterial(const Reader& r, const Json& j, const std::string& path,
                       const std::string& name);
 Light readLight(const Reader& r, const Json& j, const std::string& path, std::size_t index);
-Camera readCamera(const Reader& r, const Json& j, const std::string& path);
+// The keys `j` gives over `start` (a scene file's camera starts from the default one).
+Camera readCamera(const Reader& r, const Json& j, const std::string& path,
+                  const Camera& start = Camera{});
 // The keys given in `j` applied over `o`; RenderOptions::validate()'s sentences as errors.
 void applyOptions(const Reader& r, const Json& j, const std::string& path, RenderOptions& o);
 

@@ -48,15 +48,7 @@ ScenePath readPathFile(const std::string& path, const Scene& scene, int frames) 
     }
     for (std::size_t i = 0; i < count; ++i) {
         // Each camera starts from the scene's, so a file may give only eye and centre.
-        Camera c = readCamera(r, cameras[i], element("cameras", i));
-        Camera full = scene.camera;
-        const Json& j = cameras[i];
-        if (j.contains("eye")) full.eye = c.eye;
-        if (j.contains("centre")) full.centre = c.centre;
-        if (j.contains("up")) full.up = c.up;
-        if (j.contains("fovy")) full.fovyDegrees = c.fovyDegrees;
-        if (j.contains("near")) full.near = c.near;
-        if (j.contains("far")) full.far = c.far;
+        const Camera full = readCamera(r, cameras[i], element("cameras", i), scene.camera);
         if (glm::length(full.centre - full.eye) <= 0.0f)
             r.fail(element("cameras", i), "the eye and the centre are the same point");
         out.cameras.push_back(full);
