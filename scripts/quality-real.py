@@ -112,6 +112,10 @@ VIEWS = [
      "camera": {"eye": [-3.2, 0.4, -1.5], "centre": [0.3, -0.3, 0], "fovy": 45, "near": 0.05,
                 "far": 50},
      "lights": [sun(0.8, -0.35, -0.5)]},
+    {"name": "suzanne-edge-on", "model": SUZANNE, "ground": True,
+     "why": "gnomon's framing camera and a sun (azimuth 250, elevation 25) that lies in the "
+            "plane of a brow triangle: a face edge-on to the light",
+     "flags": ["--sun", "250,25"]},
     {"name": "dragon-grazing", "model": DRAGON, "ground": True,
      "why": "a dense scanned mesh 0.2 units long: scales and folds shadowing each other, sun "
             "24 degrees high",

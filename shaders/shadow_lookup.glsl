@@ -256,6 +256,9 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     float major = max(a.x, max(a.y, a.z));
     gTexelWorld = light.shadow.y * major;
     vec3 offset = normalOffset(light, wsNormal, wsToLight, light.shadow.y * major);
+#if defined(RECEIVER_PLANE)
+    offset += grazingPlaneOffset(wsToLight, light.shadow.y * major);
+#endif
     toPoint += offset;
     a = abs(toPoint);
     major = max(a.x, max(a.y, a.z));
@@ -355,10 +358,13 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     gTexelWorld = texelWorld;
 #ifdef NORMAL_OFFSET
     vec3 offset = normalOffset(light, wsNormal, wsToLight, texelWorld);
-    vec4 shadowCoord = clip + light.textureFromWorld * vec4(offset, 0.0);
 #else
-    vec4 shadowCoord = clip;
+    vec3 offset = vec3(0.0);
 #endif
+#if defined(RECEIVER_PLANE)
+    offset += grazingPlaneOffset(wsToLight, texelWorld);
+#endif
+    vec4 shadowCoord = clip + light.textureFromWorld * vec4(offset, 0.0);
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
 
 #ifdef OUTSIDE_CLAMP
