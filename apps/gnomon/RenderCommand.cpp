@@ -154,6 +154,15 @@ RenderOptions RenderFlags::resolve(const Scene& scene) const {
         p = parseEnum("--preset", preset, parsePreset, "default, textbook");
     RenderOptions o = presetOptions(scene, p);
     apply(o);
+    // Cascades belong to directional lights: a scene without a shadowed one shows no tint.
+    const bool directional = std::any_of(scene.lights.begin(), scene.lights.end(), [](auto& l) {
+        return l.enabled && l.castsShadows && l.type == LightType::Directional;
+    });
+    if (o.debugView == DebugView::Cascades && o.shadow.enabled && !directional) {
+        std::fprintf(stderr,
+                     "gnomon: warning: --debug-view cascades does nothing here: the scene has no "
+                     "shadowed directional light\n");
+    }
     return o;
 }
 

@@ -259,8 +259,15 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        // One line, prefixed as every other error, and where help is.
-        std::fprintf(stderr, "gnomon: error: %s (see gnomon%s --help)\n", e.what(),
+        // One line, prefixed as every other error, and where help is; words nobody took are
+        // named in the order given (CLI11 lists them reversed).
+        std::string what = e.what();
+        if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
+            what = "unknown flag or stray value:";
+            for (const std::string& word : app.remaining())
+                what += " " + word;
+        }
+        std::fprintf(stderr, "gnomon: error: %s (see gnomon%s --help)\n", what.c_str(),
                      app.get_subcommands().empty()
                          ? ""
                          : (" " + app.get_subcommands().front()->get_name()).c_str());

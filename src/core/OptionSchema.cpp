@@ -331,6 +331,11 @@ void addConditions(std::vector<OptionSpec>& s) {
          "more than one cascade (--cascades auto or 2..4)"},
         {"cascade-blend", [](const RenderOptions& o) { return o.shadow.cascades != 1; },
          "more than one cascade (--cascades auto or 2..4)"},
+        {"debug-view",
+         [](const RenderOptions& o) {
+             return o.debugView != DebugView::Cascades || o.shadow.cascades != 1;
+         },
+         "--cascades auto or 2..4 (for the cascades tint)"},
         {"shadow-factor",
          [](const RenderOptions& o) { return o.shading.shadowedRule == ShadowedRule::Factor; },
          "--shadowed factor"},

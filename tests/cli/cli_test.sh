@@ -294,6 +294,11 @@ pointless_flags)
     [[ $(grep -c "pcf-size" "$work/stderr") == 1 ]] || fail "warned more than once"
     run render --scene book-triangle --size 32x32 --out "$work/q.png" --filter pcss --light-radius 0.5
     [[ ! -s "$work/stderr" ]] || fail "a flag that matters was warned about: $(cat "$work/stderr")"
+    run render --scene tutorial-directional --size 32x32 --out "$work/r.png" --cascades 1 \
+        --debug-view cascades
+    expect 0 "gnomon: warning: --debug-view does nothing here: it applies only with --cascades"
+    run render --scene book-triangle --size 32x32 --out "$work/s.png" --debug-view cascades
+    expect 0 "--debug-view cascades does nothing here: the scene has no shadowed directional light"
     ;;
 option_tables)
     # The docs' option tables are the schema's: README.md and docs/scene-file.md hold
@@ -324,6 +329,9 @@ usage)
     run render --bogus
     expect 2 "gnomon: error: "
     expect 2 "--help"
+    # Words nobody took are named as given.
+    run render --scene book-triangle --out "$work/w.png" --bogus 1
+    expect 2 "gnomon: error: unknown flag or stray value: --bogus 1 (see gnomon render --help)"
     run
     expect 2 "gnomon: error: "
     ;;
