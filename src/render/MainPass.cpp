@@ -193,14 +193,92 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
     return rawDepths;
 }
 
+void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
+    glUseProgram(p.id());
+    glUniformMatrix4fv(1, 1, GL_FALSE, &u.in->viewFromWorld[0][0]);
+    glUniformMatrix4fv(2, 1, GL_FALSE, &u.in->clipFromView[0][0]);
+    glUniform3fv(3, 1, &u.in->ambient[0]);
+    glUniform1f(4, u.shadowFactor);
+    glUniformMatrix4fv(5, 1, GL_FALSE, &u.worldFromView[0][0]);
+    glUniform4iv(6, 1, &u.ranges[0]);
+    glUniform1i(10, u.first);
+    glUniform3fv(7, 1, &u.depthAware[0]);
+    if (u.in->hasCascades) glUniform4fv(11, 1, &u.in->cascadeDepth[0]);
+    if (u.in->viewDepth) {
+        glUniformMatrix4fv(8, 1, GL_FALSE, &u.viewFromClip[0][0]);
+        glUniform1f(9, u.contactLength);
+    }
+}
+
+// Opaque and masked items in their order (the fast program, then the material one where
+// needed, each texture bound once); blended ones after, farthest first, over them.
+void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
+                         const FrameUniforms& u, bool visibilityPass, bool floor) {
+    const MainPassInputs& in = *u.in;
+    bool culling = false, material = false;
+    glDisable(GL_CULL_FACE);
+    useProgram(program(options, in, visibilityPass, false, floor), u);
+    GLuint texture = ~0u;
+    // Sets the state `item` needs.
+    auto setState = [&](const DrawItem& item) {
+        if (item.materialPath != material) {
+            material = item.materialPath;
+            useProgram(program(options, in, visibilityPass, material && !floor, floor), u);
+        }
+        if (material && scene.textureOf(item) != texture) {
+            texture = scene.textureOf(item);
+            glBindTextureUnit(4, texture);
+        }
+        if (item.doubleSided == culling) {
+            culling = !item.doubleSided;
+            culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+        }
+    };
+    // Runs of items needing the same state: one multi-draw each.
+    mBlended.clear();
+    const std::vector<DrawItem>& items = scene.items();
+    std::uint32_t runStart = 0, runLength = 0;
+    for (std::uint32_t i = 0; i < items.size(); ++i) {
+        if (items[i].alphaMode != AlphaMode::Blend) {
+            const DrawItem& item = items[i];
+            const bool differs = item.materialPath != material ||
+                                 (material && scene.textureOf(item) != texture) ||
+                                 item.doubleSided == culling;
+            if (differs) {  // the run so far is drawn in the state it was set up for
+                scene.drawRange(runStart, runLength);
+                runStart = i;
+                runLength = 0;
+                setState(item);
+            }
+            ++runLength;
+        } else if (!visibilityPass) {  // scored: the surfaces behind (as the reference)
+            const glm::vec3 c = items[i].bounds.centre();
+            mBlended.emplace_back(-glm::length(glm::vec3(in.viewFromWorld * glm::vec4(c, 1.0f))),
+                                  i);
+        }
+    }
+    scene.drawRange(runStart, runLength);
+    if (!mBlended.empty()) {
+        std::sort(mBlended.begin(), mBlended.end());
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        for (const auto& [distance, i] : mBlended) {
+            setState(items[i]);
+            scene.draw(items[i]);
+        }
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+    glDisable(GL_CULL_FACE);
+}
+
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
                       const gl::Texture* visibility, bool floor) {
     const TiledLights& tiled = *in.tiled;
     uploadLights(*in.lights, tiled.order());
     const bool rawDepths = bindMaps(in, options.shadow);
 
-    const glm::mat4 worldFromView = glm::inverse(in.viewFromWorld);
-    const glm::mat4 viewFromClip = glm::inverse(in.clipFromView);
     // Spacing of stored depths per kind of map; -1 asks the shader for a float ulp.
     auto spacing = [](DepthFormat f) {
         return f == DepthFormat::Depth32F ? -1.0f : shadow::storedDepthSpacing(f, 0.5f);
@@ -208,87 +286,16 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     const DepthFormat cubeFormat = isColourFormat(options.shadow.depthFormat)
                                        ? DepthFormat::Depth32F
                                        : options.shadow.depthFormat;
+    FrameUniforms u;
+    u.in = &in;
+    u.worldFromView = glm::inverse(in.viewFromWorld);
+    u.viewFromClip = glm::inverse(in.clipFromView);
+    u.shadowFactor = options.shading.shadowFactor;
+    u.depthAware = glm::vec3(options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
+                             spacing(cubeFormat));
+    u.contactLength = options.shadow.contactLength;
     // The light order's range the draws use: every light, or one tile's.
-    glm::ivec4 ranges = tiled.ranges();
-    int first = 0;
-    auto use = [&](const gl::Program& p) {
-        glUseProgram(p.id());
-        glUniformMatrix4fv(1, 1, GL_FALSE, &in.viewFromWorld[0][0]);
-        glUniformMatrix4fv(2, 1, GL_FALSE, &in.clipFromView[0][0]);
-        glUniform3fv(3, 1, &in.ambient[0]);
-        glUniform1f(4, options.shading.shadowFactor);
-        glUniformMatrix4fv(5, 1, GL_FALSE, &worldFromView[0][0]);
-        glUniform4iv(6, 1, &ranges[0]);
-        glUniform1i(10, first);
-        glUniform3f(7, options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
-                    spacing(cubeFormat));
-        if (in.hasCascades) glUniform4fv(11, 1, &in.cascadeDepth[0]);
-        if (in.viewDepth) {
-            glUniformMatrix4fv(8, 1, GL_FALSE, &viewFromClip[0][0]);
-            glUniform1f(9, options.shadow.contactLength);
-        }
-    };
-    // Opaque and masked items in their order (the fast program, then the material one where
-    // needed, each texture bound once); blended ones after, farthest first, over them.
-    auto draw = [&](bool visibilityPass) {
-        bool culling = false, material = false;
-        glDisable(GL_CULL_FACE);
-        use(program(options, in, visibilityPass, false, floor));
-        GLuint texture = ~0u;
-        // Sets the state `item` needs.
-        auto setState = [&](const DrawItem& item) {
-            if (item.materialPath != material) {
-                material = item.materialPath;
-                use(program(options, in, visibilityPass, material && !floor, floor));
-            }
-            if (material && scene.textureOf(item) != texture) {
-                texture = scene.textureOf(item);
-                glBindTextureUnit(4, texture);
-            }
-            if (item.doubleSided == culling) {
-                culling = !item.doubleSided;
-                culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-            }
-        };
-        // Runs of items needing the same state: one multi-draw each.
-        mBlended.clear();
-        const std::vector<DrawItem>& items = scene.items();
-        std::uint32_t runStart = 0, runLength = 0;
-        for (std::uint32_t i = 0; i < items.size(); ++i) {
-            if (items[i].alphaMode != AlphaMode::Blend) {
-                const DrawItem& item = items[i];
-                const bool differs = item.materialPath != material ||
-                                     (material && scene.textureOf(item) != texture) ||
-                                     item.doubleSided == culling;
-                if (differs) {  // the run so far is drawn in the state it was set up for
-                    scene.drawRange(runStart, runLength);
-                    runStart = i;
-                    runLength = 0;
-                    setState(item);
-                }
-                ++runLength;
-            } else if (!visibilityPass) {  // scored: the surfaces behind (as the reference)
-                const glm::vec3 c = items[i].bounds.centre();
-                mBlended.emplace_back(
-                    -glm::length(glm::vec3(in.viewFromWorld * glm::vec4(c, 1.0f))), i);
-            }
-        }
-        scene.drawRange(runStart, runLength);
-        if (!mBlended.empty()) {
-            std::sort(mBlended.begin(), mBlended.end());
-            glEnable(GL_BLEND);
-            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
-                                GL_ONE_MINUS_SRC_ALPHA);
-            glDepthMask(GL_FALSE);
-            for (const auto& [distance, i] : mBlended) {
-                setState(items[i]);
-                scene.draw(items[i]);
-            }
-            glDepthMask(GL_TRUE);
-            glDisable(GL_BLEND);
-        }
-        glDisable(GL_CULL_FACE);
-    };
+    u.ranges = tiled.ranges();
 
     scene.bind();
     glEnable(GL_DEPTH_TEST);
@@ -296,19 +303,19 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     glDepthMask(GL_TRUE);
     glCullFace(GL_BACK);
     if (tiled.tiles().empty()) {
-        draw(false);
+        drawItems(scene, options, u, false, floor);
     } else {
         // Each pixel lies in one tile: drawn there once, blended surfaces in the same order.
         glEnable(GL_SCISSOR_TEST);
         for (const LightTile& tile : tiled.tiles()) {
             glScissor(tile.scissor.x, tile.scissor.y, tile.scissor.z, tile.scissor.w);
-            ranges = tile.ends;
-            first = tile.first;
-            draw(false);
+            u.ranges = tile.ends;
+            u.first = tile.first;
+            drawItems(scene, options, u, false, floor);
         }
         glDisable(GL_SCISSOR_TEST);
-        ranges = tiled.ranges();
-        first = 0;
+        u.ranges = tiled.ranges();
+        u.first = 0;
     }
     if (visibility) {
         // The surfaces that won the depth test, again: each light's visibility per pixel,
@@ -317,7 +324,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        draw(true);
+        drawItems(scene, options, u, true, floor);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);

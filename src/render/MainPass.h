@@ -62,6 +62,18 @@ public:
     int maxLights() const { return mMaxLights; }
 
 private:
+    // What every program of one frame's draws is given (the shaders' uniform locations).
+    struct FrameUniforms {
+        const MainPassInputs* in = nullptr;
+        glm::mat4 worldFromView{1.0f}, viewFromClip{1.0f};
+        float shadowFactor = 0.0f, contactLength = 0.0f;
+        glm::vec3 depthAware{0.0f};  // steps, map and cube stored-depth spacing
+        glm::ivec4 ranges{0};        // the light order's range: every light, or one tile's
+        int first = 0;
+    };
+    void useProgram(const gl::Program& p, const FrameUniforms& u);
+    void drawItems(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
+                   bool visibilityPass, bool floor);
     // `material`: the MATERIAL_PATH variant (textures, masks, blending).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
                                bool visibilityPass, bool material, bool floor);

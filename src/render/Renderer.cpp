@@ -252,6 +252,15 @@ struct Renderer::Impl {
         in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
         in.viewDepth = contact ? &viewDepth.depth() : nullptr;
         if (timer) timer->start();
+        drawMain(s, options, in, visibility != nullptr);
+        if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));
+    }
+
+    // The main pass (or a debug view instead) into the cleared target; with `scored`, each
+    // light's visibility per pixel too.
+    void drawMain(const Scene& s, const RenderOptions& options, const render::MainPassInputs& in,
+                  bool scored) {
+        const std::vector<render::ShadowedLight>& shadowed = plan.shadowed();
         if (options.debugView == DebugView::ShadowMap) {
             const int light = options.lightOnly >= 0 ? options.lightOnly
                               : shadowed.empty()     ? -1
@@ -266,19 +275,7 @@ struct Renderer::Impl {
                                             "casting, or nothing in view to shadow)");
             }
         } else {
-            const gl::Texture* visibilityTarget = nullptr;
-            if (visibility) {
-                const int layers = std::max<int>(1, int(s.lights.size()));
-                if (!visibilityTexture || visibilityTexture.width() != options.width ||
-                    visibilityTexture.height() != options.height ||
-                    visibilityTexture.layers() != layers) {
-                    visibilityTexture = gl::Texture::array2D("shadow visibility", GL_RG32F,
-                                                             options.width, options.height, layers);
-                }
-                const float unset[2] = {1.0f, 0.0f};
-                glClearTexImage(visibilityTexture.id(), 0, GL_RG, GL_FLOAT, unset);
-                visibilityTarget = &visibilityTexture;
-            }
+            const gl::Texture* visibilityTarget = scored ? &clearedVisibility(s, options) : nullptr;
             // sRGB output: the target is SRGB8_ALPHA8, so writes (and blending) encode.
             const bool srgb = options.shading.output == OutputEncoding::Srgb;
             if (srgb) glEnable(GL_FRAMEBUFFER_SRGB);
@@ -286,12 +283,23 @@ struct Renderer::Impl {
             lastMain = in;
             lastMainOptions = options;
             if (options.debugView == DebugView::LightFrusta) {
-                debugPass.drawFrusta(shadowed, in.clipFromView * viewFromWorld);
+                debugPass.drawFrusta(shadowed, in.clipFromView * in.viewFromWorld);
             }
             if (srgb) glDisable(GL_FRAMEBUFFER_SRGB);
         }
+    }
 
-        if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));
+    // The per-light visibility target at the frame's size, every pixel unset (lit, no map).
+    const gl::Texture& clearedVisibility(const Scene& s, const RenderOptions& options) {
+        const int layers = std::max<int>(1, int(s.lights.size()));
+        if (!visibilityTexture || visibilityTexture.width() != options.width ||
+            visibilityTexture.height() != options.height || visibilityTexture.layers() != layers) {
+            visibilityTexture = gl::Texture::array2D("shadow visibility", GL_RG32F, options.width,
+                                                     options.height, layers);
+        }
+        const float unset[2] = {1.0f, 0.0f};
+        glClearTexImage(visibilityTexture.id(), 0, GL_RG, GL_FLOAT, unset);
+        return visibilityTexture;
     }
 
     GlTexture drawPanel(int light, int width, int height) {
