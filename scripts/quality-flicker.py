@@ -32,7 +32,9 @@ frame to the next: `dolly` moves the eye 0.5 % of its distance towards the targe
 `orbit` turns it 0.5 degree about the target, `sun` turns directional lights 0.25 degree
 about the vertical (there the true shadow moves too, and the map's texel grid turns with
 the light, so no stabilisation can hold it). `--stabilise off` refits the maps exactly every
-frame; what stabilisation does is in docs/techniques.md (Cascades)."""
+frame. A path's frames follow one another as a viewer's do, so stabilised maps also hold
+their extent while it covers the view; what stabilisation does is in docs/techniques.md
+(Cascades)."""
 
 # (settings name, flags) for every view and path
 SETTINGS = [

@@ -118,6 +118,12 @@ public:
     // Measure each pass (glFinish() between passes, so a little slower overall): fills
     // FrameStats::passes. Off by default.
     void setPassTiming(bool on);
+    // Frames that follow one another as a camera moves (the viewer, gnomon score --path):
+    // with --stabilise on, each fitted directional map keeps its extent, and cascades their
+    // split range, while they still cover what the view sees and are at most 1.25x looser
+    // than a fresh fit, so small moves change nothing in the maps. Off by default: every
+    // frame is then fitted as a single render would be.
+    void setFollowing(bool on);
     // Forget every kept shadow map and the view depth samples fitted maps follow: the next
     // frame renders them all (benchmarks of a frame whose lights and camera all moved).
     void invalidateShadowMaps();

@@ -66,6 +66,12 @@ bool LightPlan::wantsViewSamples(const Scene& s, const RenderOptions& options) {
     return false;
 }
 
+LightPlan::Held* LightPlan::held(std::size_t i) {
+    if (!mFollowing) return nullptr;
+    if (mHeld.size() <= i) mHeld.resize(i + 1);
+    return &mHeld[i];
+}
+
 void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
                      const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
                      const Camera* fitCamera) {
@@ -125,8 +131,9 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
         if (cascadable && cascades > 1 && !(samples && samples->empty())) {
             planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds(), g);
         } else if (shadowing) {
-            const shadow::LightCameraFrame frame =
-                shadow::lightCameraFrame(light, mFitCamera, mFit, mapSize);
+            Held* h = held(i);
+            const shadow::LightCameraFrame frame = shadow::lightCameraFrame(
+                light, mFitCamera, mFit, mapSize, h ? &h->maps[0] : nullptr);
             if (frame.valid) {
                 fillShadowRecord(g, frame, light, options.shadow);
                 g.soft.w = float(i);
@@ -202,9 +209,22 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         far = std::min(cam.far, farthest);
     }
     if (options.shadow.stabilise) {
-        shadow::stabiliseDepthRange(near, far);
-        near = std::max(near, cam.near);
-        far = std::min(far, cam.far);
+        float n = near, f = far;
+        shadow::stabiliseDepthRange(n, f);
+        n = std::max(n, cam.near);
+        f = std::min(f, cam.far);
+        // A held range serves while it holds [near, far] and is not much looser than n..f.
+        Held* h = held(lightIndex);
+        if (h && h->cascades == count && h->splitRange.x <= near && h->splitRange.y >= far &&
+            h->splitRange.y / h->splitRange.x <= shadow::kHoldSlack * (f / n)) {
+            n = h->splitRange.x;
+            f = h->splitRange.y;
+        } else if (h) {
+            h->splitRange = {n, f};
+            h->cascades = count;
+        }
+        near = n;
+        far = f;
     }
     const float blend = options.shadow.cascadeBlend;
     const std::vector<float> splits =
@@ -222,9 +242,10 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         const float previous = k >= 2 ? splits[std::size_t(k) - 1] : 0.0f;
         const float reach = k == 0 ? 0.0f : from - blend * (from - previous);
         if (samples) {
+            Held* h = held(lightIndex);
             frame = shadow::sampledCascadeFrame(
                 direction, mFit, reach, k + 1 == count ? std::numeric_limits<float>::max() : to,
-                mapSize);
+                mapSize, h && k < kMaxCascades ? &h->maps[k] : nullptr);
         }
         // No sample or no caster in this slice: a sphere around it still shadows correctly.
         if (!frame.valid) {

@@ -32,6 +32,10 @@ public:
     void plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
               const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
               const Camera* fitCamera = nullptr);
+    // Frames that follow one another as a view moves (the viewer, a scored path): each
+    // stabilised map keeps its extent, and cascades their depth range, while those still
+    // cover what the view sees (shadow::HeldExtent). Off: every frame is fitted afresh.
+    void setFollowing(bool on) { mFollowing = on; }
     // After the shadow pass placed each map: its layer and its share of its array.
     void finish(const ShadowPass& pass);
 
@@ -47,6 +51,19 @@ private:
                       const glm::vec3& direction, int mapSize, int count, float aspect,
                       const Aabb& sceneBounds, GpuLight& g);
 
+    static constexpr int kMaxCascades = 4;
+    // What a following frame keeps of the previous one, per scene light: its single map's
+    // extent or its cascades', and the depth range its cascades split.
+    struct Held {
+        shadow::HeldExtent maps[kMaxCascades];
+        glm::vec2 splitRange{0.0f};
+        int cascades = 0;  // 0: no range held
+    };
+    // Light `i`'s, or null when not following.
+    Held* held(std::size_t i);
+
+    bool mFollowing = false;
+    std::vector<Held> mHeld;  // grows with the scene's lights, never shrinks
     std::vector<ShadowedLight> mShadowed;
     std::vector<GpuLight> mLights;          // scene lights, then cascade records
     std::vector<GpuLight> mCascadeRecords;  // reused every frame

@@ -405,6 +405,10 @@ std::vector<MapUsage> Renderer::mapUsage() {
     return out;
 }
 
+void Renderer::setFollowing(bool on) {
+    mImpl->plan.setFollowing(on);
+}
+
 void Renderer::setPassTiming(bool on) {
     mImpl->makeCurrent();
     if (on && !mImpl->clock) mImpl->clock = std::make_unique<render::PassClock>();

@@ -82,6 +82,15 @@ PathScoreResult scorePath(Renderer& renderer, Scene& scene, const RenderOptions&
                           bool keepErrorMaps, ScoreProgress* progress,
                           const std::function<void(const PathScoreResult&)>& onFrame) {
     const detail::RestoreView restore(scene);
+    // The frames follow one another as a viewer's would: stabilised maps hold still while
+    // they cover the view (Renderer::setFollowing).
+    struct Following {
+        Renderer& r;
+        explicit Following(Renderer& renderer) : r(renderer) { r.setFollowing(true); }
+        ~Following() { r.setFollowing(false); }
+        Following(const Following&) = delete;
+        Following& operator=(const Following&) = delete;
+    } following(renderer);
     PathScoreResult out;
     out.path = path.name;
     out.framesAsked = path.frames();

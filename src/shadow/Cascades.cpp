@@ -26,7 +26,7 @@ std::vector<float> cascadeSplits(float near, float far, int count, float lambda)
 }
 
 void stabiliseDepthRange(float& nearest, float& farthest) {
-    constexpr float kSteps = 8.0f;  // per octave
+    constexpr float kSteps = 2.0f;  // per octave (see the header)
     if (nearest > 0.0f) nearest = std::exp2(std::floor(std::log2(nearest) * kSteps) / kSteps);
     if (farthest > 0.0f) farthest = std::exp2(std::ceil(std::log2(farthest) * kSteps) / kSteps);
 }

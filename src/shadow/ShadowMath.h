@@ -67,6 +67,20 @@ struct FitScene {
     bool stabilise = true;  // with viewKnown: square, quantise and snap (see below)
 };
 
+// A stabilised orthographic map's box in its light space, kept from one frame of a moving
+// view to the next: while it still holds everything the view needs from the map and is at
+// most kHoldSlack times larger on each axis than a fresh fit, the map keeps it, so nothing
+// in the map moves or resizes. Refits happen when the view leaves it or it grows too loose.
+// A box kept this way always covers what the view sees: only sharpness is traded.
+struct HeldExtent {
+    bool valid = false;
+    glm::mat4 rotation{0.0f};  // world to the light's space, exactly: a turned light refits
+    int mapSize = 0;
+    glm::vec2 lo{0.0f}, hi{0.0f};
+    float zNear = 0.0f, zFar = 0.0f;
+};
+constexpr float kHoldSlack = 1.25f;
+
 // The light camera of `light` for a frame: Manual and Course use the light's numbers; Fit
 // holds the visible receivers that casters can shadow, and those casters:
 // - directional and area lights: an orthographic box over the receivers' and casters'
@@ -80,8 +94,10 @@ struct FitScene {
 //   caster along the faces' axes (a face's depth is the largest of |dx|, |dy|, |dz|).
 // Invalid (no map needed) when no receiver is visible or no caster can shadow one.
 // `mapSize` sets texelWorldSize.
+// `held` (with a stabilised fit of a directional or area light): the extent kept from the
+// previous frame, read and updated.
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const FitScene& scene,
-                                  int mapSize);
+                                  int mapSize, HeldExtent* held = nullptr);
 // The same with one box as every caster and receiver and no view (fit the whole box).
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
                                   const Aabb& casterAndReceiverBounds, int mapSize);
@@ -108,9 +124,10 @@ LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& vie
                               bool stabilise = true);
 
 // The depth range cascades split when it follows the view's samples and maps are stabilised:
-// [nearest, farthest] widened to steps of an eighth of an octave (a factor 2^(1/8)), so the
-// splits, and which cascade a surface reads, move only now and then as the view moves rather
-// than every frame.
+// [nearest, farthest] widened to steps of half an octave (a factor 2^(1/2)), so the splits,
+// and which cascade a surface reads, move only now and then as the view moves rather than
+// every frame. Eighths of an octave were measured: Sponza's atrium on a dolly flickered in
+// 0.05 % of its pixels per frame, against 0.017 % with halves, at the same misclassification.
 void stabiliseDepthRange(float& nearest, float& farthest);
 
 // Sample distribution cascades (Lauritzen et al. 2011): how many cascades a view needs whose
@@ -121,7 +138,8 @@ int autoCascadeCount(float nearest, float farthest);
 // can shadow them), squared and snapped as the single-map fit is. Invalid when no sample or
 // no caster is there.
 LightCameraFrame sampledCascadeFrame(const glm::vec3& direction, const FitScene& scene,
-                                     float depthFrom, float depthTo, int mapSize);
+                                     float depthFrom, float depthTo, int mapSize,
+                                     HeldExtent* held = nullptr);
 
 // View-camera matrices for an output of `aspect` (width / height).
 glm::mat4 viewFromWorld(const Camera& camera);

@@ -32,6 +32,8 @@ Viewer::Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHe
       mScript(std::move(script)),
       mScripted(!args.script.empty()) {
     mRenderer.setPassTiming(mMeasure);
+    // The view moves frame to frame: stabilised maps hold still while they cover it.
+    mRenderer.setFollowing(true);
     if (mVerbose) std::fprintf(stderr, "gnomon view: OpenGL %s\n", mRenderer.glInfo().c_str());
 }
 

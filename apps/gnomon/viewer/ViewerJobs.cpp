@@ -127,9 +127,13 @@ std::string Viewer::nextScreenshotPath() {
     }
 }
 
-// The PNG gnomon render writes for these settings: the same renderer, read back.
+// The PNG gnomon render writes for these settings: the same renderer, read back, its maps
+// fitted afresh as a single render's are (not held from the frames before).
 void Viewer::screenshot(const std::string& path) {
-    writePng(path, mRenderer.render(mState.scene, mMainOptions));
+    mRenderer.setFollowing(false);
+    Image image = mRenderer.render(mState.scene, mMainOptions);
+    mRenderer.setFollowing(true);
+    writePng(path, image);
     mRedraw = true;
     mLastWritten = path;
     std::printf("gnomon view: wrote %s (%dx%d)\n", path.c_str(), mMainOptions.width,
