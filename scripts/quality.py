@@ -24,6 +24,8 @@ VARIANTS = [
     ("filter none", ["--filter", "none"]),
     ("poisson 5", ["--filter", "poisson", "--pcf-size", "5"]),
     ("pcss", ["--filter", "pcss"]),
+    ("evsm4", ["--filter", "evsm4"]),
+    ("msm", ["--filter", "msm"]),
     ("4 cascades", ["--cascades", "4"]),
 ]
 

@@ -4,7 +4,7 @@
 // point lights' cube maps in one cube-map array.
 //
 // Variants (injected #defines): FILTER_NONE | FILTER_HW2X2 | FILTER_PCF | FILTER_POISSON
-// | FILTER_PCSS, with PCF_SIZE (the kernel's width in texels) for PCF and POISSON,
+// | FILTER_PCSS | FILTER_MOMENTS (moment_lookup.glsl), with PCF_SIZE (the kernel's width in texels) for PCF and POISSON,
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
@@ -53,6 +53,9 @@ float rawDepth(vec2 uv, float layer) {
 #endif
 #if defined(FILTER_PCSS)
 layout(binding = 3) uniform samplerCubeArray uShadowCubeDepths;
+#endif
+#if defined(FILTER_MOMENTS)
+#include "moment_lookup.glsl"
 #endif
 
 // Texels a lookup reaches from its centre, plus the bilinear footprint's one.
@@ -380,6 +383,9 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     vec2 origin = light.wsPosition.xy;
     vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);
     vec2 uv = origin + coord.xy * uvScale;
+#if defined(FILTER_MOMENTS)
+    return momentVisibility(light, clamp(uv, lo, hi), layer, reference);
+#endif
 #if defined(RECEIVER_PLANE)
     // Stored depth per unit of layer uv on the receiver's plane; `spread`: how far it moves
     // between a tap's point and the centres of the texels a bilinear or nearest read uses.

@@ -32,7 +32,16 @@ enum class ShadowFilter {
     Poisson,  // 16 taps of a rotated Poisson disc, pcfSize texels wide
     Pcss,     // percentage-closer soft shadows: a blocker search sizes a Poisson filter by the
               // penumbra of a light of lightRadius (lightAngle for directional lights)
+    // Filterable maps: moments of depth, blurred, read with one bilinear lookup
+    // (momentBlur, lightBleed). 2D maps only: point lights' cubes keep one comparison.
+    Evsm2,  // exponential variance shadow maps, the positive warp (Lauritzen and McCool 2008)
+    Evsm4,  // the same with the negative warp too: less light bleeding
+    Msm,    // moment shadow maps, 4 moments, Hamburger (Peters and Klein 2015)
 };
+// Whether `f` reads moments of depth instead of comparing depths.
+constexpr bool isMomentFilter(ShadowFilter f) {
+    return f == ShadowFilter::Evsm2 || f == ShadowFilter::Evsm4 || f == ShadowFilter::Msm;
+}
 
 // How a shadow map stores depth. Colour formats write gl_FragCoord.z from the
 // fragment shader into an 8-bit RGBA target and compare by hand in the main pass; native
@@ -98,6 +107,11 @@ struct ShadowOptions {
     CullMode cull = CullMode::Back;
     ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
     int pcfSize = 3;                          // kernel width for Pcf and Poisson, odd, 1..9
+    // Moment filters: the box blur's radius over the moments, texels (0..16: a (2r+1)^2
+    // box), and light-bleeding reduction: visibility below this share reads as shadow and
+    // the rest is stretched over [0, 1] (0..0.99).
+    int momentBlur = 1;
+    float lightBleed = 0.2f;
     float lightRadius = 0.25f;  // Pcss: emitter radius of spot, point and area lights, world units
     float lightAngle = 1.0f;    // Pcss: angular radius of directional lights, degrees, 0..20
     int mapSize = 0;            // texels per side for every light, 64..8192; 0 = each light's own

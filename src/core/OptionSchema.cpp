@@ -216,6 +216,20 @@ void addFiltering(std::vector<OptionSpec>& s) {
          .max = 9,
          .odd = true,
          NUMBER(shadow.pcfSize, int)});
+    add({.name = "moment-blur",
+         .group = "Filtering",
+         .doc = "evsm2, evsm4, msm: radius of the box blur over the moments (0: none)",
+         .unit = "texels",
+         .kind = K::Integer,
+         .max = 16,
+         NUMBER(shadow.momentBlur, int)});
+    add({.name = "light-bleed",
+         .group = "Filtering",
+         .doc = "evsm2, evsm4, msm: light-bleeding reduction, visibility below this reads as "
+                "shadow",
+         .kind = K::Real,
+         .max = 0.99,
+         NUMBER(shadow.lightBleed, float)});
     add({.name = "light-radius",
          .group = "Filtering",
          .doc = "pcss: emitter radius of spot, point and area lights",
@@ -310,6 +324,10 @@ void addConditions(std::vector<OptionSpec>& s) {
         const char* onlyWith;
     };
     static const Condition kConditions[] = {
+        {"moment-blur", [](const RenderOptions& o) { return isMomentFilter(o.shadow.filter); },
+         "--filter evsm2, evsm4 or msm"},
+        {"light-bleed", [](const RenderOptions& o) { return isMomentFilter(o.shadow.filter); },
+         "--filter evsm2, evsm4 or msm"},
         {"light-radius",
          [](const RenderOptions& o) { return o.shadow.filter == ShadowFilter::Pcss; },
          "--filter pcss"},

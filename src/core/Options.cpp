@@ -30,11 +30,11 @@ const std::pair<const char*, OutsidePolicy> kOutside[] = {{"lit", OutsidePolicy:
                                                           {"clamp", OutsidePolicy::Clamp}};
 const std::pair<const char*, CullMode> kCull[] = {
     {"back", CullMode::Back}, {"front", CullMode::Front}, {"none", CullMode::None}};
-const std::pair<const char*, ShadowFilter> kFilters[] = {{"none", ShadowFilter::None},
-                                                         {"hw2x2", ShadowFilter::Hw2x2},
-                                                         {"pcf", ShadowFilter::Pcf},
-                                                         {"poisson", ShadowFilter::Poisson},
-                                                         {"pcss", ShadowFilter::Pcss}};
+const std::pair<const char*, ShadowFilter> kFilters[] = {
+    {"none", ShadowFilter::None},   {"hw2x2", ShadowFilter::Hw2x2},
+    {"pcf", ShadowFilter::Pcf},     {"poisson", ShadowFilter::Poisson},
+    {"pcss", ShadowFilter::Pcss},   {"evsm2", ShadowFilter::Evsm2},
+    {"evsm4", ShadowFilter::Evsm4}, {"msm", ShadowFilter::Msm}};
 
 const std::pair<const char*, DepthFormat> kFormats[] = {
     {"r8", DepthFormat::R8},
@@ -142,6 +142,12 @@ std::vector<std::string> RenderOptions::validate() const {
     std::vector<std::string> problems;
     for (const OptionSpec& spec : optionSchema()) {
         if (std::string p = checkOption(spec, *this); !p.empty()) problems.push_back(std::move(p));
+    }
+    // Moments are made from a native depth map; an 8-bit encoded one holds too little.
+    if (isMomentFilter(shadow.filter) && isColourFormat(shadow.depthFormat)) {
+        problems.push_back(std::string("filter ") + toString(shadow.filter) +
+                           " needs a native --depth-format (depth16, depth24 or depth32f), not " +
+                           toString(shadow.depthFormat));
     }
     return problems;
 }

@@ -81,6 +81,18 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         case ShadowFilter::Pcss:
             defines.push_back("FILTER_PCSS");
             break;
+        case ShadowFilter::Evsm2:
+            defines.push_back("FILTER_MOMENTS");
+            defines.push_back("MOMENTS_EVSM2");
+            break;
+        case ShadowFilter::Evsm4:
+            defines.push_back("FILTER_MOMENTS");
+            defines.push_back("MOMENTS_EVSM4");
+            break;
+        case ShadowFilter::Msm:
+            defines.push_back("FILTER_MOMENTS");
+            defines.push_back("MOMENTS_MSM");
+            break;
     }
     if (kernelFilter(s)) {
         defines.push_back("PCF_SIZE " + std::to_string(s.pcfSize));
@@ -184,6 +196,18 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         glBindSampler(2, mRawSampler.id());
         glBindSampler(3, mRawSampler.id());
     }
+    // The moments of the moment filters: unit 6, filtered bilinearly.
+    if (in.shadowMoments) {
+        if (!mMomentSampler) {
+            mMomentSampler = gl::Sampler("shadow moments sampler");
+            mMomentSampler.set(GL_TEXTURE_MIN_FILTER, GL_LINEAR)
+                .set(GL_TEXTURE_MAG_FILTER, GL_LINEAR)
+                .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
+                .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        }
+        glBindTextureUnit(6, in.shadowMoments->id());
+        glBindSampler(6, mMomentSampler.id());
+    }
     // The view's depth for contact shadows: unit 5, read raw.
     if (in.viewDepth) {
         if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
@@ -208,6 +232,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
         glUniformMatrix4fv(8, 1, GL_FALSE, &u.viewFromClip[0][0]);
         glUniform1f(9, u.contactLength);
     }
+    if (u.in->shadowMoments) glUniform1f(12, u.lightBleed);
 }
 
 // Opaque and masked items in their order (the fast program, then the material one where
@@ -294,6 +319,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     u.depthAware = glm::vec3(options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
                              spacing(cubeFormat));
     u.contactLength = options.shadow.contactLength;
+    u.lightBleed = options.shadow.lightBleed;
     // The light order's range the draws use: every light, or one tile's.
     u.ranges = tiled.ranges();
 

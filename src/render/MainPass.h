@@ -44,6 +44,8 @@ struct MainPassInputs {
     bool hasCascades = false;                  // some light is cascaded this frame
     const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
+    // The 2D maps' blurred moments (MomentPass) for the moment filters; null otherwise.
+    const gl::Texture* shadowMoments = nullptr;
     // The view's depth at the output's size (ViewDepthPass) when contact shadows are on (and
     // shadows are): null otherwise.
     const gl::Texture* viewDepth = nullptr;
@@ -66,7 +68,7 @@ private:
     struct FrameUniforms {
         const MainPassInputs* in = nullptr;
         glm::mat4 worldFromView{1.0f}, viewFromClip{1.0f};
-        float shadowFactor = 0.0f, contactLength = 0.0f;
+        float shadowFactor = 0.0f, contactLength = 0.0f, lightBleed = 0.0f;
         glm::vec3 depthAware{0.0f};  // steps, map and cube stored-depth spacing
         glm::ivec4 ranges{0};        // the light order's range: every light, or one tile's
         int first = 0;
@@ -89,7 +91,8 @@ private:
     // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;
-    gl::Sampler mRawSampler;  // stored depth, NEAREST, no comparison (PCSS, contact shadows)
+    gl::Sampler mRawSampler;     // stored depth, NEAREST, no comparison (PCSS, contact shadows)
+    gl::Sampler mMomentSampler;  // moments: LINEAR, clamped (one bilinear lookup filters them)
     int mMapSamplerKey = -1, mCubeSamplerKey = -1;          // the filters they were made for
     gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame

@@ -14,6 +14,7 @@
 #include "render/GpuScene.h"
 #include "render/LightPlan.h"
 #include "render/MainPass.h"
+#include "render/MomentPass.h"
 #include "render/PassClock.h"
 #include "render/ShadowPass.h"
 #include "render/TiledLights.h"
@@ -43,6 +44,7 @@ struct Renderer::Impl {
     std::optional<gl::HeadlessContext> context;
     render::GpuScene scene;
     render::ShadowPass shadowPass;
+    render::MomentPass momentPass;  // filterable maps' moments (evsm2, evsm4, msm)
     render::MainPass mainPass;
     render::TiledLights tiled;
     render::DebugPass debugPass;
@@ -218,6 +220,14 @@ struct Renderer::Impl {
         for (const render::DrawItem& item : scene.items())
             stats.mainTriangles += item.indexCount / 3;
         stats.shadowMapBytes = plan.shadowed().empty() ? 0 : shadowPass.bytes();
+        const bool moments = isMomentFilter(options.shadow.filter) && options.shadow.enabled;
+        if (moments && shadowPass.mapArraySize() > 0) {
+            stats.momentPasses = momentPass.update(shadowPass, plan.shadowed(), shadowPass.drawn(),
+                                                   options.shadow, timer, &stats.passes);
+            stats.shadowMapBytes += momentPass.bytes();
+        } else if (!moments) {
+            momentPass.release();
+        }
         plan.finish(shadowPass);
 
         ensureTarget(options.width, options.height, options.shading.output);
@@ -250,6 +260,7 @@ struct Renderer::Impl {
         }
         in.shadowMaps = any2D ? &shadowPass.maps() : nullptr;
         in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
+        in.shadowMoments = any2D && moments ? &momentPass.moments() : nullptr;
         in.viewDepth = contact ? &viewDepth.depth() : nullptr;
         if (timer) timer->start();
         drawMain(s, options, in, visibility != nullptr);

@@ -352,7 +352,9 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
     mCulled = 0;
     bool any = false;
     std::size_t index2D = 0;
-    for (const ShadowedLight& light : lights) {
+    mDrawn.clear();
+    for (std::size_t li = 0; li < lights.size(); ++li) {
+        const ShadowedLight& light = lights[li];
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
         LayerState want{
             {},
@@ -383,6 +385,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         setDepthState(options, light.depthClamp);
         glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
         drawMap(scene, light, options, have.clipFromWorld);
+        mDrawn.push_back(int(li));
         ++stats.rendered;
         std::uint64_t triangles = 0;
         for (std::uint32_t index : mVisible) {

@@ -64,6 +64,8 @@ public:
     DepthFormat mapFormat() const { return mMapFormat; }
     const gl::Texture& cubes() const { return mCubes; }
     int mapArraySize() const { return mMaps ? mMaps.width() : 0; }
+    // The maps the last render() drew (the others were kept): indices into its `lights`.
+    const std::vector<int>& drawn() const { return mDrawn; }
     std::size_t bytes() const;
     // A light's map as 16-bit grey, top row first (darker = nearer); cubes unfold as a
     // horizontal strip of the six faces +X, -X, +Y, -Y, +Z, -Z.
@@ -116,6 +118,7 @@ private:
     std::vector<int> mSizes;                             // reused every frame
     std::vector<shadow::MapSlot> mSlots;                 // reused every frame
     std::vector<std::uint32_t> mVisible;                 // reused every frame
+    std::vector<int> mDrawn;                             // reused every frame
     gl::Texture mBareDepth;                              // bareDepthPass's target
     gl::Framebuffer mBareFramebuffer;
     int mCulled = 0;

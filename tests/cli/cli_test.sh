@@ -217,7 +217,7 @@ malformed_size)
     ;;
 bad_enum)
     run render --scene book-triangle --filter blurry --out "$work/a.png"
-    expect 2 "--filter: expected one of none, hw2x2, pcf, poisson, pcss, got 'blurry'"
+    expect 2 "--filter: expected one of none, hw2x2, pcf, poisson, pcss, evsm2, evsm4, msm, got 'blurry'"
     ;;
 cascades)
     # Auto and explicit counts, the share of each map the view uses, and bad values.

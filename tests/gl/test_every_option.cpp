@@ -30,8 +30,9 @@ std::vector<OptionCase> everyValue() {
         add(std::string("outside_") + toString(v), [v](RenderOptions& o) { o.shadow.outside = v; });
     for (CullMode v : {CullMode::Back, CullMode::Front, CullMode::None})
         add(std::string("cull_") + toString(v), [v](RenderOptions& o) { o.shadow.cull = v; });
-    for (ShadowFilter v : {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf,
-                           ShadowFilter::Poisson, ShadowFilter::Pcss})
+    for (ShadowFilter v :
+         {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf, ShadowFilter::Poisson,
+          ShadowFilter::Pcss, ShadowFilter::Evsm2, ShadowFilter::Evsm4, ShadowFilter::Msm})
         add(std::string("filter_") + toString(v), [v](RenderOptions& o) { o.shadow.filter = v; });
     for (int n : {1, 9})
         add("pcf_size_" + std::to_string(n), [n](RenderOptions& o) { o.shadow.pcfSize = n; });

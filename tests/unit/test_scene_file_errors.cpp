@@ -91,7 +91,8 @@ TEST(SceneFile, MoreMistakesAreRefusedWithThePath) {
         {R"({"gnomon-scene": 1, "options": {"fit-to": "sky"}})",
          "bad.json: options.fit-to: expected one of view-depth, boxes, got \"sky\""},
         {R"({"gnomon-scene": 1, "options": {"filter": "blurry"}})",
-         "bad.json: options.filter: expected one of none, hw2x2, pcf, poisson, pcss, got "
+         "bad.json: options.filter: expected one of none, hw2x2, pcf, poisson, pcss, evsm2, "
+         "evsm4, msm, got "
          "\"blurry\""},
         {R"({"gnomon-scene": 1, "options": {"size": "big"}})",
          "bad.json: options.size: expected \"WIDTHxHEIGHT\" such as \"512x512\", got \"big\""},

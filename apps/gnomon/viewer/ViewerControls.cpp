@@ -298,8 +298,8 @@ void Viewer::shadowMapControls() {
 
 void Viewer::filterControls() {
     if (ImGui::CollapsingHeader("Filter", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"filter", "pcf-size", "light-radius", "light-angle", "blend-shadows",
-                 "contact-length"});
+        options({"filter", "pcf-size", "moment-blur", "light-bleed", "light-radius", "light-angle",
+                 "blend-shadows", "contact-length"});
     }
     if (ImGui::CollapsingHeader("Cascades", ImGuiTreeNodeFlags_DefaultOpen)) {
         options({"cascades", "fit-to", "stabilise", "cascade-lambda", "cascade-blend"});

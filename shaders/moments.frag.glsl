@@ -1,0 +1,34 @@
+#version 450 core
+// The moment pass: one map's square of a layer, box-blurred in two passes. ROWS: stored
+// depth to moments (moments.glsl), averaged along x into a scratch texture; COLUMNS: the
+// scratch averaged along y into the moments array's layer. Taps stay inside the square
+// (clamped to its edge): neighbouring maps in the layer are other lights' or cascades'.
+#include "moments.glsl"
+
+#if defined(ROWS)
+layout(binding = 0) uniform sampler2DArray uDepths;  // the shadow maps, NEAREST, no comparison
+#else
+layout(binding = 0) uniform sampler2D uRows;  // the ROWS pass's output
+#endif
+layout(location = 0) uniform ivec4 uSquare;  // origin x, y, size, layer
+layout(location = 1) uniform int uRadius;    // the box's half width, texels
+layout(location = 2) uniform vec3 uDepthRange;  // near, far, 1 for a perspective map
+layout(location = 0) out vec4 oMoments;
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 lo = uSquare.xy, hi = uSquare.xy + uSquare.z - 1;
+    vec4 sum = vec4(0.0);
+    for (int k = -uRadius; k <= uRadius; ++k) {
+#if defined(ROWS)
+        ivec2 q = ivec2(clamp(p.x + k, lo.x, hi.x), p.y);
+        float stored = texelFetch(uDepths, ivec3(q, uSquare.w), 0).r;
+        sum += depthMoments(
+            momentDepth(stored, uDepthRange.x, uDepthRange.y, uDepthRange.z > 0.5));
+#else
+        ivec2 q = ivec2(p.x, clamp(p.y + k, lo.y, hi.y));
+        sum += texelFetch(uRows, q, 0);
+#endif
+    }
+    oMoments = sum / float(2 * uRadius + 1);
+}

@@ -1,0 +1,132 @@
+#include "render/MomentPass.h"
+
+#include <string>
+
+#include "gl/Program.h"
+#include "gnomon/Error.h"
+#include "render/PassClock.h"
+
+namespace gnomon::render {
+
+namespace {
+int filterIndex(ShadowFilter f) {
+    return f == ShadowFilter::Evsm2 ? 0 : f == ShadowFilter::Evsm4 ? 1 : 2;
+}
+}  // namespace
+
+const gl::Program& MomentPass::program(ShadowFilter filter, bool rows) {
+    gl::Program& p = mPrograms[filterIndex(filter)][rows ? 1 : 0];
+    if (p) return p;
+    static const char* const kDefines[] = {"MOMENTS_EVSM2", "MOMENTS_EVSM4", "MOMENTS_MSM"};
+    std::vector<std::string> defines = {kDefines[filterIndex(filter)]};
+    if (rows) defines.push_back("ROWS");
+    p = gl::buildProgram(
+        std::string("moments ") + toString(filter) + (rows ? " rows" : " columns"),
+        {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "moments.frag.glsl"}},
+        defines);
+    return p;
+}
+
+void MomentPass::allocate(int size, int layers) {
+    mLayerTargets.clear();
+    mMoments = gl::Texture::array2D("shadow moments", GL_RGBA32F, size, size, layers);
+    mRows = gl::Texture::plain2D("shadow moments (rows)", GL_RGBA32F, size, size);
+    if (!mMoments.allocated() || !mRows.allocated()) {
+        const std::size_t bytes =
+            std::size_t(size) * std::size_t(size) * 16u * (std::size_t(layers) + 1u);
+        throw Error(ErrorKind::Gl, "shadow moments: " + std::to_string(layers + 1) + " layers of " +
+                                       std::to_string(size) + "² RGBA32F need " +
+                                       std::to_string(bytes >> 20) +
+                                       " MiB, which the OpenGL driver refused; lower --map-size");
+    }
+    for (int layer = 0; layer < layers; ++layer) {
+        gl::Framebuffer fb("shadow moments layer " + std::to_string(layer));
+        glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, mMoments.id(), 0, layer);
+        glNamedFramebufferDrawBuffer(fb.id(), GL_COLOR_ATTACHMENT0);
+        fb.checkComplete();
+        mLayerTargets.push_back(std::move(fb));
+    }
+    mRowTarget = gl::Framebuffer("shadow moments (rows)");
+    glNamedFramebufferTexture(mRowTarget.id(), GL_COLOR_ATTACHMENT0, mRows.id(), 0);
+    glNamedFramebufferDrawBuffer(mRowTarget.id(), GL_COLOR_ATTACHMENT0);
+    mRowTarget.checkComplete();
+}
+
+void MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int radius) {
+    const glm::ivec4 square(light.origin, light.mapSize, light.layer);
+    glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
+    // Rows: stored depth to moments, averaged along x.
+    glBindFramebuffer(GL_FRAMEBUFFER, mRowTarget.id());
+    glUseProgram(program(mFilter, true).id());
+    glUniform4iv(0, 1, &square[0]);
+    glUniform1i(1, radius);
+    glUniform3f(2, light.frame.near, light.frame.far, light.frame.orthographic ? 0.0f : 1.0f);
+    glBindTextureUnit(0, pass.maps().id());
+    glBindSampler(0, mStored.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    // Columns: into the map's square of the moments array.
+    glBindFramebuffer(GL_FRAMEBUFFER, mLayerTargets[std::size_t(light.layer)].id());
+    glUseProgram(program(mFilter, false).id());
+    glUniform4iv(0, 1, &square[0]);
+    glUniform1i(1, radius);
+    glBindTextureUnit(0, mRows.id());
+    glBindSampler(0, 0);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+int MomentPass::update(const ShadowPass& pass, const std::vector<ShadowedLight>& lights,
+                       const std::vector<int>& drawn, const ShadowOptions& options,
+                       PassClock* clock, std::vector<PassTiming>* timings) {
+    const int size = pass.mapArraySize();
+    if (size == 0) return 0;
+    const int layers = pass.maps().layers();
+    bool all = options.filter != mFilter || options.momentBlur != mRadius;
+    if (!mMoments || mMoments.width() != size || mMoments.layers() != layers) {
+        allocate(size, layers);
+        all = true;
+    }
+    mFilter = options.filter;
+    mRadius = options.momentBlur;
+    if (!mStored) mStored = gl::Sampler::storedDepth("shadow moments: stored depth");
+    if (!mEmpty) mEmpty = gl::VertexArray("shadow moments (no attributes)");
+    glBindVertexArray(mEmpty.id());
+    glDisable(GL_DEPTH_TEST);
+    int passes = 0;
+    auto one = [&](const ShadowedLight& light) {
+        if (light.frame.kind == shadow::FrameKind::Cube) return;
+        if (clock) clock->start();
+        blur(pass, light, options.momentBlur);
+        passes += 2;
+        if (clock && timings) {
+            timings->push_back(clock->stop(
+                "moments light " + std::to_string(light.light) +
+                    (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : ""),
+                light.light, 0));
+        }
+    };
+    if (all) {
+        for (const ShadowedLight& light : lights)
+            one(light);
+    } else {
+        for (int i : drawn)
+            one(lights[std::size_t(i)]);
+    }
+    glEnable(GL_DEPTH_TEST);
+    return passes;
+}
+
+void MomentPass::release() {
+    mLayerTargets.clear();
+    mRowTarget = gl::Framebuffer();
+    mMoments = gl::Texture();
+    mRows = gl::Texture();
+    mRadius = -1;
+}
+
+std::size_t MomentPass::bytes() const {
+    if (!mMoments) return 0;
+    const std::size_t layer = std::size_t(mMoments.width()) * std::size_t(mMoments.height()) * 16u;
+    return layer * (std::size_t(mMoments.layers()) + 1u);
+}
+
+}  // namespace gnomon::render

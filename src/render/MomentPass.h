@@ -1,0 +1,46 @@
+// Filterable shadow maps (ShadowFilter::Evsm2, Evsm4, Msm): after the shadow pass, the
+// moments of each 2D map it drew are box-blurred in two passes (rows into a scratch texture,
+// then columns) into an RGBA32F array laid out as the depth maps are (same layers, same
+// squares), which the main pass reads with one bilinear lookup. Point lights' cubes have no
+// moments: their lookups keep one comparison.
+#pragma once
+#include <vector>
+
+#include "gl/Objects.h"
+#include "gnomon/Options.h"
+#include "render/ShadowPass.h"
+
+namespace gnomon::render {
+
+class PassClock;
+
+class MomentPass {
+public:
+    // Makes the moments of the 2D maps among `lights` that the shadow pass drew this frame
+    // (`drawn`: their indices into `lights`), or of every 2D map when the moments array is
+    // new or the moment settings changed. With `clock`, each map is timed into `timings`.
+    // Returns the passes drawn (two per map).
+    int update(const ShadowPass& pass, const std::vector<ShadowedLight>& lights,
+               const std::vector<int>& drawn, const ShadowOptions& options, PassClock* clock,
+               std::vector<PassTiming>* timings);
+    // Frees the moments (the filter no longer reads them).
+    void release();
+    const gl::Texture& moments() const { return mMoments; }
+    std::size_t bytes() const;
+
+private:
+    void allocate(int size, int layers);
+    void blur(const ShadowPass& pass, const ShadowedLight& light, int radius);
+    const gl::Program& program(ShadowFilter filter, bool rows);
+
+    gl::Texture mMoments, mRows;
+    std::vector<gl::Framebuffer> mLayerTargets;  // one per layer of mMoments
+    gl::Framebuffer mRowTarget;
+    gl::Sampler mStored;  // the depth maps as stored: NEAREST, no comparison
+    gl::VertexArray mEmpty;
+    gl::Program mPrograms[3][2];  // EVSM2, EVSM4, MSM x columns, rows
+    ShadowFilter mFilter = ShadowFilter::Pcf;
+    int mRadius = -1;
+};
+
+}  // namespace gnomon::render
