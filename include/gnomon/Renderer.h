@@ -46,7 +46,7 @@ struct FrameStats {
     int shadowPasses = 0;            // shadow maps rendered this frame (kept ones: 0)
     int shadowMaps = 0;              // maps in use (a cascaded light: one per cascade)
     std::size_t shadowMapBytes = 0;  // GPU memory held by shadow maps (and their moments)
-    int momentPasses = 0;  // evsm2, evsm4, msm: blur passes drawn this frame (2 per map made)
+    int momentPasses = 0;  // evsm2, evsm4, msm: moment passes drawn (per map made: 1, 2 blurred)
     std::uint64_t shadowTriangles = 0;  // triangles submitted to shadow maps (cubes: x 6)
     std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass
     int castersCulled = 0;              // caster draws skipped as outside a light's volume

@@ -12,6 +12,14 @@ namespace {
 int filterIndex(ShadowFilter f) {
     return f == ShadowFilter::Evsm2 ? 0 : f == ShadowFilter::Evsm4 ? 1 : 2;
 }
+
+[[noreturn]] void refused(int size, int layers) {
+    const std::size_t bytes = std::size_t(size) * std::size_t(size) * 16u * std::size_t(layers);
+    throw Error(ErrorKind::Gl, "shadow moments: " + std::to_string(layers) + " layer(s) of " +
+                                   std::to_string(size) + "² RGBA32F need " +
+                                   std::to_string(bytes >> 20) +
+                                   " MiB, which the OpenGL driver refused; lower --map-size");
+}
 }  // namespace
 
 const gl::Program& MomentPass::program(ShadowFilter filter, bool rows) {
@@ -30,15 +38,7 @@ const gl::Program& MomentPass::program(ShadowFilter filter, bool rows) {
 void MomentPass::allocate(int size, int layers) {
     mLayerTargets.clear();
     mMoments = gl::Texture::array2D("shadow moments", GL_RGBA32F, size, size, layers);
-    mRows = gl::Texture::plain2D("shadow moments (rows)", GL_RGBA32F, size, size);
-    if (!mMoments.allocated() || !mRows.allocated()) {
-        const std::size_t bytes =
-            std::size_t(size) * std::size_t(size) * 16u * (std::size_t(layers) + 1u);
-        throw Error(ErrorKind::Gl, "shadow moments: " + std::to_string(layers + 1) + " layers of " +
-                                       std::to_string(size) + "² RGBA32F need " +
-                                       std::to_string(bytes >> 20) +
-                                       " MiB, which the OpenGL driver refused; lower --map-size");
-    }
+    if (!mMoments.allocated()) refused(size, layers);
     for (int layer = 0; layer < layers; ++layer) {
         gl::Framebuffer fb("shadow moments layer " + std::to_string(layer));
         glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, mMoments.id(), 0, layer);
@@ -46,17 +46,26 @@ void MomentPass::allocate(int size, int layers) {
         fb.checkComplete();
         mLayerTargets.push_back(std::move(fb));
     }
+    mRows = gl::Texture();  // made for the first blur (allocateRows)
+    mRowTarget = gl::Framebuffer();
+}
+
+void MomentPass::allocateRows(int size) {
+    mRows = gl::Texture::plain2D("shadow moments (rows)", GL_RGBA32F, size, size);
+    if (!mRows.allocated()) refused(size, 1);
     mRowTarget = gl::Framebuffer("shadow moments (rows)");
     glNamedFramebufferTexture(mRowTarget.id(), GL_COLOR_ATTACHMENT0, mRows.id(), 0);
     glNamedFramebufferDrawBuffer(mRowTarget.id(), GL_COLOR_ATTACHMENT0);
     mRowTarget.checkComplete();
 }
 
-void MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int radius) {
+int MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int radius) {
     const glm::ivec4 square(light.origin, light.mapSize, light.layer);
     glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
-    // Rows: stored depth to moments, averaged along x.
-    glBindFramebuffer(GL_FRAMEBUFFER, mRowTarget.id());
+    // Rows: stored depth to moments, averaged along x; without a blur, straight into the
+    // moments array (one pass).
+    const GLuint layerTarget = mLayerTargets[std::size_t(light.layer)].id();
+    glBindFramebuffer(GL_FRAMEBUFFER, radius > 0 ? mRowTarget.id() : layerTarget);
     glUseProgram(program(mFilter, true).id());
     glUniform4iv(0, 1, &square[0]);
     glUniform1i(1, radius);
@@ -64,14 +73,16 @@ void MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int ra
     glBindTextureUnit(0, pass.maps().id());
     glBindSampler(0, mStored.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (radius == 0) return 1;
     // Columns: into the map's square of the moments array.
-    glBindFramebuffer(GL_FRAMEBUFFER, mLayerTargets[std::size_t(light.layer)].id());
+    glBindFramebuffer(GL_FRAMEBUFFER, layerTarget);
     glUseProgram(program(mFilter, false).id());
     glUniform4iv(0, 1, &square[0]);
     glUniform1i(1, radius);
     glBindTextureUnit(0, mRows.id());
     glBindSampler(0, 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    return 2;
 }
 
 int MomentPass::update(const ShadowPass& pass, const std::vector<ShadowedLight>& lights,
@@ -85,6 +96,7 @@ int MomentPass::update(const ShadowPass& pass, const std::vector<ShadowedLight>&
         allocate(size, layers);
         all = true;
     }
+    if (options.momentBlur > 0 && (!mRows || mRows.width() != size)) allocateRows(size);
     mFilter = options.filter;
     mRadius = options.momentBlur;
     if (!mStored) mStored = gl::Sampler::storedDepth("shadow moments: stored depth");
@@ -95,8 +107,7 @@ int MomentPass::update(const ShadowPass& pass, const std::vector<ShadowedLight>&
     auto one = [&](const ShadowedLight& light) {
         if (light.frame.kind == shadow::FrameKind::Cube) return;
         if (clock) clock->start();
-        blur(pass, light, options.momentBlur);
-        passes += 2;
+        passes += blur(pass, light, options.momentBlur);
         if (clock && timings) {
             timings->push_back(clock->stop(
                 "moments light " + std::to_string(light.light) +
@@ -126,7 +137,7 @@ void MomentPass::release() {
 std::size_t MomentPass::bytes() const {
     if (!mMoments) return 0;
     const std::size_t layer = std::size_t(mMoments.width()) * std::size_t(mMoments.height()) * 16u;
-    return layer * (std::size_t(mMoments.layers()) + 1u);
+    return layer * (std::size_t(mMoments.layers()) + (mRows ? 1u : 0u));
 }
 
 }  // namespace gnomon::render

@@ -1,8 +1,8 @@
 // Filterable shadow maps (ShadowFilter::Evsm2, Evsm4, Msm): after the shadow pass, the
-// moments of each 2D map it drew are box-blurred in two passes (rows into a scratch texture,
-// then columns) into an RGBA32F array laid out as the depth maps are (same layers, same
-// squares), which the main pass reads with one bilinear lookup. Point lights' cubes have no
-// moments: their lookups keep one comparison.
+// moments of each 2D map it drew go into an RGBA32F array laid out as the depth maps are
+// (same layers, same squares), which the main pass reads with one bilinear lookup; with a
+// blur, box-blurred in two passes (rows into a scratch texture, then columns). Point lights' cubes
+// have no moments: their lookups keep one comparison.
 #pragma once
 #include <vector>
 
@@ -19,7 +19,7 @@ public:
     // Makes the moments of the 2D maps among `lights` that the shadow pass drew this frame
     // (`drawn`: their indices into `lights`), or of every 2D map when the moments array is
     // new or the moment settings changed. With `clock`, each map is timed into `timings`.
-    // Returns the passes drawn (two per map).
+    // Returns the passes drawn (per map: one, or two with a blur).
     int update(const ShadowPass& pass, const std::vector<ShadowedLight>& lights,
                const std::vector<int>& drawn, const ShadowOptions& options, PassClock* clock,
                std::vector<PassTiming>* timings);
@@ -30,7 +30,9 @@ public:
 
 private:
     void allocate(int size, int layers);
-    void blur(const ShadowPass& pass, const ShadowedLight& light, int radius);
+    void allocateRows(int size);
+    // One map's moments, blurred by `radius`: the passes drawn (1 without a blur, else 2).
+    int blur(const ShadowPass& pass, const ShadowedLight& light, int radius);
     const gl::Program& program(ShadowFilter filter, bool rows);
 
     gl::Texture mMoments, mRows;

@@ -41,13 +41,13 @@ TEST_P(MomentFilter, MomentsAreMadeOnlyForMapsDrawn) {
     (void)r.render(s, o);
     const FrameStats first = r.lastFrameStats();
     ASSERT_GE(first.shadowPasses, 1);
-    EXPECT_EQ(first.momentPasses, 2 * first.shadowPasses);
+    EXPECT_EQ(first.momentPasses, first.shadowPasses) << "one pass a map without a blur";
     (void)r.render(s, o);
     EXPECT_EQ(r.lastFrameStats().shadowPasses, 0);
     EXPECT_EQ(r.lastFrameStats().momentPasses, 0) << "kept maps keep their moments";
-    // A wider blur remakes the moments of the kept maps.
+    // A blur remakes the moments of the kept maps, in two passes a map.
     RenderOptions wider = o;
-    wider.shadow.momentBlur = 3;
+    wider.shadow.momentBlur = 2;
     (void)r.render(s, wider);
     EXPECT_EQ(r.lastFrameStats().momentPasses, 2 * first.shadowPasses);
 }
@@ -57,9 +57,9 @@ INSTANTIATE_TEST_SUITE_P(Filters, MomentFilter,
                                            ShadowFilter::Msm),
                          [](const auto& info) { return std::string(toString(info.param)); });
 
-// Light bleeding: with its reduction off, the two-moment bound lets light through where the
-// high bar's shadow edge crosses the low plate's shadow; four moments (EVSM4, MSM) bound it
-// far tighter. Leaks measured at 192^2: evsm2 0.20 %, evsm4 and msm about 0.06 %.
+// Light bleeding: with its reduction off, the two-moment bound lets light into the edge of
+// the high plate's shadow, where a footprint mixes the plate's depth with the ground's far
+// below; four moments (EVSM4, MSM) bound it far tighter (at 384^2: 0.19 % against 0.08 %).
 TEST(MomentFilters, FourMomentsBleedLessThanTwo) {
     const Scene s = loadSceneFile(GNOMON_EXAMPLES_DIR "/layered-casters.json");
     auto leak = [&](ShadowFilter f) {

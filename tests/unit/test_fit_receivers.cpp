@@ -18,10 +18,10 @@ Aabb box(glm::vec3 lo, glm::vec3 hi) {
 }
 
 // A 40 x 40 floor at y = 0, one 2 x 2 x 2 block standing on it at the origin, and a camera
-// looking down at the floor around `centre` with a 40 degree field of view from 10 above:
-// it sees the floor out to 10 tan(20 deg) = 3.64 either side. The floor casts shadows only
-// when `floorCasts` (a box cannot tell that a flat floor never shadows itself).
-shadow::FitScene blockOnFloor(glm::vec3 centre, bool floorCasts = false) {
+// looking down at the floor around `centre` with a 40 degree field of view from `height`
+// above (10: it sees the floor out to 10 tan(20 deg) = 3.64 either side). The floor casts shadows
+// only when `floorCasts` (a box cannot tell that a flat floor never shadows itself).
+shadow::FitScene blockOnFloor(glm::vec3 centre, bool floorCasts = false, float height = 10.0f) {
     shadow::FitScene s;
     const Aabb floor = box({-20, -0.1f, -20}, {20, 0, 20});
     const Aabb block = box({-1, 0, -1}, {1, 2, 1});
@@ -30,7 +30,7 @@ shadow::FitScene blockOnFloor(glm::vec3 centre, bool floorCasts = false) {
     s.receivers = {floor, block};
     s.viewKnown = true;
     Camera cam;
-    cam.eye = centre + glm::vec3(0, 10, 0.01f);
+    cam.eye = centre + glm::vec3(0, height, 0.01f);
     cam.centre = centre;
     cam.fovyDegrees = 40.0f;
     cam.near = 0.5f;
@@ -226,6 +226,75 @@ TEST(FitReceivers, SmallCameraMovesKeepTheSameCamera) {
         shadow::lightCameraFrame(sunAlong(dir), Camera{}, blockOnFloor({0.5001f, 0, 0}), 1024);
     ASSERT_TRUE(a.valid && b.valid);
     EXPECT_PRED_FORMAT3(test::matNear, a.clipFromWorld(), b.clipFromWorld(), 0.0f);
+}
+
+// A stabilised fit that follows a moving view keeps its extent from frame to frame
+// (shadow::HeldExtent): unchanged while it covers what the view needs and is not much
+// looser than a fresh fit; refitted when the view leaves it, when it grows too loose, or
+// when the light turns. The floor casts, so the map covers the floor the view sees.
+shadow::FitScene viewFrom(glm::vec3 centre, float height) {
+    return blockOnFloor(centre, true, height);
+}
+
+float width(const shadow::LightCameraFrame& f) {
+    return 2.0f / f.clipFromLight[0][0];
+}
+
+const glm::vec3 kDown(0.3f, -1.0f, 0.2f);
+
+// A view that moves a little, whose needs stay inside the held box: the very same camera.
+TEST(HeldExtent, SmallMovesKeepTheHeldCamera) {
+    shadow::HeldExtent held;
+    const auto a = shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({0, 0, 0}, 10.0f),
+                                            1024, &held);
+    ASSERT_TRUE(a.valid && held.valid);
+    // Lower by 3 %: the view needs a little less floor, all of it inside the held box.
+    const auto b =
+        shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({0, 0, 0}, 9.7f), 1024, &held);
+    ASSERT_TRUE(b.valid);
+    EXPECT_PRED_FORMAT3(test::matNear, a.clipFromWorld(), b.clipFromWorld(), 0.0f);
+    // Without the held extent the same view is fitted afresh, tighter.
+    const auto fresh =
+        shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({0, 0, 0}, 9.7f), 1024);
+    EXPECT_LT(width(fresh), width(b));
+}
+
+// A view that slides beyond the held box: a new camera that covers the new view.
+TEST(HeldExtent, LeavingTheHeldBoxRefits) {
+    shadow::HeldExtent held;
+    const auto a = shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({0, 0, 0}, 10.0f),
+                                            1024, &held);
+    const auto b = shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({5, 0, 0}, 10.0f),
+                                            1024, &held);
+    ASSERT_TRUE(a.valid && b.valid);
+    const auto fresh =
+        shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({5, 0, 0}, 10.0f), 1024);
+    EXPECT_PRED_FORMAT3(test::matNear, fresh.clipFromWorld(), b.clipFromWorld(), 0.0f);
+}
+
+// A view that comes much closer needs a much smaller box: beyond kHoldSlack the held box
+// would waste the map's texels, so it is refitted.
+TEST(HeldExtent, ALooseHeldBoxRefits) {
+    shadow::HeldExtent held;
+    const auto a = shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({0, 0, 0}, 10.0f),
+                                            1024, &held);
+    const auto b =
+        shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({0, 0, 0}, 6.0f), 1024, &held);
+    ASSERT_TRUE(a.valid && b.valid);
+    EXPECT_LT(width(b), width(a) / shadow::kHoldSlack);
+}
+
+// A turned light: the held box belongs to the old light space and is not reused.
+TEST(HeldExtent, ATurnedLightRefits) {
+    shadow::HeldExtent held;
+    (void)shadow::lightCameraFrame(sunAlong(kDown), Camera{}, viewFrom({0, 0, 0}, 10.0f), 1024,
+                                   &held);
+    const glm::vec3 turned(0.31f, -1.0f, 0.2f);
+    const auto b = shadow::lightCameraFrame(sunAlong(turned), Camera{}, viewFrom({0, 0, 0}, 10.0f),
+                                            1024, &held);
+    const auto fresh =
+        shadow::lightCameraFrame(sunAlong(turned), Camera{}, viewFrom({0, 0, 0}, 10.0f), 1024);
+    EXPECT_PRED_FORMAT3(test::matNear, fresh.clipFromWorld(), b.clipFromWorld(), 0.0f);
 }
 
 }  // namespace
