@@ -87,6 +87,7 @@ struct Run {
     std::uint64_t shadowTriangles = 0, mainTriangles = 0;
     std::size_t shadowBytes = 0;
     int maps = 0, mapSize = 0;
+    int momentPasses = 0;  // the moment filters' passes in the last frame measured
 };
 
 Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options,
@@ -124,6 +125,7 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
         run.mainTriangles = stats.mainTriangles;
         run.shadowBytes = stats.shadowMapBytes;
         run.maps = stats.shadowMaps;
+        run.momentPasses = stats.momentPasses;
     }
     for (PassResult& p : run.passes)
         p.ms = spreadOf(perPass[p.name]);
@@ -185,6 +187,7 @@ nlohmann::json runJson(const Run& r) {
             {"map_size", r.mapSize},
             {"maps", r.maps},
             {"shadow_map_bytes", r.shadowBytes},
+            {"moment_passes", r.momentPasses},
             {"shadow_triangles", r.shadowTriangles},
             {"main_triangles", r.mainTriangles},
             {"passes", passes}};
@@ -212,7 +215,9 @@ void printRun(const Run& r) {
                     r.mainFloor.median, r.mainFloor.p10, r.mainFloor.p90,
                     r.main.median / r.mainFloor.median);
     }
-    std::printf("shadow maps: %d, %.1f MiB\n", r.maps, double(r.shadowBytes) / (1024.0 * 1024.0));
+    std::printf("shadow maps: %d, %.1f MiB", r.maps, double(r.shadowBytes) / (1024.0 * 1024.0));
+    if (r.momentPasses > 0) std::printf(", %d moment pass(es) a frame", r.momentPasses);
+    std::printf("\n");
 }
 
 // A sweep's results: a table on stdout, and bench.json, sweep.csv and sweep.svg.

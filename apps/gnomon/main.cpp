@@ -146,6 +146,10 @@ int runRender(const RenderArgs& args, bool verbose) {
                      (unsigned long long)stats.shadowTriangles, stats.castersCulled,
                      (unsigned long long)stats.mainTriangles, std::max(1, stats.lightTiles),
                      double(stats.shadowMapBytes) / (1024.0 * 1024.0));
+        if (stats.momentPasses > 0) {
+            std::fprintf(stderr, "gnomon: %d moment pass(es) for the filterable maps\n",
+                         stats.momentPasses);
+        }
         for (const gnomon::MapUsage& u : renderer.mapUsage()) {
             std::fprintf(stderr, "gnomon: light %d%s: %d² map, the view uses %.0f %% of it\n",
                          u.light,

@@ -66,7 +66,13 @@ names = [p["name"] for p in r["passes"]]
 assert names == ["view depth", "shadow light 0", "main", "read-back"], names
 for p in r["passes"]:
     assert set(p) == {"name", "ms", "triangles", "fragments"}, p
+assert r["moment_passes"] == 0, r["moment_passes"]
 PY
+    # The moment filters' pass is timed and counted beside the shadow pass.
+    run bench --scene tutorial-room --size 64x64 --frames 1 --warmup 0 --filter msm \
+        --out-dir "$work/bm"
+    expect 0 "moments light 0"
+    expect 0 "1 moment pass(es) a frame"
     run bench --scene tutorial-room --size 64x64 --frames 1 --warmup 0 --sweep map-size \
         --values 256,512 --out-dir "$work/s"
     expect 0 "sweep.svg"
