@@ -15,7 +15,7 @@ const float kEvsmNegative = 5.0;
 // already; for perspective ones (spot lights) the distance it stands for, mapped to [0, 1]
 // over [near, far]. Stored perspective depth crowds towards 1 far from the light, where the
 // warp would then see no difference between a caster and its receiver (Sponza's capitals
-// under a spot leaked 5x what PCF does).
+// under a spot leaked 6x what PCF does: 0.91 % against 0.15 %).
 float momentDepth(float stored, float near, float far, bool perspective) {
     if (!perspective) return stored;
     float z = near * far / (far - stored * (far - near));
