@@ -1,6 +1,7 @@
 #version 450 core
 // Shadow pass: scene casters seen from the light camera; only depth is written.
-// ALPHA_TEST: also the texture coordinates and alpha rule of masked and blended casters.
+// ALPHA_TEST: also the texture coordinates and alpha rule of masked and blended casters;
+// TRANSMITTANCE: and their colour (render/TransmittancePass.h).
 #include "scene_data.glsl"
 
 layout(location = 0) in vec3 msPosition;
@@ -9,11 +10,19 @@ layout(location = 1) uniform mat4 uClipFromWorld;  // the light camera
 #ifdef ALPHA_TEST
 #include "alpha_test_vertex.glsl"
 #endif
+#ifdef TRANSMITTANCE
+// The transmittance pass (coloured shadows): the caster's colour as the main pass has it.
+layout(location = 2) in vec3 vertexColour;
+out vec3 vColour;
+#endif
 
 void main() {
     ObjectData o = objects[aObject];
     gl_Position = uClipFromWorld * (o.worldFromModel * vec4(msPosition, 1.0));
 #ifdef ALPHA_TEST
     passAlphaRule(o);
+#endif
+#ifdef TRANSMITTANCE
+    vColour = vertexColour * o.baseColour.rgb;
 #endif
 }

@@ -13,7 +13,8 @@
 // FLOOR (gnomon bench's reference): the same lights and shadow lookups with one diffuse term
 // per light and nothing else, the least a main pass with these shadows can do.
 // CONTACT_SHADOWS: each shadowed light's visibility also marched through the view's depth
-// (contact_shadows.glsl). DITHER_LINEAR / DITHER_SRGB: ordered dithering of the output.
+// (contact_shadows.glsl). COLOURED_SHADOWS: light through blended casters tinted
+// (transmittance_lookup.glsl). DITHER_LINEAR / DITHER_SRGB: ordered dithering of the output.
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
@@ -56,12 +57,16 @@ layout(location = 11) uniform vec4 uCascadeDepth;
 #ifdef VISIBILITY_PASS
 layout(early_fragment_tests) in;
 layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
+#ifdef COLOURED_SHADOWS
+layout(rgba32f, binding = 1) uniform writeonly image2DArray uTintRecord;  // gTint per light
+#endif
 #endif
 
 // Per fragment, shared by every light's shading.
 struct Surface {
     bool unlit;
     bool receives;
+    bool blended;  // alpha-blended: takes no tint (its own would speckle it)
     vec3 vsN, wsN, base, vsToEye;
 };
 
@@ -96,11 +101,12 @@ void lightAt(LightData light, out vec3 vsToLight, out float falloff) {
     }
 }
 
-// Adds one light's Blinn-Phong term, as visible as `visibility` says.
-void shade(LightData light, Surface s, vec3 vsToLight, float falloff, float visibility,
-           inout vec3 lit, inout float factor) {
+// Adds one light's Blinn-Phong term, as visible as `visibility` says (per channel: coloured
+// shadows tint it).
+void shade(LightData light, Surface s, vec3 vsToLight, float falloff, vec3 visibility,
+           inout vec3 lit, inout vec3 factor) {
     if (s.unlit) {
-        factor *= mix(uShadowFactor, 1.0, visibility);
+        factor *= mix(vec3(uShadowFactor), vec3(1.0), visibility);
         return;
     }
     float nDotL = max(dot(s.vsN, vsToLight), 0.0);
@@ -109,7 +115,7 @@ void shade(LightData light, Surface s, vec3 vsToLight, float falloff, float visi
     vec3 contribution = light.colour.rgb * falloff * (nDotL * s.base + spec);
 #ifdef SHADOWED_FACTOR
     lit += contribution;
-    factor *= mix(uShadowFactor, 1.0, visibility);
+    factor *= mix(vec3(uShadowFactor), vec3(1.0), visibility);
 #else
     lit += visibility * contribution;
 #endif
@@ -119,7 +125,21 @@ void shade(LightData light, Surface s, vec3 vsToLight, float falloff, float visi
 void recordVisibility(LightData light, float visibility) {
     imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)),
                vec4(visibility, gTexelWorld, 0.0, 0.0));
+#ifdef COLOURED_SHADOWS
+    imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)), vec4(gTint, 1.0));
+#endif
 }
+#endif
+
+#ifdef COLOURED_SHADOWS
+// A blended surface lies where its own transmittance is stored: tinted by itself wherever
+// rounding puts it behind that depth, so blended surfaces take no tint (as Wicked Engine's
+// transparent shadow maps do).
+#define LIGHT_THROUGH(visibility) (s.blended ? vec3(visibility) : visibility * gTint)
+#define RESET_TINT gTint = vec3(1.0);
+#else
+#define LIGHT_THROUGH(visibility) vec3(visibility)
+#define RESET_TINT
 #endif
 
 // One loop per kind of light, over its range of the light order (uLightRanges: ends of the
@@ -137,11 +157,12 @@ void recordVisibility(LightData light, float visibility) {
         if (s.receives) {                                                               \
             vec3 wsToLight = mat3(uWorldFromView) * vsToLight;                           \
             gTexelWorld = 0.0;                                                          \
+            RESET_TINT                                                                  \
             visibility = LOOKUP(light, vIn.wsPosition, s.wsN, wsToLight, CASCADE_DEPTH);     \
             CONTACT(light, visibility, vsToLight);                                      \
             RECORD(light, visibility);                                                  \
         }                                                                               \
-        shade(light, s, vsToLight, falloff, visibility, lit, factor);                   \
+        shade(light, s, vsToLight, falloff, LIGHT_THROUGH(visibility), lit, factor);    \
     }
 
 #ifdef CONTACT_SHADOWS
@@ -269,6 +290,7 @@ void main() {
     Surface s;
     s.unlit = vIn.material.z > 0.5;
     s.receives = vIn.receives > 0.5;
+    s.blended = false;
     s.vsN = normalize(vIn.vsNormal);
     s.wsN = normalize(vIn.wsNormal);
     if (vIn.material.w > 0.5 && !gl_FrontFacing) {  // double-sided: light the side we see
@@ -284,17 +306,18 @@ void main() {
     alpha = vIn.alpha.x * texel.a;
     if (vIn.alpha.y == 1.0 && alpha < vIn.alpha.z) discard;
     if (vIn.alpha.y != 2.0) alpha = 1.0;
+    s.blended = vIn.alpha.y == 2.0;
 #endif
     s.vsToEye = normalize(-vIn.vsPosition);
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
-    float factor = 1.0;
+    vec3 factor = vec3(1.0);
     for (int k = uLightFirst; k < UNSHADOWED_END; ++k) {
         LightData light = lights[lightRecord(k)];
         vec3 vsToLight;
         float falloff;
         lightAt(light, vsToLight, falloff);
-        shade(light, s, vsToLight, falloff, 1.0, lit, factor);
+        shade(light, s, vsToLight, falloff, vec3(1.0), lit, factor);
     }
     SHADOWED_KINDS(SHADOWED_LOOP)
     vec3 colour = lit * factor;

@@ -5,7 +5,8 @@
 //
 // Variants (injected #defines): FILTER_NONE | FILTER_HW2X2 | FILTER_PCF | FILTER_POISSON
 // | FILTER_PCSS | FILTER_MOMENTS (moment_lookup.glsl), with PCF_SIZE (the kernel's width in texels) for PCF and POISSON,
-// OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit).
+// OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit),
+// COLOURED_SHADOWS (each lookup also sets gTint: transmittance_lookup.glsl).
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
 // Depth-aware tolerance: x steps of the stored depth's spacing; y, z that spacing
@@ -56,6 +57,9 @@ layout(binding = 3) uniform samplerCubeArray uShadowCubeDepths;
 #endif
 #if defined(FILTER_MOMENTS)
 #include "moment_lookup.glsl"
+#endif
+#if defined(COLOURED_SHADOWS)
+#include "transmittance_lookup.glsl"
 #endif
 
 // Texels a lookup reaches from its centre, plus the bilinear footprint's one.
@@ -269,6 +273,9 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     float stored = 0.5 * ndc + 0.5;
     float reference = stored - depthTolerance(light, stored, uDepthAware.z);
     float layer = light.colour.w;
+#if defined(COLOURED_SHADOWS)
+    gTint = cubeTint(toPoint, layer, reference);
+#endif
     // Two axes spanning the face of the major axis; one texel is 2 / size at unit distance.
     vec3 u = a.x >= a.y && a.x >= a.z ? vec3(0, 1, 0) : vec3(1, 0, 0);
     vec3 v = a.z >= a.x && a.z >= a.y ? vec3(0, 1, 0) : vec3(0, 0, 1);
@@ -383,6 +390,9 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     vec2 origin = light.wsPosition.xy;
     vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);
     vec2 uv = origin + coord.xy * uvScale;
+#if defined(COLOURED_SHADOWS)
+    gTint = mapTint(uv, layer, reference, origin, uvScale, texelUv);
+#endif
 #if defined(FILTER_MOMENTS)
     return momentVisibility(light, clamp(uv, lo, hi), layer, reference);
 #endif
@@ -467,7 +477,13 @@ float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 ws
     gCascade = chosen;
     float v = mapVisibility(lights[first + chosen], wsPosition, wsNormal, wsToLight);
     if (t > 0.0) {
+#if defined(COLOURED_SHADOWS)
+        vec3 tint = gTint;
         v = mix(v, mapVisibility(lights[first + chosen + 1], wsPosition, wsNormal, wsToLight), t);
+        gTint = mix(tint, gTint, t);
+#else
+        v = mix(v, mapVisibility(lights[first + chosen + 1], wsPosition, wsNormal, wsToLight), t);
+#endif
     }
     return v;
 }

@@ -87,7 +87,8 @@ struct Run {
     std::uint64_t shadowTriangles = 0, mainTriangles = 0;
     std::size_t shadowBytes = 0;
     int maps = 0, mapSize = 0;
-    int momentPasses = 0;  // the moment filters' passes in the last frame measured
+    int momentPasses = 0;         // the moment filters' passes in the last frame measured
+    int transmittancePasses = 0;  // coloured shadows' transmittance maps drawn, the same
 };
 
 Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options,
@@ -126,6 +127,7 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
         run.shadowBytes = stats.shadowMapBytes;
         run.maps = stats.shadowMaps;
         run.momentPasses = stats.momentPasses;
+        run.transmittancePasses = stats.transmittancePasses;
     }
     for (PassResult& p : run.passes)
         p.ms = spreadOf(perPass[p.name]);
@@ -188,6 +190,7 @@ nlohmann::json runJson(const Run& r) {
             {"maps", r.maps},
             {"shadow_map_bytes", r.shadowBytes},
             {"moment_passes", r.momentPasses},
+            {"transmittance_passes", r.transmittancePasses},
             {"shadow_triangles", r.shadowTriangles},
             {"main_triangles", r.mainTriangles},
             {"passes", passes}};
@@ -217,6 +220,9 @@ void printRun(const Run& r) {
     }
     std::printf("shadow maps: %d, %.1f MiB", r.maps, double(r.shadowBytes) / (1024.0 * 1024.0));
     if (r.momentPasses > 0) std::printf(", %d moment pass(es) a frame", r.momentPasses);
+    if (r.transmittancePasses > 0) {
+        std::printf(", %d transmittance pass(es) a frame", r.transmittancePasses);
+    }
     std::printf("\n");
 }
 

@@ -152,6 +152,7 @@ int runScore(const ScoreArgs& args, bool verbose) {
     OutputSet out(args.outDir, "--out-dir");
     writePng(out.file("render.png"), r.render);
     writePng(out.file("errors.png"), r.errors);
+    if (!r.tintErrors.empty()) writePng(out.file("tint-errors.png"), r.tintErrors);
     writeTextFile(out.file("score.json"), toJson(r, scene.name, options));
     out.keep();
 
@@ -166,7 +167,15 @@ int runScore(const ScoreArgs& args, bool verbose) {
     for (const ShadowScore& s : r.lights)
         printRow(s);
     printRow(r.overall);
-    std::printf("wrote %s/render.png, errors.png, score.json\n", args.outDir.c_str());
+    if (options.shadow.blendShadows == BlendShadows::Coloured) {
+        std::printf(
+            "coloured shadows: transmitted light off by %.2f/255 on average over %ld "
+            "tinted pixel x light pairs (%.2f/255 over the %ld away from edges)\n",
+            255.0 * r.tint.meanError, r.tint.cells, 255.0 * r.tint.meanErrorOutsideBand,
+            r.tint.cellsOutsideBand);
+    }
+    std::printf("wrote %s/render.png, errors.png, %sscore.json\n", args.outDir.c_str(),
+                r.tintErrors.empty() ? "" : "tint-errors.png, ");
     if (args.maxError >= 0.0 && r.overall.misclassified > args.maxError) {
         std::fprintf(stderr, "gnomon: misclassified %.4f%% exceeds --max-error %.4f%%\n",
                      100.0 * r.overall.misclassified, 100.0 * args.maxError);

@@ -150,6 +150,10 @@ int runRender(const RenderArgs& args, bool verbose) {
             std::fprintf(stderr, "gnomon: %d moment pass(es) for the filterable maps\n",
                          stats.momentPasses);
         }
+        if (stats.transmittancePasses > 0) {
+            std::fprintf(stderr, "gnomon: %d transmittance pass(es) for the coloured shadows\n",
+                         stats.transmittancePasses);
+        }
         for (const gnomon::MapUsage& u : renderer.mapUsage()) {
             std::fprintf(stderr, "gnomon: light %d%s: %d² map, the view uses %.0f %% of it\n",
                          u.light,

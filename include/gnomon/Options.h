@@ -66,6 +66,8 @@ enum class BlendShadows {
     None,      // no shadow at all
     Dithered,  // a share of alpha of the map's texels is covered (hashed per texel), so
                // filtered lookups see partial shadow; the reference transmits 1 - alpha
+    Coloured,  // light passing the material is tinted: a transmittance map per light beside
+               // its depth map, T = (1 - alpha) mix(1, colour, alpha) per blended surface
 };
 
 // What a fitted directional (or area) light's map is made to cover.

@@ -45,8 +45,9 @@ struct PassTiming {
 struct FrameStats {
     int shadowPasses = 0;            // shadow maps rendered this frame (kept ones: 0)
     int shadowMaps = 0;              // maps in use (a cascaded light: one per cascade)
-    std::size_t shadowMapBytes = 0;  // GPU memory held by shadow maps (and their moments)
+    std::size_t shadowMapBytes = 0;  // GPU memory held by shadow maps (moments, transmittance)
     int momentPasses = 0;  // evsm2, evsm4, msm: moment passes drawn (per map made: 1, 2 blurred)
+    int transmittancePasses = 0;        // --blend-shadows coloured: transmittance maps drawn
     std::uint64_t shadowTriangles = 0;  // triangles submitted to shadow maps (cubes: x 6)
     std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass
     int castersCulled = 0;              // caster draws skipped as outside a light's volume
@@ -70,6 +71,9 @@ struct ShadowVisibility {
     int width = 0, height = 0, lights = 0;
     std::vector<float> visibility;  // 0 shadowed .. 1 lit
     std::vector<float> texelWorld;  // world size of the map texel the lookup used
+    // --blend-shadows coloured only (else empty): RGB transmittance per pixel x light (three
+    // floats at 3 * cell), 1 where no blended caster tints the light.
+    std::vector<float> tint;
 };
 
 // A texture in the renderer's OpenGL context, for a UI toolkit drawing in the same context

@@ -38,13 +38,25 @@ struct ShadowScore {
     double meanAbsError = 0.0;  // mean |rendered visibility - reference visibility|
 };
 
+// --blend-shadows coloured: the light the renderer lets through (visibility x transmittance,
+// per channel) against the reference's, over the pixel x light pairs where either passes a
+// tinting (blended) caster.
+struct TintScore {
+    long cells = 0;             // pixel x light pairs tinted by the renderer or the reference
+    long cellsOutsideBand = 0;  // of them, away from the reference's shadow boundaries
+    double meanError = 0.0;     // mean |rendered - reference| per channel, 0..1 (x 255: steps)
+    double meanErrorOutsideBand = 0.0;
+};
+
 struct ScoreResult {
     std::vector<ShadowScore> lights;  // one per shadowed light
     ShadowScore overall;
+    TintScore tint;              // cells 0 unless --blend-shadows coloured tinted something
     bool softReference = false;  // filter pcss: compared with the soft reference
     double traceSeconds = 0.0;   // ray tracing wall time
     Image render;                // the frame scored
     Image errors;                // the error map (see truth/Metrics.h)
+    Image tintErrors;            // --blend-shadows coloured: the transmitted-light error map
 };
 
 // score() in two halves, so that the ray tracing can run off the GL thread (gnomon view):

@@ -136,8 +136,8 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          ENUM(shadow.outside, OutsidePolicy)});
     add({.name = "blend-shadows",
          .group = "Shadow maps",
-         .doc = "shadows of alpha-blended materials: full, none, or covering alpha of the map's "
-                "texels",
+         .doc = "shadows of alpha-blended materials: full, none, covering alpha of the map's "
+                "texels, or light tinted by their colour",
          .kind = K::Choice,
          .choices = namesOf<BlendShadows>(),
          ENUM(shadow.blendShadows, BlendShadows)});

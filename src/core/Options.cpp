@@ -56,7 +56,8 @@ const std::pair<const char*, DebugView> kDebugViews[] = {{"none", DebugView::Non
 
 const std::pair<const char*, BlendShadows> kBlendShadows[] = {{"opaque", BlendShadows::Opaque},
                                                               {"none", BlendShadows::None},
-                                                              {"dithered", BlendShadows::Dithered}};
+                                                              {"dithered", BlendShadows::Dithered},
+                                                              {"coloured", BlendShadows::Coloured}};
 
 const std::pair<const char*, FitTo> kFitTo[] = {{"view-depth", FitTo::ViewDepth},
                                                 {"boxes", FitTo::Boxes}};
@@ -147,6 +148,12 @@ std::vector<std::string> RenderOptions::validate() const {
     if (isMomentFilter(shadow.filter) && isColourFormat(shadow.depthFormat)) {
         problems.push_back(std::string("filter ") + toString(shadow.filter) +
                            " needs a native --depth-format (depth16, depth24 or depth32f), not " +
+                           toString(shadow.depthFormat));
+    }
+    // The transmittance pass tests against the maps' depth, which encoded formats keep apart.
+    if (shadow.blendShadows == BlendShadows::Coloured && isColourFormat(shadow.depthFormat)) {
+        problems.push_back(std::string("blend-shadows coloured needs a native --depth-format "
+                                       "(depth16, depth24 or depth32f), not ") +
                            toString(shadow.depthFormat));
     }
     return problems;

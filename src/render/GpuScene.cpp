@@ -155,11 +155,14 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     mCasterBounds = Aabb();
     mHasUnlit = false;
     mHasBlended = false;
+    mHasBlendedCasters = false;
     for (size_t i = 0; i < n; ++i) {
         const Object& o = scene.objects[i];
         const Material& mat = scene.materials[o.material];
         mHasUnlit = mHasUnlit || mat.unlit;
         mHasBlended = mHasBlended || mat.alphaMode == AlphaMode::Blend;
+        mHasBlendedCasters =
+            mHasBlendedCasters || (mat.alphaMode == AlphaMode::Blend && o.castsShadows);
         GpaObject g;
         g.worldFromModel = o.worldFromModelAt(seconds);
         g.worldFromModelNormal =

@@ -46,10 +46,18 @@ struct DrawItem {
     std::size_t standInFirstIndexByte = 0;
 };
 
-// Does `item` draw into shadow maps with these options (blended casters may not)?
+// Does `item` draw into shadow maps' depth with these options (blended casters may not:
+// with --blend-shadows coloured they go to the transmittance maps instead)?
 inline bool castsShadow(const DrawItem& item, const ShadowOptions& options) {
     return item.casts && item.indexCount > 0 &&
-           !(item.alphaMode == AlphaMode::Blend && options.blendShadows == BlendShadows::None);
+           !(item.alphaMode == AlphaMode::Blend &&
+             (options.blendShadows == BlendShadows::None ||
+              options.blendShadows == BlendShadows::Coloured));
+}
+// Does it tint the light through it (drawn into the transmittance maps)?
+inline bool castsTint(const DrawItem& item, const ShadowOptions& options) {
+    return item.casts && item.indexCount > 0 && item.alphaMode == AlphaMode::Blend &&
+           options.blendShadows == BlendShadows::Coloured;
 }
 // Does it need the alpha-tested depth programs (masked, or blended and dithered)?
 inline bool alphaTestedCaster(const DrawItem& item, const ShadowOptions& options) {
@@ -85,6 +93,10 @@ public:
     bool hasUnlit() const { return mHasUnlit; }
     // Does any item blend (drawn over the view's depth, so not within it)?
     bool hasBlended() const { return mHasBlended; }
+    // Does any blended item tint the light through it with these options (coloured shadows)?
+    bool hasTintingCasters(const ShadowOptions& options) const {
+        return mHasBlendedCasters && options.blendShadows == BlendShadows::Coloured;
+    }
     // Changes whenever geometry or object data changed.
     std::uint64_t revision() const { return mRevision; }
     // Content hash of all vertex and index data, stand-in casters included.
@@ -127,7 +139,7 @@ private:
     std::vector<Aabb> mMeshBounds;
     std::vector<char> mMeshClosed;  // isClosedSurface per mesh, at upload
     Aabb mBounds, mCasterBounds;
-    bool mHasUnlit = false, mHasBlended = false;
+    bool mHasUnlit = false, mHasBlended = false, mHasBlendedCasters = false;
     std::uint64_t mRevision = 0;
     std::uint64_t mSyncedRevision = 0;  // the Scene::revision and time last synced
     double mSyncedSeconds = 0.0;

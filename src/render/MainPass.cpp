@@ -5,6 +5,8 @@
 
 #include "gl/Program.h"
 #include "render/TiledLights.h"
+#include "render/TransmittancePass.h"
+#include "render/VisibilityTarget.h"
 #include "shadow/DepthPacking.h"
 
 namespace gnomon::render {
@@ -55,7 +57,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(options.shading.shadowedRule) << 23 | std::uint64_t(material) << 24 |
         std::uint64_t(so.receiverPlane) << 25 | std::uint64_t(floor) << 26 |
         std::uint64_t(ditherMode(options, floor)) << 27 |
-        std::uint64_t(in.viewDepth != nullptr) << 29 | std::uint64_t(so.normalOffset > 0.0f) << 30;
+        std::uint64_t(in.viewDepth != nullptr) << 29 | std::uint64_t(so.normalOffset > 0.0f) << 30 |
+        std::uint64_t(in.transmittance != nullptr) << 31;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -115,6 +118,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (s.normalOffset > 0.0f) defines.push_back("NORMAL_OFFSET");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
     if (in.viewDepth) defines.push_back("CONTACT_SHADOWS");
+    if (in.transmittance) defines.push_back("COLOURED_SHADOWS");
     if (const int dither = ditherMode(options, floor)) {
         defines.push_back(dither == 2 ? "DITHER_SRGB" : "DITHER_LINEAR");
     }
@@ -208,6 +212,20 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         glBindTextureUnit(6, in.shadowMoments->id());
         glBindSampler(6, mMomentSampler.id());
     }
+    // Coloured shadows' transmittance: units 7 (2D maps, fetched) and 8 (cubes, NEAREST).
+    if (in.transmittance) {
+        if (!mNearestSampler) {
+            mNearestSampler = gl::Sampler("transmittance sampler");
+            mNearestSampler.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST)
+                .set(GL_TEXTURE_MAG_FILTER, GL_NEAREST)
+                .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
+                .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        }
+        glBindTextureUnit(7, in.transmittance->maps() ? in.transmittance->maps().id() : 0);
+        glBindTextureUnit(8, in.transmittance->cubes() ? in.transmittance->cubes().id() : 0);
+        glBindSampler(7, mNearestSampler.id());
+        glBindSampler(8, mNearestSampler.id());
+    }
     // The view's depth for contact shadows: unit 5, read raw.
     if (in.viewDepth) {
         if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
@@ -299,7 +317,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
 }
 
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
-                      const gl::Texture* visibility, bool floor) {
+                      const VisibilityTarget* visibility, bool floor) {
     const TiledLights& tiled = *in.tiled;
     uploadLights(*in.lights, tiled.order());
     const bool rawDepths = bindMaps(in, options.shadow);
@@ -346,7 +364,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     if (visibility) {
         // The surfaces that won the depth test, again: each light's visibility per pixel,
         // untiled (the score reads every light's visibility everywhere).
-        glBindImageTexture(0, visibility->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+        glBindImageTexture(0, visibility->visibility().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           GL_RG32F);
+        const gl::Texture* tint = in.transmittance ? visibility->tint() : nullptr;
+        if (tint) glBindImageTexture(1, tint->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -356,9 +377,14 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glDepthFunc(GL_LESS);
         glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
         glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+        if (tint) glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     }
     glBindSampler(0, 0);
     glBindSampler(1, 0);
+    if (in.transmittance) {
+        glBindSampler(7, 0);
+        glBindSampler(8, 0);
+    }
     if (rawDepths) {
         glBindSampler(2, 0);
         glBindSampler(3, 0);

@@ -29,6 +29,8 @@ struct GpuLight {
 };
 
 class TiledLights;
+class TransmittancePass;
+class VisibilityTarget;
 
 struct MainPassInputs {
     glm::mat4 viewFromWorld{1.0f};
@@ -49,17 +51,19 @@ struct MainPassInputs {
     // The view's depth at the output's size (ViewDepthPass) when contact shadows are on (and
     // shadows are): null otherwise.
     const gl::Texture* viewDepth = nullptr;
+    // Coloured shadows' transmittance maps, when a blended caster tints a shadowed light.
+    const TransmittancePass* transmittance = nullptr;
 };
 
 class MainPass {
 public:
     MainPass();
-    // Draws the frame; with `visibility` (an RG32F array, a layer per scene light), then
-    // stores each light's shadow visibility and map texel size for every visible pixel.
+    // Draws the frame; with `visibility`, then stores each light's shadow visibility, map
+    // texel size (and with coloured shadows transmittance) for every visible pixel.
     // `floor`: the same geometry and shadow lookups with one diffuse term per light and
     // nothing else (no textures, specular or falloff): what `gnomon bench` compares against.
     void render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
-                const gl::Texture* visibility = nullptr, bool floor = false);
+                const VisibilityTarget* visibility = nullptr, bool floor = false);
     // Lights one frame can hold: the uniform block size limit / the record size, at most 256.
     int maxLights() const { return mMaxLights; }
 
@@ -91,8 +95,9 @@ private:
     // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;
-    gl::Sampler mRawSampler;     // stored depth, NEAREST, no comparison (PCSS, contact shadows)
-    gl::Sampler mMomentSampler;  // moments: LINEAR, clamped (one bilinear lookup filters them)
+    gl::Sampler mRawSampler;      // stored depth, NEAREST, no comparison (PCSS, contact shadows)
+    gl::Sampler mMomentSampler;   // moments: LINEAR, clamped (one bilinear lookup filters them)
+    gl::Sampler mNearestSampler;  // transmittance: NEAREST, clamped
     int mMapSamplerKey = -1, mCubeSamplerKey = -1;          // the filters they were made for
     gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame

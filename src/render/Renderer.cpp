@@ -18,7 +18,9 @@
 #include "render/PassClock.h"
 #include "render/ShadowPass.h"
 #include "render/TiledLights.h"
+#include "render/TransmittancePass.h"
 #include "render/ViewDepthPass.h"
+#include "render/VisibilityTarget.h"
 #include "scene/SceneUtil.h"
 
 namespace gnomon {
@@ -44,12 +46,13 @@ struct Renderer::Impl {
     std::optional<gl::HeadlessContext> context;
     render::GpuScene scene;
     render::ShadowPass shadowPass;
-    render::MomentPass momentPass;  // filterable maps' moments (evsm2, evsm4, msm)
+    render::MomentPass momentPass;                // filterable maps' moments (evsm2, evsm4, msm)
+    render::TransmittancePass transmittancePass;  // coloured shadows' transmittance maps
     render::MainPass mainPass;
     render::TiledLights tiled;
     render::DebugPass debugPass;
     gl::Texture colour, depth;
-    gl::Texture visibilityTexture;  // RG32F, a layer per light: gnomon score only
+    render::VisibilityTarget visibilityTarget;  // gnomon score only
     gl::Framebuffer target;
     gl::Texture colourView;   // the colour target as RGBA8 (no sRGB decode), for display
     gl::Texture panelColour;  // drawShadowMapPanel's target
@@ -103,37 +106,6 @@ struct Renderer::Impl {
         glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
         glNamedFramebufferTexture(target.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
         target.checkComplete();
-    }
-
-    // The visibility pass's layers as ShadowVisibility's interleaved, top-down values. With
-    // the shadow-map debug view nothing was drawn: every pixel reads lit.
-    void readVisibility(const Scene& s, const RenderOptions& options, ShadowVisibility& out) {
-        out.width = options.width;
-        out.height = options.height;
-        out.lights = int(s.lights.size());
-        const std::size_t pixels = std::size_t(out.width) * std::size_t(out.height);
-        out.visibility.assign(pixels * std::size_t(out.lights), 1.0f);
-        out.texelWorld.assign(pixels * std::size_t(out.lights), 0.0f);
-        if (out.lights == 0 || options.debugView == DebugView::ShadowMap) return;
-        std::vector<float> layers(pixels * 2 * std::size_t(out.lights));
-        glGetTextureImage(visibilityTexture.id(), 0, GL_RG, GL_FLOAT,
-                          GLsizei(layers.size() * sizeof(float)), layers.data());
-        for (int l = 0; l < out.lights; ++l) {
-            for (int y = 0; y < out.height; ++y) {
-                const float* src =
-                    &layers[(std::size_t(l) * pixels +
-                             std::size_t(out.height - 1 - y) * std::size_t(out.width)) *
-                            2];
-                for (int x = 0; x < out.width; ++x) {
-                    const std::size_t cell =
-                        (std::size_t(y) * std::size_t(out.width) + std::size_t(x)) *
-                            std::size_t(out.lights) +
-                        std::size_t(l);
-                    out.visibility[cell] = src[2 * x];
-                    out.texelWorld[cell] = src[2 * x + 1];
-                }
-            }
-        }
     }
 
     // The frame's target bound and cleared (black, far), the viewport on it.
@@ -228,6 +200,16 @@ struct Renderer::Impl {
         } else if (!moments) {
             momentPass.release();
         }
+        const bool tinted = options.shadow.enabled && scene.hasTintingCasters(options.shadow) &&
+                            !plan.shadowed().empty();
+        if (tinted) {
+            stats.transmittancePasses =
+                transmittancePass.update(scene, shadowPass, plan.shadowed(), shadowPass.drawn(),
+                                         options.shadow, timer, &stats.passes);
+            stats.shadowMapBytes += transmittancePass.bytes();
+        } else {
+            transmittancePass.release();
+        }
         plan.finish(shadowPass);
 
         ensureTarget(options.width, options.height, options.shading.output);
@@ -262,6 +244,7 @@ struct Renderer::Impl {
         in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
         in.shadowMoments = any2D && moments ? &momentPass.moments() : nullptr;
         in.viewDepth = contact ? &viewDepth.depth() : nullptr;
+        in.transmittance = tinted ? &transmittancePass : nullptr;
         if (timer) timer->start();
         drawMain(s, options, in, visibility != nullptr);
         if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));
@@ -286,11 +269,14 @@ struct Renderer::Impl {
                                             "casting, or nothing in view to shadow)");
             }
         } else {
-            const gl::Texture* visibilityTarget = scored ? &clearedVisibility(s, options) : nullptr;
+            if (scored) {
+                visibilityTarget.clear(options.width, options.height, int(s.lights.size()),
+                                       in.transmittance != nullptr);
+            }
             // sRGB output: the target is SRGB8_ALPHA8, so writes (and blending) encode.
             const bool srgb = options.shading.output == OutputEncoding::Srgb;
             if (srgb) glEnable(GL_FRAMEBUFFER_SRGB);
-            mainPass.render(scene, in, options, visibilityTarget);
+            mainPass.render(scene, in, options, scored ? &visibilityTarget : nullptr);
             lastMain = in;
             lastMainOptions = options;
             if (options.debugView == DebugView::LightFrusta) {
@@ -298,19 +284,6 @@ struct Renderer::Impl {
             }
             if (srgb) glDisable(GL_FRAMEBUFFER_SRGB);
         }
-    }
-
-    // The per-light visibility target at the frame's size, every pixel unset (lit, no map).
-    const gl::Texture& clearedVisibility(const Scene& s, const RenderOptions& options) {
-        const int layers = std::max<int>(1, int(s.lights.size()));
-        if (!visibilityTexture || visibilityTexture.width() != options.width ||
-            visibilityTexture.height() != options.height || visibilityTexture.layers() != layers) {
-            visibilityTexture = gl::Texture::array2D("shadow visibility", GL_RG32F, options.width,
-                                                     options.height, layers);
-        }
-        const float unset[2] = {1.0f, 0.0f};
-        glClearTexImage(visibilityTexture.id(), 0, GL_RG, GL_FLOAT, unset);
-        return visibilityTexture;
     }
 
     GlTexture drawPanel(int light, int width, int height) {
@@ -348,7 +321,10 @@ struct Renderer::Impl {
                              image.at(0, options.height - 1 - y));
         }
         if (timer) stats.passes.push_back(timer->stop("read-back", -1, 0));
-        if (visibility) readVisibility(s, options, *visibility);
+        if (visibility) {
+            visibilityTarget.read(options.width, options.height, int(s.lights.size()),
+                                  options.debugView != DebugView::ShadowMap, *visibility);
+        }
         return image;
     }
 };

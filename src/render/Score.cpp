@@ -80,8 +80,14 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
         truth::scoreVisibility(scene, reference, visibility.visibility, band, result.softReference);
     result.lights = scores.lights;
     result.overall = scores.overall;
+    result.tint = truth::scoreTint(reference, visibility.visibility, visibility.tint, band,
+                                   result.softReference);
     result.errors = truth::errorMap(reference, visibility.visibility, band, result.softReference,
                                     result.render);
+    if (options.shadow.blendShadows == BlendShadows::Coloured) {
+        result.tintErrors = truth::tintErrorMap(reference, visibility.visibility, visibility.tint,
+                                                result.softReference, result.render);
+    }
     return result;
 }
 
@@ -132,6 +138,12 @@ std::string toJson(const ScoreResult& r, const std::string& scene, const RenderO
     j["lights"] = nlohmann::json::array();
     for (const ShadowScore& s : r.lights)
         j["lights"].push_back(toJson(s));
+    if (o.shadow.blendShadows == BlendShadows::Coloured) {
+        j["tint"] = {{"cells", r.tint.cells},
+                     {"cells_outside_band", r.tint.cellsOutsideBand},
+                     {"mean_error", r.tint.meanError},
+                     {"mean_error_outside_band", r.tint.meanErrorOutsideBand}};
+    }
     return j.dump(2) + "\n";
 }
 

@@ -91,6 +91,7 @@ std::size_t texelBytes(GLenum format) {
 void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
     const bool colour = isColourFormat(format);
     mMapFormat = format;
+    ++mGeneration;
     mFramebuffers.clear();
     mColourDepth = gl::Texture();
     if (colour) {
@@ -125,6 +126,7 @@ void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
 }
 
 void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
+    ++mGeneration;
     mCubes = gl::Texture::cubeArray("point shadow cubes", nativeFormat(format), size, cubes);
     if (!mCubes.allocated()) {
         refused(std::to_string(cubes) + " cube maps of 6 x " + std::to_string(size) + "² " +
@@ -179,15 +181,18 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
     const std::vector<DrawItem>& items = scene.items();
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         const DrawItem& item = items[i];
-        if (!castsShadow(item, options)) continue;
+        // Tinting casters are drawn by the transmittance pass, after this map: they count in
+        // the hash (moving one redraws both) but are not drawn here.
+        const bool tints = castsTint(item, options);
+        if (!castsShadow(item, options) && !tints) continue;
         const bool outside =
             cube ? shadow::outsideCube(item.bounds, light.frame)
                  : shadow::outsideClipVolume(item.bounds, clipFromWorld, light.depthClamp);
         if (outside) {
-            ++mCulled;
+            if (!tints) ++mCulled;
             continue;
         }
-        mVisible.push_back(i);
+        if (!tints) mVisible.push_back(i);
         hash = (hash ^ item.dataHash) * 0x100000001b3ull + i;
     }
     return hash;

@@ -64,6 +64,9 @@ public:
     DepthFormat mapFormat() const { return mMapFormat; }
     const gl::Texture& cubes() const { return mCubes; }
     int mapArraySize() const { return mMaps ? mMaps.width() : 0; }
+    // Counts the arrays' allocations: what holds their textures must remake its framebuffers
+    // when it changes (a new texture may reuse a deleted one's name).
+    int generation() const { return mGeneration; }
     // The maps the last render() drew (the others were kept): indices into its `lights`.
     const std::vector<int>& drawn() const { return mDrawn; }
     std::size_t bytes() const;
@@ -122,6 +125,7 @@ private:
     gl::Texture mBareDepth;                              // bareDepthPass's target
     gl::Framebuffer mBareFramebuffer;
     int mCulled = 0;
+    int mGeneration = 0;
 };
 
 }  // namespace gnomon::render

@@ -211,4 +211,77 @@ Image errorMap(const Reference& r, const std::vector<float>& visibility,
     return out;
 }
 
+namespace {
+// A cell's transmitted-light error (mean over channels, 0..1) under coloured shadows, or < 0
+// where neither the renderer nor the reference tinted the light (no channel below 1 by more
+// than half an 8-bit step).
+float tintError(const Reference& r, const std::vector<float>& visibility,
+                const std::vector<float>& tint, bool soft, std::size_t c) {
+    constexpr float kTinted = 1.0f - 0.5f / 255.0f;
+    if (!r.applies[c]) return -1.0f;
+    const glm::vec3 mine(tint[3 * c], tint[3 * c + 1], tint[3 * c + 2]);
+    const glm::vec3& theirs = r.tint[c];
+    const float least = std::min({mine.x, mine.y, mine.z, theirs.x, theirs.y, theirs.z});
+    if (!(least < kTinted)) return -1.0f;
+    const glm::vec3 d = glm::abs(mine * visibility[c] - theirs * (soft ? r.soft[c] : r.hard[c]));
+    return (d.x + d.y + d.z) / 3.0f;
+}
+
+bool tintScored(const Reference& r, const std::vector<float>& visibility,
+                const std::vector<float>& tint) {
+    const std::size_t cells = r.applies.size();
+    return r.tint.size() == cells && tint.size() == 3 * cells && visibility.size() == cells;
+}
+}  // namespace
+
+TintScore scoreTint(const Reference& r, const std::vector<float>& visibility,
+                    const std::vector<float>& tint, const std::vector<std::uint8_t>& band,
+                    bool soft) {
+    TintScore score;
+    if (!tintScored(r, visibility, tint)) return score;
+    double sum = 0.0, sumOutside = 0.0;
+    for (std::size_t c = 0; c < r.applies.size(); ++c) {
+        const float error = tintError(r, visibility, tint, soft, c);
+        if (error < 0.0f) continue;
+        ++score.cells;
+        sum += error;
+        if (!band[c]) {
+            ++score.cellsOutsideBand;
+            sumOutside += error;
+        }
+    }
+    if (score.cells > 0) score.meanError = sum / double(score.cells);
+    if (score.cellsOutsideBand > 0) {
+        score.meanErrorOutsideBand = sumOutside / double(score.cellsOutsideBand);
+    }
+    return score;
+}
+
+Image tintErrorMap(const Reference& r, const std::vector<float>& visibility,
+                   const std::vector<float>& tint, bool soft, const Image& render) {
+    Image out(r.width, r.height, 3);
+    const bool scored = tintScored(r, visibility, tint);
+    for (int y = 0; y < r.height; ++y) {
+        for (int x = 0; x < r.width; ++x) {
+            const std::uint8_t* c = render.at(x, y);
+            const std::uint8_t grey = std::uint8_t((int(c[0]) + int(c[1]) + int(c[2])) / 3 * 2 / 5);
+            float worst = -1.0f;
+            for (int l = 0; scored && l < r.lights; ++l)
+                worst = std::max(worst, tintError(r, visibility, tint, soft, r.at(x, y, l)));
+            std::uint8_t* o = out.at(x, y);
+            if (worst < 0.0f) {
+                o[0] = o[1] = o[2] = grey;
+                continue;
+            }
+            // Tinted: dark green when right, through yellow (4/255) to red (16/255 and more).
+            const float t = std::clamp(worst * 255.0f / 16.0f, 0.0f, 1.0f);
+            const float green = t < 0.25f ? 0.45f + 2.2f * t : 1.0f - (t - 0.25f) / 0.75f;
+            o[0] = std::uint8_t(255.0f * std::min(1.0f, 4.0f * t));
+            o[1] = std::uint8_t(255.0f * std::clamp(green, 0.0f, 1.0f));
+            o[2] = 0;
+        }
+    }
+    return out;
+}
+
 }  // namespace gnomon::truth

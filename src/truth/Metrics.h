@@ -37,6 +37,16 @@ Scores scoreVisibility(const Scene& scene, const Reference& reference,
                        const std::vector<float>& visibility, const std::vector<std::uint8_t>& band,
                        bool soft);
 
+// --blend-shadows coloured: the rendered light (visibility x `tint`, three floats per cell)
+// against the reference's (hard, or with `soft` soft, x tint) where either is tinted.
+TintScore scoreTint(const Reference& reference, const std::vector<float>& visibility,
+                    const std::vector<float>& tint, const std::vector<std::uint8_t>& band,
+                    bool soft);
+// Per pixel, the worst light's transmitted-light error where tinted: dark green right,
+// yellow at 4/255, red from 16/255; elsewhere the render in dim grey.
+Image tintErrorMap(const Reference& reference, const std::vector<float>& visibility,
+                   const std::vector<float>& tint, bool soft, const Image& render);
+
 // Per pixel: false shadow red, light leak blue (pale inside the aliasing band), elsewhere
 // the render in dim grey.
 Image errorMap(const Reference& reference, const std::vector<float>& visibility,

@@ -13,6 +13,7 @@
 #include "gnomon/Error.h"
 #include "scene/SceneUtil.h"
 #include "shadow/ShadowMath.h"
+#include "truth/AlphaRays.h"
 
 namespace gnomon::truth {
 
@@ -41,96 +42,6 @@ struct World {
     std::vector<const Mesh*> meshes;
     float scale = 1.0f;  // the scene's size, for ray offsets
 };
-
-// What a masked or blended object's hits need: its alpha at the hit point.
-struct AlphaSurface {
-    const Mesh* mesh = nullptr;
-    const Material* material = nullptr;
-    const Texture* texture = nullptr;  // null: the material's alpha factor alone
-};
-
-int wrapTexel(int i, int n, TextureWrap wrap) {
-    switch (wrap) {
-        case TextureWrap::ClampToEdge:
-            return std::clamp(i, 0, n - 1);
-        case TextureWrap::MirroredRepeat: {
-            const int period = 2 * n;
-            int m = ((i % period) + period) % period;
-            return m < n ? m : period - 1 - m;
-        }
-        case TextureWrap::Repeat:
-            break;
-    }
-    return ((i % n) + n) % n;
-}
-
-// The material's alpha at barycentric (u, v) of triangle `prim`: the factor times the base
-// colour texture's alpha, bilinear on the full-size image (the renderer's mip levels can
-// differ where the texture is minified).
-float alphaAt(const AlphaSurface& a, unsigned prim, float u, float v) {
-    float alpha = a.material->alpha;
-    if (!a.texture || a.mesh->uvs.empty()) return alpha;
-    const std::uint32_t* t = &a.mesh->indices[3 * std::size_t(prim)];
-    const glm::vec2 uv0 = a.mesh->uvs[t[0]], uv1 = a.mesh->uvs[t[1]], uv2 = a.mesh->uvs[t[2]];
-    const glm::vec2 uv =
-        a.material->uvTransform * glm::vec3((1.0f - u - v) * uv0 + u * uv1 + v * uv2, 1.0f);
-    const Texture& tex = *a.texture;
-    const float x = uv.x * float(tex.width) - 0.5f, y = uv.y * float(tex.height) - 0.5f;
-    if (!std::isfinite(x) || !std::isfinite(y)) return alpha;
-    const float fx = std::floor(x), fy = std::floor(y);
-    const int x0 = int(std::fmod(fx, 1048576.0f)), y0 = int(std::fmod(fy, 1048576.0f));
-    auto texel = [&](int i, int j) {
-        i = wrapTexel(i, tex.width, tex.wrapS);
-        j = wrapTexel(j, tex.height, tex.wrapT);
-        return float(tex.rgba[(std::size_t(j) * std::size_t(tex.width) + std::size_t(i)) * 4 + 3]) /
-               255.0f;
-    };
-    if (tex.nearest) return alpha * texel(int(std::floor(x + 0.5f)), int(std::floor(y + 0.5f)));
-    const float wx = x - fx, wy = y - fy;
-    const float top = (1.0f - wx) * texel(x0, y0) + wx * texel(x0 + 1, y0);
-    const float bottom = (1.0f - wx) * texel(x0, y0 + 1) + wx * texel(x0 + 1, y0 + 1);
-    return alpha * ((1.0f - wy) * top + wy * bottom);
-}
-
-// Rays carry this context so filters know what they trace: view rays look through cut-away
-// and blended surfaces; shadow rays through cut-away ones, and through blended ones by the
-// --blend-shadows rule, accumulating 1 - alpha for dithered ones.
-struct AlphaContext {
-    RTCIntersectContext base;  // first: Embree hands filters a pointer to it
-    bool viewRay = false;
-    BlendShadows blend = BlendShadows::Dithered;
-    float transmission = 1.0f;
-    // Hits already counted (a primitive can be reported again); a short ring suffices.
-    std::uint64_t seen[8] = {};
-    int seenCount = 0;
-};
-
-void alphaFilter(const RTCFilterFunctionNArguments* args) {
-    const auto& surface = *static_cast<const AlphaSurface*>(args->geometryUserPtr);
-    auto& ctx = *reinterpret_cast<AlphaContext*>(args->context);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
-        const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
-        const Material& m = *surface.material;
-        if (m.alphaMode == AlphaMode::Mask) {
-            if (alphaAt(surface, prim, u, v) < m.alphaCutoff) args->valid[i] = 0;
-            continue;
-        }
-        // Blended.
-        if (ctx.viewRay || ctx.blend == BlendShadows::None) {
-            args->valid[i] = 0;
-        } else if (ctx.blend == BlendShadows::Dithered) {
-            args->valid[i] = 0;
-            const std::uint64_t key =
-                std::uint64_t(RTCHitN_geomID(args->hit, args->N, i)) << 32 | prim;
-            const int n = std::min(ctx.seenCount, 8);
-            if (std::find(ctx.seen, ctx.seen + n, key) != ctx.seen + n) continue;
-            ctx.seen[ctx.seenCount++ % 8] = key;
-            ctx.transmission *= 1.0f - std::clamp(alphaAt(surface, prim, u, v), 0.0f, 1.0f);
-        }
-    }
-}
 
 RTCScene buildScene(RTCDevice device, const Scene& scene, const World& world,
                     const std::vector<AlphaSurface>& alpha, bool castersOnly) {
@@ -199,9 +110,10 @@ float pixelTurn(int x, int y) {
 }
 
 // The share of light that arrives along the ray: 0 when something opaque is in the way, the
-// product of dithered blended surfaces' 1 - alpha otherwise.
+// product of dithered blended surfaces' 1 - alpha otherwise; `tint` (if set) gets the
+// product of coloured blended surfaces' transmittance.
 float transmitted(RTCScene scene, BlendShadows blend, const glm::vec3& origin, const glm::vec3& dir,
-                  float far) {
+                  float far, glm::vec3* tint = nullptr) {
     AlphaContext context;
     rtcInitIntersectContext(&context.base);
     context.blend = blend;
@@ -216,6 +128,7 @@ float transmitted(RTCScene scene, BlendShadows blend, const glm::vec3& origin, c
     ray.tfar = far;
     ray.mask = 0xffffffffu;
     rtcOccluded1(scene, &context.base, &ray);
+    if (tint) *tint = context.tint;
     return ray.tfar < 0.0f ? 0.0f : context.transmission;  // Embree sets tfar to -inf on a hit
 }
 
@@ -242,7 +155,7 @@ void forEachRow(int height, const ReferenceOptions& o, const Row& row) {
 }
 
 // A reference with nothing hit yet: every cell lit.
-Reference emptyReference(int width, int height, int lights, int samples) {
+Reference emptyReference(int width, int height, int lights, int samples, bool coloured) {
     Reference ref;
     ref.width = width;
     ref.height = height;
@@ -255,6 +168,7 @@ Reference emptyReference(int width, int height, int lights, int samples) {
     ref.hard.assign(cells, 1.0f);
     ref.lightCosine.assign(cells, 1.0f);
     if (samples > 0) ref.soft.assign(cells, 1.0f);
+    if (coloured) ref.tint.assign(cells, glm::vec3(1.0f));
     return ref;
 }
 
@@ -329,7 +243,8 @@ struct LightTracer {
             const std::size_t cell = pixel * std::size_t(ref.lights) + l;
             ref.applies[cell] = 1;
             ref.lightCosine[cell] = mat.unlit ? 1.0f : glm::dot(n, toLight);
-            ref.hard[cell] = transmitted(casters, blend, origin, toLight, distance);
+            ref.hard[cell] = transmitted(casters, blend, origin, toLight, distance,
+                                         ref.tint.empty() ? nullptr : &ref.tint[cell]);
             if (samples == 0) continue;
             float visible = 0.0f;
             glm::vec3 u, v;
@@ -384,8 +299,8 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     const EmbreeScene casters(buildScene(device.get(), scene, world, alpha, true));
 
     const int samples = std::max(referenceOptions.softSamples, 0);
-    Reference ref =
-        emptyReference(options.width, options.height, int(scene.lights.size()), samples);
+    Reference ref = emptyReference(options.width, options.height, int(scene.lights.size()), samples,
+                                   blend == BlendShadows::Coloured);
 
     const float aspect = float(options.width) / float(options.height);
     const glm::mat4 viewFromWorld = shadow::viewFromWorld(scene.camera);

@@ -36,6 +36,10 @@ struct Reference {
     // 1 lit, 0 occluded (where applies); between where light passes dithered blended
     // casters (1 - alpha each, --blend-shadows dithered).
     std::vector<float> hard;
+    // --blend-shadows coloured only (else empty): the product of the transmittance of the
+    // blended casters the hard ray passed (truth/AlphaRays.h); the light arriving is
+    // hard x tint.
+    std::vector<glm::vec3> tint;
     // Cosine between the surface's geometric normal and the direction to the light (where
     // applies): how far a map texel stretches along the surface, 1 / cosine.
     std::vector<float> lightCosine;

@@ -1,13 +1,15 @@
 // Ray-traced ground truth and the score metrics (issue 4), without GL: the reference shadow
 // of a plate over a floor is the analytically computed outline; soft references are 0 in the
 // umbra, 1 outside and fractional across the penumbra; a perfect visibility buffer scores 0
-// and each kind of error lands in its own counter; the distance transform is exact.
+// and each kind of error lands in its own counter; the distance transform is exact; blended
+// casters transmit their colour under coloured shadows.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 #include "scene/MeshBuilder.h"
+#include "truth/AlphaRays.h"
 #include "truth/Metrics.h"
 #include "truth/Reference.h"
 
@@ -113,6 +115,44 @@ TEST(Truth, NonCastersAndNonReceivers) {
     r = truth::traceReference(s, s.options, {});
     EXPECT_FALSE(r.applies[r.at(50, 32, 0)]);  // floor pixel
     EXPECT_TRUE(r.applies[r.at(16, 32, 0)]);   // plate pixel
+}
+
+TEST(Truth, BlendedSurfacesTransmitTheirColour) {
+    // The rule: the share 1 - alpha, filtered by the colour as strongly as it is opaque.
+    EXPECT_EQ(truth::tintThrough({1, 1, 1}, 0.5f), glm::vec3(0.5f));
+    EXPECT_EQ(truth::tintThrough({1, 0, 0}, 0.0f), glm::vec3(1.0f));
+    EXPECT_EQ(truth::tintThrough({1, 0, 0}, 1.0f), glm::vec3(0.0f));
+    const glm::vec3 red = truth::tintThrough({1, 0, 0}, 0.5f);
+    EXPECT_FLOAT_EQ(red.r, 0.5f);
+    EXPECT_FLOAT_EQ(red.g, 0.25f);
+    EXPECT_FLOAT_EQ(red.b, 0.25f);
+
+    // The plate blended red at alpha 0.5: under --blend-shadows coloured its shadow is red
+    // light (hard 1, tint as above), under dithered half the light, untinted.
+    Scene s = plateOverFloor();
+    Material glass;
+    glass.baseColour = {1.0f, 0.0f, 0.0f};
+    glass.alpha = 0.5f;
+    glass.alphaMode = AlphaMode::Blend;
+    s.materials.push_back(glass);
+    s.objects[1].material = 1;
+    RenderOptions o = s.options;
+    o.shadow.blendShadows = BlendShadows::Coloured;
+    const truth::Reference r = truth::traceReference(s, o, {});
+    ASSERT_EQ(r.tint.size(), r.hard.size());
+    // Floor at x = 1 (under the plate's shadow: both faces of the thin box, so the light
+    // passes two surfaces) and at x = -3 (open).
+    const int under = 40, open = 8, row = 32;
+    EXPECT_EQ(r.object[std::size_t(row) * kSize + under], 0);
+    EXPECT_EQ(r.hard[r.at(under, row, 0)], 1.0f);
+    const glm::vec3 twice = red * red;
+    EXPECT_NEAR(r.tint[r.at(under, row, 0)].r, twice.r, 1e-6f);
+    EXPECT_NEAR(r.tint[r.at(under, row, 0)].g, twice.g, 1e-6f);
+    EXPECT_EQ(r.tint[r.at(open, row, 0)], glm::vec3(1.0f));
+    o.shadow.blendShadows = BlendShadows::Dithered;
+    const truth::Reference d = truth::traceReference(s, o, {});
+    EXPECT_TRUE(d.tint.empty());
+    EXPECT_NEAR(d.hard[d.at(under, row, 0)], 0.25f, 1e-6f);
 }
 
 TEST(Metrics, DistanceTransformIsExact) {

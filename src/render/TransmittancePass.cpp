@@ -1,0 +1,178 @@
+#include "render/TransmittancePass.h"
+
+#include <string>
+
+#include "gl/Program.h"
+#include "gnomon/Error.h"
+#include "render/DepthRuns.h"
+#include "render/PassClock.h"
+#include "shadow/FrustumClip.h"
+
+namespace gnomon::render {
+
+namespace {
+[[noreturn]] void refused(const std::string& what, std::size_t bytes) {
+    throw Error(ErrorKind::Gl, "coloured shadows: " + what + " of RGBA16 need " +
+                                   std::to_string(bytes >> 20) +
+                                   " MiB, which the OpenGL driver refused; lower --map-size");
+}
+
+gl::Framebuffer target(const std::string& label, GLuint colour, GLuint depth, int layer) {
+    gl::Framebuffer fb(label);
+    glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, colour, 0, layer);
+    glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, depth, 0, layer);
+    glNamedFramebufferDrawBuffer(fb.id(), GL_COLOR_ATTACHMENT0);
+    fb.checkComplete();
+    return fb;
+}
+}  // namespace
+
+const gl::Program& TransmittancePass::program() {
+    if (!mProgram) {
+        mProgram = gl::buildProgram("transmittance",
+                                    {{GL_VERTEX_SHADER, "depth.vert.glsl"},
+                                     {GL_FRAGMENT_SHADER, "transmittance.frag.glsl"}},
+                                    {"ALPHA_TEST", "TRANSMITTANCE"});
+    }
+    return mProgram;
+}
+
+void TransmittancePass::allocate(const ShadowPass& pass) {
+    mLayerTargets.clear();
+    mFaceTargets.clear();
+    mMaps = gl::Texture();
+    mCubes = gl::Texture();
+    if (const gl::Texture& depth = pass.maps(); pass.mapArraySize() > 0) {
+        const int size = depth.width(), layers = depth.layers();
+        mMaps = gl::Texture::array2D("transmittance maps", GL_RGBA16, size, size, layers);
+        if (!mMaps.allocated()) {
+            refused(std::to_string(layers) + " layer(s) of " + std::to_string(size) + "²",
+                    std::size_t(size) * std::size_t(size) * 8u * std::size_t(layers));
+        }
+        for (int layer = 0; layer < layers; ++layer) {
+            mLayerTargets.push_back(target("transmittance layer " + std::to_string(layer),
+                                           mMaps.id(), depth.id(), layer));
+        }
+    }
+    if (const gl::Texture& depth = pass.cubes(); depth) {
+        const int size = depth.width(), cubes = depth.layers() / 6;
+        mCubes = gl::Texture::cubeArray("transmittance cubes", GL_RGBA16, size, cubes);
+        if (!mCubes.allocated()) {
+            refused(std::to_string(cubes) + " cube(s) of 6 x " + std::to_string(size) + "²",
+                    std::size_t(size) * std::size_t(size) * 48u * std::size_t(cubes));
+        }
+        for (int face = 0; face < 6 * cubes; ++face) {
+            mFaceTargets.push_back(target("transmittance face " + std::to_string(face), mCubes.id(),
+                                          depth.id(), face));
+        }
+    }
+    mGeneration = pass.generation();
+}
+
+void TransmittancePass::collect(const GpuScene& scene, const ShadowedLight& light,
+                                const ShadowOptions& options) {
+    mVisible.clear();
+    const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+    const glm::mat4 clipFromWorld = cube ? glm::mat4(1.0f) : light.frame.clipFromWorld();
+    const std::vector<DrawItem>& items = scene.items();
+    for (std::uint32_t i = 0; i < items.size(); ++i) {
+        if (!castsTint(items[i], options)) continue;
+        const bool outside =
+            cube ? shadow::outsideCube(items[i].bounds, light.frame)
+                 : shadow::outsideClipVolume(items[i].bounds, clipFromWorld, light.depthClamp);
+        if (!outside) mVisible.push_back(i);
+    }
+}
+
+// Clears the light's transmittance to white at the far plane and draws its blended casters:
+// colour multiplied in, depth kept by MIN, tested against the opaque depth without writing it.
+void TransmittancePass::drawLight(const GpuScene& scene, const ShadowedLight& light,
+                                  const ShadowOptions& options) {
+    const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+    collect(scene, light, options);
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    light.depthClamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
+    for (int face = 0; face < (cube ? 6 : 1); ++face) {
+        const GLuint fb = cube ? mFaceTargets[std::size_t(6 * light.layer + face)].id()
+                               : mLayerTargets[std::size_t(light.layer)].id();
+        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
+        glEnable(GL_SCISSOR_TEST);  // this map's square only: the layer's other maps stay
+        glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
+        glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
+        glDisable(GL_SCISSOR_TEST);
+        if (mVisible.empty()) continue;
+        const glm::mat4 m =
+            cube ? light.frame.faceClipFromWorld(face) : light.frame.clipFromWorld();
+        drawDepthRuns(
+            scene, mVisible, 1, /*standIns=*/false, [](const DrawItem&) { return true; },
+            [](const DrawItem&) { return false; },
+            [&](bool) {
+                glUseProgram(program().id());
+                glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0]);
+            });
+    }
+}
+
+int TransmittancePass::update(const GpuScene& scene, const ShadowPass& pass,
+                              const std::vector<ShadowedLight>& lights,
+                              const std::vector<int>& drawn, const ShadowOptions& options,
+                              PassClock* clock, std::vector<PassTiming>* timings) {
+    bool all = false;
+    if (mGeneration != pass.generation()) {
+        allocate(pass);
+        all = true;
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendEquationSeparate(GL_FUNC_ADD, GL_MIN);
+    glBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE);
+    int maps = 0;
+    auto one = [&](const ShadowedLight& light) {
+        if (clock) clock->start();
+        drawLight(scene, light, options);
+        ++maps;
+        if (clock && timings) {
+            std::uint64_t triangles = 0;
+            for (std::uint32_t i : mVisible)
+                triangles += std::uint64_t(scene.items()[i].indexCount / 3);
+            timings->push_back(clock->stop(
+                "transmittance light " + std::to_string(light.light) +
+                    (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : ""),
+                light.light, triangles));
+        }
+    };
+    scene.bind();
+    if (all) {
+        for (const ShadowedLight& light : lights)
+            one(light);
+    } else {
+        for (int i : drawn)
+            one(lights[std::size_t(i)]);
+    }
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_CLAMP);
+    glDepthMask(GL_TRUE);
+    return maps;
+}
+
+void TransmittancePass::release() {
+    mLayerTargets.clear();
+    mFaceTargets.clear();
+    mMaps = gl::Texture();
+    mCubes = gl::Texture();
+    mGeneration = -1;
+}
+
+std::size_t TransmittancePass::bytes() const {
+    std::size_t total = 0;
+    for (const gl::Texture* t : {&mMaps, &mCubes}) {
+        if (*t) total += std::size_t(t->width()) * std::size_t(t->height()) * t->layers() * 8u;
+    }
+    return total;
+}
+
+}  // namespace gnomon::render

@@ -1,0 +1,74 @@
+#include "render/VisibilityTarget.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace gnomon::render {
+
+namespace {
+// One texture's layers (bottom-up rows, `channels` floats a texel) as top-down cells of
+// `out` ([cell * keep + c] for the first `keep` channels, through `store`).
+template <typename Store>
+void readLayers(const gl::Texture& texture, GLenum format, int channels, int width, int height,
+                int lights, const Store& store) {
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    std::vector<float> layers(pixels * std::size_t(channels) * std::size_t(lights));
+    glGetTextureImage(texture.id(), 0, format, GL_FLOAT, GLsizei(layers.size() * sizeof(float)),
+                      layers.data());
+    for (int l = 0; l < lights; ++l) {
+        for (int y = 0; y < height; ++y) {
+            const float* src = &layers[(std::size_t(l) * pixels +
+                                        std::size_t(height - 1 - y) * std::size_t(width)) *
+                                       std::size_t(channels)];
+            for (int x = 0; x < width; ++x) {
+                const std::size_t cell =
+                    (std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(lights) +
+                    std::size_t(l);
+                store(cell, &src[std::size_t(x) * std::size_t(channels)]);
+            }
+        }
+    }
+}
+}  // namespace
+
+void VisibilityTarget::clear(int width, int height, int lights, bool withTint) {
+    const int layers = std::max(1, lights);
+    auto fits = [&](const gl::Texture& t) {
+        return t && t.width() == width && t.height() == height && t.layers() == layers;
+    };
+    if (!fits(mVisibility)) {
+        mVisibility = gl::Texture::array2D("shadow visibility", GL_RG32F, width, height, layers);
+    }
+    const float unset[2] = {1.0f, 0.0f};
+    glClearTexImage(mVisibility.id(), 0, GL_RG, GL_FLOAT, unset);
+    mWithTint = withTint;
+    if (!withTint) return;
+    if (!fits(mTint)) {
+        mTint = gl::Texture::array2D("shadow tint", GL_RGBA32F, width, height, layers);
+    }
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glClearTexImage(mTint.id(), 0, GL_RGBA, GL_FLOAT, white);
+}
+
+void VisibilityTarget::read(int width, int height, int lights, bool drawn,
+                            ShadowVisibility& out) const {
+    out.width = width;
+    out.height = height;
+    out.lights = lights;
+    const std::size_t cells =
+        std::size_t(out.width) * std::size_t(out.height) * std::size_t(lights);
+    out.visibility.assign(cells, 1.0f);
+    out.texelWorld.assign(cells, 0.0f);
+    out.tint.assign(mWithTint ? 3 * cells : 0, 1.0f);
+    if (lights == 0 || !drawn) return;
+    readLayers(mVisibility, GL_RG, 2, out.width, out.height, lights,
+               [&](std::size_t cell, const float* v) {
+                   out.visibility[cell] = v[0];
+                   out.texelWorld[cell] = v[1];
+               });
+    if (!mWithTint) return;
+    readLayers(mTint, GL_RGBA, 4, out.width, out.height, lights,
+               [&](std::size_t cell, const float* v) { std::copy(v, v + 3, &out.tint[3 * cell]); });
+}
+
+}  // namespace gnomon::render

@@ -1,0 +1,161 @@
+// Coloured shadows (--blend-shadows coloured): blended casters tint the light through them in
+// 2D maps and cubes, by the colour of their texture where they are textured; a receiver
+// nearer the light than the glass stays untinted; the transmitted light matches the ray-traced
+// reference's within 4/255 on average; the transmittance pass runs only for maps drawn and
+// only when something blended casts; encoded depth formats are refused.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "GlTest.h"
+#include "scene/MeshBuilder.h"
+
+namespace gnomon::test {
+namespace {
+
+constexpr int kSize = 128;
+constexpr float kHalfView = 5.0f;  // the orthographic camera sees x, z in [-5, 5]
+
+const std::uint8_t* at(const Image& image, float x, float z) {
+    auto pixel = [](float v) { return int((v + kHalfView) / (2.0f * kHalfView) * float(kSize)); };
+    return image.at(pixel(x), pixel(z));
+}
+
+// A pane at height 2 over x in [-3, 3], z in [-2, 2], blended at alpha 0.6 and textured with
+// two texels: red on the left half (u < 0.5), blue on the right. A white cap stands on its
+// left half (x in [-2.5, -1.5], z in [-2, -1], up to 2.5). A sun at 45 degrees shifts the
+// pane's shadow 2 along +z: red light on x in [-3, 0], blue on [0, 3], for z in [0, 4]; the
+// camera looks straight down, so beyond z = 2 the floor is seen past the pane. `point`: a
+// point light at (0, 8, -6) instead: red on x in [-4, 0], blue [0, 4], z in [-0.7, 4.7].
+Scene glassPane(bool point) {
+    Scene s;
+    s.name = "glass pane";
+    Material white;
+    white.baseColour = glm::vec3(0.8f);
+    white.specular = 0.0f;
+    s.materials.push_back(white);
+    Material glass = white;
+    glass.baseColour = glm::vec3(1.0f);
+    glass.doubleSided = true;
+    glass.alphaMode = AlphaMode::Blend;
+    glass.alpha = 1.0f;
+    glass.baseColourTexture = 0;
+    s.materials.push_back(glass);
+    Texture t;
+    t.name = "red | blue";
+    t.width = 2;
+    t.height = 1;
+    t.rgba = {255, 30, 30, 153, 30, 30, 255, 153};  // alpha 0.6
+    t.nearest = true;
+    s.textures.push_back(t);
+    s.meshes.push_back(mesh::box("floor", {0.0f, -0.05f, 0.0f}, {14.0f, 0.1f, 14.0f}));
+    Mesh pane;
+    pane.name = "pane";
+    pane.positions = {{-3, 2, -2}, {-3, 2, 2}, {3, 2, 2}, {3, 2, -2}};
+    pane.normals.assign(4, glm::vec3(0, 1, 0));
+    pane.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+    pane.indices = {0, 1, 2, 0, 2, 3};
+    s.meshes.push_back(pane);
+    s.meshes.push_back(mesh::box("cap", {-2.0f, 2.25f, -1.5f}, {1.0f, 0.5f, 1.0f}));
+    s.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, true, true});
+    s.objects.push_back({"pane", 1, 1, glm::mat4(1.0f), {}, true, true});
+    s.objects.push_back({"cap", 2, 0, glm::mat4(1.0f), {}, true, true});
+    Light light;
+    light.type = point ? LightType::Point : LightType::Directional;
+    light.direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f));
+    light.position = {0.0f, 8.0f, -6.0f};
+    light.attenuation = {1.0f, 0.0f, 0.0f};
+    light.shadowMapSize = 1024;
+    s.lights.push_back(light);
+    s.camera = lookingStraightDown(kHalfView);
+    s.ambient = glm::vec3(0.05f);
+    s.options.width = s.options.height = kSize;
+    s.options.shadow.blendShadows = BlendShadows::Coloured;
+    return s;
+}
+
+class ColouredShadows : public ::testing::TestWithParam<bool> {};
+
+TEST_P(ColouredShadows, GlassTintsTheLightThroughIt) {
+    const Scene s = glassPane(GetParam());
+    const Image image = sharedRenderer().render(s, s.options);
+    writePng(outputDir() + std::string("/coloured_") + (GetParam() ? "point" : "sun") + ".png",
+             image);
+    const std::uint8_t* r = at(image, -1.5f, 3.2f);
+    const std::uint8_t* b = at(image, 1.5f, 3.2f);
+    const std::uint8_t* open = at(image, -4.5f, 3.5f);
+    std::printf("under red %d %d %d, under blue %d %d %d, open %d %d %d\n", r[0], r[1], r[2], b[0],
+                b[1], b[2], open[0], open[1], open[2]);
+    EXPECT_GT(r[0], r[1] * 3 / 2) << "red light under the red half";
+    EXPECT_GT(b[2], b[1] * 3 / 2) << "blue light under the blue half";
+    EXPECT_NEAR(open[0], open[2], 2) << "open floor: untinted";
+    EXPECT_LT(luminance(r), luminance(open)) << "the glass passes less than all the light";
+    // Dithered, the same glass gives grey partial shadow: the test can tell them apart.
+    RenderOptions o = s.options;
+    o.shadow.blendShadows = BlendShadows::Dithered;
+    const std::uint8_t* grey = at(sharedRenderer().render(s, o), -1.5f, 3.2f);
+    EXPECT_NEAR(grey[0], grey[1], 4);
+}
+
+TEST_P(ColouredShadows, MatchesTheReference) {
+    const Scene s = glassPane(GetParam());
+    const ScoreResult result = score(sharedRenderer(), s, s.options);
+    std::printf("coloured shadows (%s): %.2f/255 over %ld tinted cells\n",
+                GetParam() ? "point" : "sun", 255.0 * result.tint.meanError, result.tint.cells);
+    EXPECT_GT(result.tint.cells, kSize * kSize / 20) << "a good part of the view is tinted";
+    EXPECT_LT(result.tint.meanError, 4.0 / 255.0);
+    EXPECT_LT(result.overall.misclassified, 0.01);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lights, ColouredShadows, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "Point" : "Sun"; });
+
+TEST(ColouredShadowsPass, NearerTheLightThanTheGlassStaysUntinted) {
+    const Scene s = glassPane(false);
+    const std::uint8_t* cap = at(sharedRenderer().render(s, s.options), -2.0f, -1.5f);
+    EXPECT_NEAR(cap[0], cap[1], 2) << "the cap's top, above the red glass: white light";
+    EXPECT_NEAR(cap[0], cap[2], 2);
+    EXPECT_GT(cap[0], 150);
+}
+
+TEST(ColouredShadowsPass, DrawnOnlyForMapsDrawnAndOnlyForBlendedCasters) {
+    const Scene s = glassPane(false);
+    Renderer& r = sharedRenderer();
+    r.invalidateShadowMaps();
+    (void)r.render(s, s.options);
+    const FrameStats first = r.lastFrameStats();
+    ASSERT_GE(first.shadowPasses, 1);
+    EXPECT_EQ(first.transmittancePasses, first.shadowPasses);
+    (void)r.render(s, s.options);
+    EXPECT_EQ(r.lastFrameStats().shadowPasses, 0);
+    EXPECT_EQ(r.lastFrameStats().transmittancePasses, 0) << "kept maps keep their tint";
+    // Moving the glass redraws the map and its tint.
+    Scene moved = s;
+    moved.objects[1].worldFromModel = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0, 0));
+    (void)r.render(moved, moved.options);
+    EXPECT_EQ(r.lastFrameStats().transmittancePasses, first.shadowPasses);
+    // Nothing blended casts: no pass, no memory for it.
+    Scene opaque = s;
+    opaque.objects[1].castsShadows = false;
+    (void)r.render(opaque, opaque.options);
+    EXPECT_EQ(r.lastFrameStats().transmittancePasses, 0);
+    RenderOptions dithered = opaque.options;
+    dithered.shadow.blendShadows = BlendShadows::Dithered;
+    const std::size_t bytes = r.lastFrameStats().shadowMapBytes;
+    (void)r.render(opaque, dithered);
+    EXPECT_EQ(r.lastFrameStats().shadowMapBytes, bytes);
+}
+
+TEST(ColouredShadowsPass, EncodedMapsAreRefused) {
+    RenderOptions o;
+    o.shadow.blendShadows = BlendShadows::Coloured;
+    o.shadow.depthFormat = DepthFormat::Rgba8Packed256;
+    const std::vector<std::string> problems = o.validate();
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_NE(problems[0].find("coloured"), std::string::npos) << problems[0];
+}
+
+}  // namespace
+}  // namespace gnomon::test
