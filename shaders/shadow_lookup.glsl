@@ -391,7 +391,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);
     vec2 uv = origin + coord.xy * uvScale;
 #if defined(COLOURED_SHADOWS)
-    gTint = mapTint(uv, layer, reference, origin, uvScale, texelUv);
+    gTint = mapTint(uv, layer, reference, lo, hi, texelUv);
 #endif
 #if defined(FILTER_MOMENTS)
     return momentVisibility(light, clamp(uv, lo, hi), layer, reference);

@@ -3,7 +3,7 @@
 // depth maps are. A texel tints only a receiver behind the nearest blended caster it holds
 // (its alpha: that caster's stored depth), so what lies between the glass and the light
 // stays untinted.
-layout(binding = 7) uniform sampler2DArray uTransmittance;         // read by texelFetch
+layout(binding = 7) uniform sampler2DArray uTransmittance;         // LINEAR
 layout(binding = 8) uniform samplerCubeArray uTransmittanceCubes;  // NEAREST
 
 // The last lookup's transmittance (white: nothing tinted the light).
@@ -13,22 +13,21 @@ vec3 tintOf(vec4 stored, float reference) {
     return reference > stored.a ? stored.rgb : vec3(1.0);
 }
 
-// 2D maps: bilinear by hand over the 2x2 texels around `uv` (layer coordinates), kept
-// inside the map's square [originUv, originUv + uvScale]; each texel tested on its own.
-vec3 mapTint(vec2 uv, float layer, float reference, vec2 originUv, float uvScale,
-             float texelUv) {
-    vec2 s = uv / texelUv - 0.5;  // in texels of the layer: texel i's centre is at i
-    vec2 base = floor(s);
-    vec2 f = s - base;
-    vec2 first = floor(originUv / texelUv + 0.5);
-    vec2 last = first + floor(uvScale / texelUv + 0.5) - 1.0;
-    ivec2 a = ivec2(clamp(base, first, last)), b = ivec2(clamp(base + 1.0, first, last));
-    int l = int(layer);
-    vec3 t00 = tintOf(texelFetch(uTransmittance, ivec3(a.x, a.y, l), 0), reference);
-    vec3 t10 = tintOf(texelFetch(uTransmittance, ivec3(b.x, a.y, l), 0), reference);
-    vec3 t01 = tintOf(texelFetch(uTransmittance, ivec3(a.x, b.y, l), 0), reference);
-    vec3 t11 = tintOf(texelFetch(uTransmittance, ivec3(b.x, b.y, l), 0), reference);
-    return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+// 2D maps: the bilinear transmittance around `uv` (layer coordinates, kept inside the map's
+// square [lo, hi]) counted for the share of its 2x2 footprint whose nearest blended caster
+// lies in front of the receiver; clear texels (depth 1, transmittance 1) count as in front,
+// which changes nothing they add. Exact wherever the tinting texels agree; two reads (one
+// gather of the depths, one bilinear read of the colour) where reading the four texels one by
+// one cost four: measured, that made the main pass 30 % slower than without a tint.
+vec3 mapTint(vec2 uv, float layer, float reference, vec2 lo, vec2 hi, float texelUv) {
+    uv = clamp(uv, lo, hi);
+    vec4 depths = textureGather(uTransmittance, vec3(uv, layer), 3);
+    vec2 f = fract(uv / texelUv - 0.5);
+    // Gathered as (i, j+1), (i+1, j+1), (i+1, j), (i, j): their bilinear weights.
+    vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+    vec4 through = max(vec4(lessThan(depths, vec4(reference))), vec4(greaterThanEqual(depths, vec4(1.0))));
+    vec3 rgb = texture(uTransmittance, vec3(uv, layer)).rgb;
+    return mix(vec3(1.0), rgb, dot(w, through));
 }
 
 // Cubes: the nearest texel of the face the direction meets.

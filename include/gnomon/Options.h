@@ -130,7 +130,7 @@ struct ShadowOptions {
     float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
-    BlendShadows blendShadows = BlendShadows::Dithered;  // shadows of blended materials
+    BlendShadows blendShadows = BlendShadows::Coloured;  // shadows of blended materials
     // Stand-in casters: the share of each mesh's triangles drawn into shadow maps, 0.001..1
     // (meshoptimizer's simplification, made once per value); 1 = the full meshes.
     float casterDetail = 1.0f;

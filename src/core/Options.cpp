@@ -150,12 +150,6 @@ std::vector<std::string> RenderOptions::validate() const {
                            " needs a native --depth-format (depth16, depth24 or depth32f), not " +
                            toString(shadow.depthFormat));
     }
-    // The transmittance pass tests against the maps' depth, which encoded formats keep apart.
-    if (shadow.blendShadows == BlendShadows::Coloured && isColourFormat(shadow.depthFormat)) {
-        problems.push_back(std::string("blend-shadows coloured needs a native --depth-format "
-                                       "(depth16, depth24 or depth32f), not ") +
-                           toString(shadow.depthFormat));
-    }
     return problems;
 }
 

@@ -212,19 +212,22 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         glBindTextureUnit(6, in.shadowMoments->id());
         glBindSampler(6, mMomentSampler.id());
     }
-    // Coloured shadows' transmittance: units 7 (2D maps, fetched) and 8 (cubes, NEAREST).
+    // Coloured shadows' transmittance: units 7 (2D maps, LINEAR) and 8 (cubes, NEAREST).
     if (in.transmittance) {
-        if (!mNearestSampler) {
-            mNearestSampler = gl::Sampler("transmittance sampler");
-            mNearestSampler.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST)
-                .set(GL_TEXTURE_MAG_FILTER, GL_NEAREST)
+        auto clamped = [](gl::Sampler& sampler, const char* label, GLint filter) {
+            if (sampler) return;
+            sampler = gl::Sampler(label);
+            sampler.set(GL_TEXTURE_MIN_FILTER, filter)
+                .set(GL_TEXTURE_MAG_FILTER, filter)
                 .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
                 .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        }
+        };
+        clamped(mTintSampler, "transmittance sampler", GL_LINEAR);
+        clamped(mTintCubeSampler, "transmittance cube sampler", GL_NEAREST);
         glBindTextureUnit(7, in.transmittance->maps() ? in.transmittance->maps().id() : 0);
         glBindTextureUnit(8, in.transmittance->cubes() ? in.transmittance->cubes().id() : 0);
-        glBindSampler(7, mNearestSampler.id());
-        glBindSampler(8, mNearestSampler.id());
+        glBindSampler(7, mTintSampler.id());
+        glBindSampler(8, mTintCubeSampler.id());
     }
     // The view's depth for contact shadows: unit 5, read raw.
     if (in.viewDepth) {

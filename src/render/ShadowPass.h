@@ -61,6 +61,9 @@ public:
     double bareDepthPass(const GpuScene& scene, const glm::mat4& clipFromWorld, int size);
     // The 2D maps: a depth texture, or for colour formats an RGBA8 texture of encoded depth.
     const gl::Texture& maps() const { return mMaps; }
+    // The 2D maps' depth as the rasteriser tested it: the maps themselves, or for colour
+    // formats the depth buffer drawn beside the encoded maps.
+    const gl::Texture& mapDepth() const { return mColourDepth ? mColourDepth : mMaps; }
     DepthFormat mapFormat() const { return mMapFormat; }
     const gl::Texture& cubes() const { return mCubes; }
     int mapArraySize() const { return mMaps ? mMaps.width() : 0; }

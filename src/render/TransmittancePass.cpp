@@ -42,7 +42,7 @@ void TransmittancePass::allocate(const ShadowPass& pass) {
     mFaceTargets.clear();
     mMaps = gl::Texture();
     mCubes = gl::Texture();
-    if (const gl::Texture& depth = pass.maps(); pass.mapArraySize() > 0) {
+    if (const gl::Texture& depth = pass.mapDepth(); pass.mapArraySize() > 0) {
         const int size = depth.width(), layers = depth.layers();
         mMaps = gl::Texture::array2D("transmittance maps", GL_RGBA16, size, size, layers);
         if (!mMaps.allocated()) {

@@ -2,7 +2,7 @@
 // 2D maps and cubes, by the colour of their texture where they are textured; a receiver
 // nearer the light than the glass stays untinted; the transmitted light matches the ray-traced
 // reference's within 4/255 on average; the transmittance pass runs only for maps drawn and
-// only when something blended casts; encoded depth formats are refused.
+// only when something blended casts; every depth format tints.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -148,13 +148,18 @@ TEST(ColouredShadowsPass, DrawnOnlyForMapsDrawnAndOnlyForBlendedCasters) {
     EXPECT_EQ(r.lastFrameStats().shadowMapBytes, bytes);
 }
 
-TEST(ColouredShadowsPass, EncodedMapsAreRefused) {
-    RenderOptions o;
-    o.shadow.blendShadows = BlendShadows::Coloured;
-    o.shadow.depthFormat = DepthFormat::Rgba8Packed256;
-    const std::vector<std::string> problems = o.validate();
-    ASSERT_EQ(problems.size(), 1u);
-    EXPECT_NE(problems[0].find("coloured"), std::string::npos) << problems[0];
+TEST(ColouredShadowsPass, EveryDepthFormatTints) {
+    // Encoded formats test the glass against the depth buffer drawn beside their maps.
+    for (DepthFormat f : {DepthFormat::R8, DepthFormat::Rgba8Packed256, DepthFormat::Depth16}) {
+        const Scene s = glassPane(false);
+        RenderOptions o = s.options;
+        o.shadow.depthFormat = f;
+        const Image image = sharedRenderer().render(s, o);
+        const std::uint8_t* r = at(image, -1.5f, 3.2f);
+        EXPECT_GT(r[0], r[1] * 3 / 2) << toString(f);
+        const std::uint8_t* cap = at(image, -2.0f, -1.5f);
+        EXPECT_NEAR(cap[0], cap[1], 2) << toString(f) << ": above the glass, untinted";
+    }
 }
 
 }  // namespace
