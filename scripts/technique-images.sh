@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Renders the pictures of docs/techniques.md into docs/images/techniques/ (256x256, the
-# Release build) from examples/presets.txt: each line an output name, then the render flags.
+# Release build) from examples/presets.txt: each line an output name, then the render flags;
+# then the coloured-shadow pictures.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 make build >/dev/null
@@ -13,3 +14,22 @@ while read -r name flags; do
     "$gnomon" render --size 256x256 $flags --out "$out/$name.png"
     echo "$out/$name.png"
 done < examples/presets.txt
+# Coloured shadows: a scene file (the presets are the viewer's too, and name built-in scenes),
+# and the error maps `gnomon score` writes beside its render.
+glass=examples/stained-glass.json
+"$gnomon" render --size 256x256 --scene "$glass" --blend-shadows dithered \
+    --out "$out/coloured-dithered.png"
+"$gnomon" render --size 256x256 --scene "$glass" --out "$out/coloured.png"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$gnomon" score --size 256x256 --scene "$glass" --out-dir "$work/glass" >/dev/null
+cp "$work/glass/tint-errors.png" "$out/coloured-errors.png"
+stripes=../shared/scenes/AlphaBlendModeTest/AlphaBlendModeTest.glb
+if [[ -f $stripes ]]; then
+    for size in 1024 4096; do
+        "$gnomon" score --size 256x256 --scene "$stripes" --ground --sun 30,60 \
+            --map-size "$size" --out-dir "$work/stripes-$size" >/dev/null 2>&1
+        cp "$work/stripes-$size/tint-errors.png" "$out/coloured-errors-$size.png"
+    done
+fi
+echo "$out/coloured*.png"

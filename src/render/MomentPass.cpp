@@ -109,19 +109,10 @@ int MomentPass::update(const ShadowPass& pass, const std::vector<ShadowedLight>&
         if (clock) clock->start();
         passes += blur(pass, light, options.momentBlur);
         if (clock && timings) {
-            timings->push_back(clock->stop(
-                "moments light " + std::to_string(light.light) +
-                    (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : ""),
-                light.light, 0));
+            timings->push_back(clock->stop(mapPassName("moments", light), light.light, 0));
         }
     };
-    if (all) {
-        for (const ShadowedLight& light : lights)
-            one(light);
-    } else {
-        for (int i : drawn)
-            one(lights[std::size_t(i)]);
-    }
+    forMapsDrawn(lights, drawn, all, one);
     glEnable(GL_DEPTH_TEST);
     return passes;
 }

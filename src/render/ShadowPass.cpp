@@ -398,10 +398,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         }
         stats.triangles += triangles;
         if (clock && timings) {
-            timings->push_back(clock->stop(
-                "shadow light " + std::to_string(light.light) +
-                    (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : ""),
-                light.light, triangles));
+            timings->push_back(clock->stop(mapPassName("shadow", light), light.light, triangles));
         }
     }
     if (any) {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "gl/Objects.h"
@@ -34,6 +35,27 @@ struct ShadowedLight {
     float depthFrom = 0.0f, depthTo = std::numeric_limits<float>::max();
     glm::ivec2 origin{0};  // 2D maps: the map's lower-left texel in its layer (shadow pass)
 };
+
+// A pass's name for one map in FrameStats::passes: "<what> light N[, cascade K]".
+inline std::string mapPassName(const char* what, const ShadowedLight& light) {
+    return std::string(what) + " light " + std::to_string(light.light) +
+           (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : "");
+}
+
+// The passes that follow the shadow pass per map (moments, transmittance) run for the maps
+// it drew (`drawn`: indices into `lights`), or for every map when `all` (their own targets
+// are new): `pass(light)` for each.
+template <typename Pass>
+void forMapsDrawn(const std::vector<ShadowedLight>& lights, const std::vector<int>& drawn, bool all,
+                  const Pass& pass) {
+    if (all) {
+        for (const ShadowedLight& light : lights)
+            pass(light);
+    } else {
+        for (int i : drawn)
+            pass(lights[std::size_t(i)]);
+    }
+}
 
 struct ShadowPassStats {
     int rendered = 0;             // maps drawn this frame (the others were kept)

@@ -138,20 +138,12 @@ int TransmittancePass::update(const GpuScene& scene, const ShadowPass& pass,
             std::uint64_t triangles = 0;
             for (std::uint32_t i : mVisible)
                 triangles += std::uint64_t(scene.items()[i].indexCount / 3);
-            timings->push_back(clock->stop(
-                "transmittance light " + std::to_string(light.light) +
-                    (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : ""),
-                light.light, triangles));
+            timings->push_back(
+                clock->stop(mapPassName("transmittance", light), light.light, triangles));
         }
     };
     scene.bind();
-    if (all) {
-        for (const ShadowedLight& light : lights)
-            one(light);
-    } else {
-        for (int i : drawn)
-            one(lights[std::size_t(i)]);
-    }
+    forMapsDrawn(lights, drawn, all, one);
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);

@@ -281,6 +281,13 @@ void Viewer::scorePanel() {
     ImGui::TextWrapped("false shadow %.2f%%   leak %.2f%%", 100.0 * o.falseShadow, 100.0 * o.leak);
     ImGui::TextWrapped("away from edges: false shadow %.2f%%, leak %.2f%%",
                        100.0 * o.falseShadowOutsideBand, 100.0 * o.leakOutsideBand);
+    if (mScore->tint.cells > 0) {
+        ImGui::TextWrapped("tinted light (coloured shadows): off by %.2f/255 on average",
+                           255.0 * mScore->tint.meanError);
+        tooltip(
+            "the light blended casters let through against the reference's, over the "
+            "pixels they tint (gnomon score writes tint-errors.png)");
+    }
     ImGui::Checkbox("error overlay", &mOverlay);
     tooltip("red: false shadow (acne), blue: light leak; pale inside the aliasing band");
     ImGui::SameLine();
