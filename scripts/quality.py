@@ -29,6 +29,15 @@ VARIANTS = [
     ("4 cascades", ["--cascades", "4"]),
 ]
 
+# Scenes beyond the built-in ones, each with its own variants: (name, scene file, variants).
+# examples/stained-glass.json is what coloured shadows (the default for blended casters) are
+# for; dithered blend shadows are the rule they replaced.
+EXTRA = [
+    ("stained-glass", os.path.join(ROOT, "examples", "stained-glass.json"),
+     [("defaults (coloured)", []), ("blend dithered", ["--blend-shadows", "dithered"]),
+      ("pcss", ["--filter", "pcss"]), ("msm", ["--filter", "msm"])]),
+]
+
 
 def run(args):
     result = subprocess.run([GNOMON] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -48,17 +57,19 @@ def main():
     args = parser.parse_args()
     if not os.access(GNOMON, os.X_OK):
         sys.exit(f"{GNOMON} not found: run `make build` first")
-    scenes = run(["scenes", "--names"]).split()
+    cases = [(scene, scene, VARIANTS) for scene in run(["scenes", "--names"]).split()] + EXTRA
     gl = ""
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        for scene in scenes:
-            for label, flags in VARIANTS:
+        for scene, source, variants in cases:
+            for label, flags in variants:
                 print(f"quality: {scene}: {label}", file=sys.stderr)
-                run(["score", "--scene", scene, "--out-dir", work] + flags)
+                run(["score", "--scene", source, "--out-dir", work] + flags)
                 with open(os.path.join(work, "score.json")) as f:
-                    score = json.load(f)["overall"]
-                run(["bench", "--scene", scene, "--frames", str(args.frames), "--warmup", "1",
+                    result = json.load(f)
+                score = result["overall"]
+                score["tint"] = result.get("tint")
+                run(["bench", "--scene", source, "--frames", str(args.frames), "--warmup", "1",
                      "--static", "--out-dir", work] + flags)
                 with open(os.path.join(work, "bench.json")) as f:
                     bench = json.load(f)
@@ -68,6 +79,10 @@ def main():
 
     def pct(v):
         return f"{100.0 * v:.3f}"
+
+    def tint(s):
+        t = s.get("tint")
+        return f"{255.0 * t['mean_error']:.2f}" if t and t["cells"] > 0 else "–"
 
     lines = [
         "# Shadow quality of every built-in scene",
@@ -81,6 +96,9 @@ def main():
     ]
     for label, flags in VARIANTS:
         lines.append(f"- **{label}**: `{' '.join(flags) if flags else '(none)'}`")
+    for scene, source, variants in EXTRA:
+        lines.append(f"- and `{os.path.relpath(source, ROOT)}` (**{scene}**): " + ", ".join(
+            f"**{label}** `{' '.join(flags) if flags else '(none)'}`" for label, flags in variants))
     lines += [
         "",
         "Percentages are of the pixels where a light's shadow can show (the light reaches a",
@@ -94,18 +112,23 @@ def main():
         "  a reference shadow edge, where aliasing is expected (measured along the surface: on",
         "  a surface tilted by θ to the light a texel covers 1/cos θ of it, counted up to 4).",
         "",
+        "- **tinted light error**: where blended casters tint the light (coloured shadows),",
+        "  the mean difference of the light arriving from the reference's, in 8-bit steps",
+        "  (– where nothing is tinted).",
+        "",
         "`pcss` is compared with the soft reference (64 rays to the light's disc or cone per",
         "pixel), the others with the hard one.",
         "",
         "| scene | technique | misclassified % | false shadow % | leak % "
-        "| false shadow away from edges % | leak away from edges % | frame ms |",
-        "|---|---|---|---|---|---|---|---|",
+        "| false shadow away from edges % | leak away from edges % | tinted light error /255 "
+        "| frame ms |",
+        "|---|---|---|---|---|---|---|---|---|",
     ]
     for scene, label, s, frame in rows:
         lines.append(
             f"| {scene} | {label} | {pct(s['misclassified'])} | {pct(s['false_shadow'])} | "
             f"{pct(s['leak'])} | {pct(s['false_shadow_outside_band'])} | "
-            f"{pct(s['leak_outside_band'])} | {frame:.1f} |")
+            f"{pct(s['leak_outside_band'])} | {tint(s)} | {frame:.1f} |")
     # The temporal-stability section (scripts/quality-flicker.py) is kept as it was.
     kept = ""
     if os.path.exists(args.out):
