@@ -39,10 +39,10 @@ const float kPlaneMaxApproach = 6.0;
 // filter's reach. Wider angles were measured and rejected: from 85 degrees on, walls and
 // posts edge-on to the sun leak beside the casters that touch them (Sponza's atrium 0.5 % to
 // 1.0 % misclassified, the Lantern's lamp 0.23 % to 0.90 %).
-vec3 grazingPlaneOffset(vec3 wsToLight, float texelWorld) {
+vec3 grazingPlaneOffset(vec3 wsToLight, float texelWorld, float reach) {
     float c = dot(gPlaneNormal, wsToLight);
     if (abs(c) >= 1e-3) return vec3(0.0);
-    return (c < 0.0 ? -gPlaneNormal : gPlaneNormal) * (kFilterReach * texelWorld);
+    return (c < 0.0 ? -gPlaneNormal : gPlaneNormal) * (reach * texelWorld);
 }
 // The plane's full, uncapped gradient of the last receiverPlaneGradient call.
 vec2 gPlaneFull = vec2(0.0);

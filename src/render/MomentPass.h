@@ -2,7 +2,7 @@
 // moments of each 2D map it drew go into an RGBA32F array laid out as the depth maps are
 // (same layers, same squares), which the main pass reads with one bilinear lookup; with a
 // blur, box-blurred in two passes (rows into a scratch texture, then columns). Point lights' cubes
-// have no moments: their lookups keep one comparison.
+// have no moments: their lookups keep the default 3x3 PCF.
 #pragma once
 #include <vector>
 

@@ -73,6 +73,24 @@ TEST(MomentFilters, FourMomentsBleedLessThanTwo) {
     EXPECT_LT(leak(ShadowFilter::Msm), 0.6 * two);
 }
 
+// Point lights' cubes have no moments: with the moment filters their lookups are the default
+// 3 x 3 PCF, so a scene lit by a cube alone sees exactly what PCF sees.
+TEST(MomentFilters, CubesKeepTheDefaultPcf) {
+    const Scene s = builtinScene("tutorial-point");
+    ShadowVisibility pcf, msm;
+    (void)sharedRenderer().render(s, small(s, ShadowFilter::Pcf), pcf);
+    ASSERT_GT(sharedRenderer().lastFrameStats().shadowPasses, 0);
+    (void)sharedRenderer().render(s, small(s, ShadowFilter::Msm), msm);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().momentPasses, 0) << "the light has a cube";
+    ASSERT_EQ(pcf.visibility.size(), msm.visibility.size());
+    int partial = 0;
+    for (std::size_t i = 0; i < pcf.visibility.size(); ++i) {
+        ASSERT_EQ(pcf.visibility[i], msm.visibility[i]) << "cell " << i;
+        partial += pcf.visibility[i] > 0.0f && pcf.visibility[i] < 1.0f;
+    }
+    EXPECT_GT(partial, 10) << "filtered edges, not one comparison";
+}
+
 TEST(MomentFilters, EncodedMapsAreRefused) {
     RenderOptions o;
     o.shadow.filter = ShadowFilter::Msm;
