@@ -95,7 +95,8 @@ TEST_P(ColouredShadows, GlassTintsTheLightThroughIt) {
     // Dithered, the same glass gives grey partial shadow: the test can tell them apart.
     RenderOptions o = s.options;
     o.shadow.blendShadows = BlendShadows::Dithered;
-    const std::uint8_t* grey = at(sharedRenderer().render(s, o), -1.5f, 3.2f);
+    const Image dithered = sharedRenderer().render(s, o);
+    const std::uint8_t* grey = at(dithered, -1.5f, 3.2f);
     EXPECT_NEAR(grey[0], grey[1], 4);
 }
 
@@ -114,7 +115,8 @@ INSTANTIATE_TEST_SUITE_P(Lights, ColouredShadows, ::testing::Values(false, true)
 
 TEST(ColouredShadowsPass, NearerTheLightThanTheGlassStaysUntinted) {
     const Scene s = glassPane(false);
-    const std::uint8_t* cap = at(sharedRenderer().render(s, s.options), -2.0f, -1.5f);
+    const Image image = sharedRenderer().render(s, s.options);
+    const std::uint8_t* cap = at(image, -2.0f, -1.5f);
     EXPECT_NEAR(cap[0], cap[1], 2) << "the cap's top, above the red glass: white light";
     EXPECT_NEAR(cap[0], cap[2], 2);
     EXPECT_GT(cap[0], 150);
