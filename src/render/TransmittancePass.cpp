@@ -14,7 +14,8 @@ namespace {
 [[noreturn]] void refused(const std::string& what, std::size_t bytes) {
     throw Error(ErrorKind::Gl, "coloured shadows: " + what + " of RGBA16 need " +
                                    std::to_string(bytes >> 20) +
-                                   " MiB, which the OpenGL driver refused; lower --map-size");
+                                   " MiB, which the OpenGL driver refused; lower --map-size "
+                                   "or use --blend-shadows dithered (no transmittance maps)");
 }
 
 gl::Framebuffer target(const std::string& label, GLuint colour, GLuint depth, int layer) {
