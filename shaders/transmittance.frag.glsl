@@ -19,6 +19,9 @@ layout(location = 0) out vec4 transmittance;
 void main() {
     vec4 texel = textureLod(uBaseColourTexture, vAlpha.uv, 0.0);
     float a = clamp(vAlpha.alpha * texel.a, 0.0, 1.0);
+    // Fully opaque texels are in the depth map already (BLEND_OPAQUE_PARTS): they shadow, with
+    // the depth map's filtering, and must not darken the tint of the texels around them.
+    if (a >= 254.5 / 255.0) discard;
     vec3 c = clamp(vColour * texel.rgb, 0.0, 1.0);
     transmittance = vec4((1.0 - a) * mix(vec3(1.0), c, a), gl_FragCoord.z);
 }

@@ -46,23 +46,23 @@ struct DrawItem {
     std::size_t standInFirstIndexByte = 0;
 };
 
-// Does `item` draw into shadow maps' depth with these options (blended casters may not:
-// with --blend-shadows coloured they go to the transmittance maps instead)?
+// Does `item` draw into shadow maps' depth with these options? Blended casters may not; with
+// --blend-shadows coloured only their fully opaque texels do (the rest tints the light
+// through the transmittance maps).
 inline bool castsShadow(const DrawItem& item, const ShadowOptions& options) {
     return item.casts && item.indexCount > 0 &&
-           !(item.alphaMode == AlphaMode::Blend &&
-             (options.blendShadows == BlendShadows::None ||
-              options.blendShadows == BlendShadows::Coloured));
+           !(item.alphaMode == AlphaMode::Blend && options.blendShadows == BlendShadows::None);
 }
 // Does it tint the light through it (drawn into the transmittance maps)?
 inline bool castsTint(const DrawItem& item, const ShadowOptions& options) {
     return item.casts && item.indexCount > 0 && item.alphaMode == AlphaMode::Blend &&
            options.blendShadows == BlendShadows::Coloured;
 }
-// Does it need the alpha-tested depth programs (masked, or blended and dithered)?
+// Does it need the alpha-tested depth programs (masked, or blended and dithered or coloured)?
 inline bool alphaTestedCaster(const DrawItem& item, const ShadowOptions& options) {
     return item.alphaMode == AlphaMode::Mask ||
-           (item.alphaMode == AlphaMode::Blend && options.blendShadows == BlendShadows::Dithered);
+           (item.alphaMode == AlphaMode::Blend && (options.blendShadows == BlendShadows::Dithered ||
+                                                   options.blendShadows == BlendShadows::Coloured));
 }
 
 class GpuScene {

@@ -17,12 +17,13 @@ ShadowPass::ShadowPass(bool layeredCubes)
     program(kPlain, false);  // the one every shadow needs: shader errors show up front
 }
 
-const gl::Program& ShadowPass::program(int variant, bool alphaTested) {
-    gl::Program& p = mPrograms[variant][alphaTested ? 1 : 0];
+const gl::Program& ShadowPass::program(int variant, bool alphaTested, bool opaqueParts) {
+    gl::Program& p = mPrograms[variant][alphaTested ? (opaqueParts ? 2 : 1) : 0];
     if (p) return p;
     static const char* const kPacking[3] = {"PACK_R8", "PACK_256", "PACK_255"};
     std::vector<std::string> defines;
     if (alphaTested) defines.push_back("ALPHA_TEST");
+    if (alphaTested && opaqueParts) defines.push_back("BLEND_OPAQUE_PARTS");
     std::string name = variant == kPlain  ? "shadow depth"
                        : variant == kCube ? "shadow depth cube"
                                           : "shadow depth ";
@@ -30,7 +31,8 @@ const gl::Program& ShadowPass::program(int variant, bool alphaTested) {
         defines.push_back(kPacking[variant - kColour]);
         name += kPacking[variant - kColour];
     }
-    if (alphaTested) name += " (alpha-tested)";
+    if (alphaTested)
+        name += opaqueParts ? " (alpha-tested, blended: opaque parts)" : " (alpha-tested)";
     p = gl::buildProgram(
         name,
         {{GL_VERTEX_SHADER, variant == kCube ? "depth_cube.vert.glsl" : "depth.vert.glsl"},
@@ -182,17 +184,17 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         const DrawItem& item = items[i];
         // Tinting casters are drawn by the transmittance pass, after this map: they count in
-        // the hash (moving one redraws both) but are not drawn here.
-        const bool tints = castsTint(item, options);
-        if (!castsShadow(item, options) && !tints) continue;
+        // the hash (moving one redraws both); their opaque texels are drawn here too.
+        const bool depth = castsShadow(item, options), tints = castsTint(item, options);
+        if (!depth && !tints) continue;
         const bool outside =
             cube ? shadow::outsideCube(item.bounds, light.frame)
                  : shadow::outsideClipVolume(item.bounds, clipFromWorld, light.depthClamp);
         if (outside) {
-            if (!tints) ++mCulled;
+            if (depth) ++mCulled;
             continue;
         }
-        if (!tints) mVisible.push_back(i);
+        if (depth) mVisible.push_back(i);
         hash = (hash ^ item.dataHash) * 0x100000001b3ull + i;
     }
     return hash;
@@ -211,7 +213,8 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
             return options.cull != CullMode::None && !item.doubleSided && item.closed;
         },
         [&](bool alpha) {
-            glUseProgram(program(variant, alpha).id());
+            glUseProgram(
+                program(variant, alpha, options.blendShadows == BlendShadows::Coloured).id());
             setUniforms();
         });
 }

@@ -118,10 +118,11 @@ private:
     void allocate2D(int size, int layers, DepthFormat format);
     void allocateCubes(int size, int cubes, DepthFormat format);
     // Depth programs: kPlain (2D maps, native depth), kCube (six faces at once), kColour +
-    // 0..2 (r8, packed-256, packed-255 encoders); `alphaTested` adds the ALPHA_TEST variant.
+    // 0..2 (r8, packed-256, packed-255 encoders); `alphaTested` adds the ALPHA_TEST variant,
+    // `opaqueParts` (coloured shadows) keeps only blended casters' fully opaque texels.
     // Built on first use.
     static constexpr int kPlain = 0, kCube = 1, kColour = 2;
-    const gl::Program& program(int variant, bool alphaTested);
+    const gl::Program& program(int variant, bool alphaTested, bool opaqueParts = false);
     void setDepthState(const ShadowOptions& options, bool depthClamp) const;
     // The casters of `light` that can reach its map (indices into scene.items()), and a hash
     // of them; fills mVisible.
@@ -135,7 +136,7 @@ private:
                      GLsizei instances, const SetUniforms& setUniforms);
 
     bool mLayered;
-    gl::Program mPrograms[5][2];
+    gl::Program mPrograms[5][3];  // variant x plain, alpha-tested, opaque parts
     gl::Texture mMaps, mCubes;
     gl::Texture mColourDepth;  // depth test for colour formats
     DepthFormat mMapFormat = DepthFormat::Depth32F;

@@ -104,6 +104,10 @@ void alphaFilter(const RTCFilterFunctionNArguments* args) {
             ctx.transmission *= 1.0f - std::clamp(alphaAt(surface, prim, u, v), 0.0f, 1.0f);
         } else {
             const glm::vec4 c = colourAt(surface, prim, u, v);
+            if (c.a >= kOpaqueBlendAlpha) {
+                args->valid[i] = -1;  // an opaque texel: blocks, as in the depth maps
+                continue;
+            }
             ctx.tint *= tintThrough(glm::vec3(c), c.a);
         }
     }

@@ -5,7 +5,9 @@
 // only when something blended casts; every depth format tints.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -29,7 +31,7 @@ const std::uint8_t* at(const Image& image, float x, float z) {
 // pane's shadow 2 along +z: red light on x in [-3, 0], blue on [0, 3], for z in [0, 4]; the
 // camera looks straight down, so beyond z = 2 the floor is seen past the pane. `point`: a
 // point light at (0, 8, -6) instead: red on x in [-4, 0], blue [0, 4], z in [-0.7, 4.7].
-Scene glassPane(bool point) {
+Scene glassPane(bool point, std::uint8_t alpha = 153) {
     Scene s;
     s.name = "glass pane";
     Material white;
@@ -47,7 +49,7 @@ Scene glassPane(bool point) {
     t.name = "red | blue";
     t.width = 2;
     t.height = 1;
-    t.rgba = {255, 30, 30, 153, 30, 30, 255, 153};  // alpha 0.6
+    t.rgba = {255, 30, 30, alpha, 30, 30, 255, alpha};  // alpha 0.6 by default
     t.nearest = true;
     s.textures.push_back(t);
     s.meshes.push_back(mesh::box("floor", {0.0f, -0.05f, 0.0f}, {14.0f, 0.1f, 14.0f}));
@@ -148,6 +150,41 @@ TEST(ColouredShadowsPass, DrawnOnlyForMapsDrawnAndOnlyForBlendedCasters) {
     const std::size_t bytes = r.lastFrameStats().shadowMapBytes;
     (void)r.render(opaque, dithered);
     EXPECT_EQ(r.lastFrameStats().shadowMapBytes, bytes);
+}
+
+// Many exported models mark opaque materials BLEND: their fully opaque texels shadow as an
+// opaque caster's do (depth map, filtering, self-shadowing), not as a black tint.
+TEST(ColouredShadowsPass, FullyOpaqueBlendedCastersShadowAsOpaqueOnes) {
+    const Scene blended = glassPane(false, 255);
+    Scene opaque = blended;
+    opaque.materials[1].alphaMode = AlphaMode::Opaque;
+    ShadowVisibility vb, vo;
+    const Image b = sharedRenderer().render(blended, blended.options, vb);
+    const Image o = sharedRenderer().render(opaque, opaque.options, vo);
+    EXPECT_TRUE(vo.tint.empty()) << "nothing blended: no transmittance maps";
+    ASSERT_EQ(vb.visibility.size(), vo.visibility.size());
+    for (float z : {0.5f, 3.2f}) {
+        for (float x : {-1.5f, 1.5f}) {
+            SCOPED_TRACE("floor at " + std::to_string(x) + ", " + std::to_string(z));
+            EXPECT_NEAR(luminance(at(b, x, z)), luminance(at(o, x, z)), 6);
+        }
+    }
+    // Where the camera sees the floor in both (not the pane, which only the opaque one hides
+    // the floor with): the same shadow, from the depth maps.
+    int differ = 0, compared = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const float wx = (float(x) + 0.5f) / kSize * 2.0f * kHalfView - kHalfView;
+            const float wz = (float(y) + 0.5f) / kSize * 2.0f * kHalfView - kHalfView;
+            if (std::abs(wx) < 3.2f && std::abs(wz) < 2.2f) continue;
+            const std::size_t cell = std::size_t(y) * kSize + std::size_t(x);  // one light
+            ++compared;
+            differ += std::abs(vb.visibility[cell] - vo.visibility[cell]) > 0.01f;
+        }
+    }
+    EXPECT_LT(differ, compared / 200) << "the same shadow in the depth maps";
+    const ScoreResult result = score(sharedRenderer(), blended, blended.options);
+    EXPECT_LT(result.overall.misclassified, 0.01);
 }
 
 TEST(ColouredShadowsPass, EveryDepthFormatTints) {

@@ -153,6 +153,13 @@ TEST(Truth, BlendedSurfacesTransmitTheirColour) {
     const truth::Reference d = truth::traceReference(s, o, {});
     EXPECT_TRUE(d.tint.empty());
     EXPECT_NEAR(d.hard[d.at(under, row, 0)], 0.25f, 1e-6f);
+
+    // Fully opaque, the blended plate blocks the light as an opaque one does.
+    s.materials[1].alpha = 1.0f;
+    o.shadow.blendShadows = BlendShadows::Coloured;
+    const truth::Reference full = truth::traceReference(s, o, {});
+    EXPECT_EQ(full.hard[full.at(under, row, 0)], 0.0f);
+    EXPECT_EQ(full.tint[full.at(open, row, 0)], glm::vec3(1.0f));
 }
 
 TEST(Metrics, DistanceTransformIsExact) {
