@@ -137,10 +137,10 @@ Sampler::Sampler(const std::string& label) {
     setLabel(GL_SAMPLER, n, label);
 }
 
-Sampler Sampler::storedDepth(const std::string& label) {
+Sampler Sampler::clamped(const std::string& label, GLint filter) {
     Sampler s(label);
-    s.set(GL_TEXTURE_MIN_FILTER, GL_NEAREST)
-        .set(GL_TEXTURE_MAG_FILTER, GL_NEAREST)
+    s.set(GL_TEXTURE_MIN_FILTER, filter)
+        .set(GL_TEXTURE_MAG_FILTER, filter)
         .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
         .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE)
         .set(GL_TEXTURE_COMPARE_MODE, GL_NONE);

@@ -98,8 +98,10 @@ public:
     explicit Sampler(const std::string& label);
     Sampler& set(GLenum parameter, GLint value);
     Sampler& setBorder(float r, float g, float b, float a);
+    // `filter` (minifying and magnifying), clamped to the edge, no comparison.
+    static Sampler clamped(const std::string& label, GLint filter);
     // NEAREST, clamped to the edge, no comparison: a depth texture's stored values as they are.
-    static Sampler storedDepth(const std::string& label);
+    static Sampler storedDepth(const std::string& label) { return clamped(label, GL_NEAREST); }
 };
 
 class Framebuffer : public Object<FramebufferDeleter> {

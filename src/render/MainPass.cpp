@@ -203,31 +203,19 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
     // The moments of the moment filters: unit 6, filtered bilinearly.
     if (in.shadowMoments) {
         if (!mMomentSampler) {
-            mMomentSampler = gl::Sampler("shadow moments sampler");
-            mMomentSampler.set(GL_TEXTURE_MIN_FILTER, GL_LINEAR)
-                .set(GL_TEXTURE_MAG_FILTER, GL_LINEAR)
-                .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
-                .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            mMomentSampler = gl::Sampler::clamped("shadow moments sampler", GL_LINEAR);
         }
         glBindTextureUnit(6, in.shadowMoments->id());
         glBindSampler(6, mMomentSampler.id());
     }
     // Coloured shadows' transmittance: units 7 (2D maps, LINEAR) and 8 (cubes, NEAREST).
     if (in.transmittance) {
-        auto clamped = [](gl::Sampler& sampler, const char* label, GLint filter) {
-            if (sampler) return;
-            sampler = gl::Sampler(label);
-            sampler.set(GL_TEXTURE_MIN_FILTER, filter)
-                .set(GL_TEXTURE_MAG_FILTER, filter)
-                .set(GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE)
-                .set(GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        };
-        clamped(mTintSampler, "transmittance sampler", GL_LINEAR);
-        clamped(mTintCubeSampler, "transmittance cube sampler", GL_NEAREST);
+        if (!mTintSampler) mTintSampler = gl::Sampler::clamped("transmittance sampler", GL_LINEAR);
+        if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
         glBindTextureUnit(7, in.transmittance->maps() ? in.transmittance->maps().id() : 0);
         glBindTextureUnit(8, in.transmittance->cubes() ? in.transmittance->cubes().id() : 0);
         glBindSampler(7, mTintSampler.id());
-        glBindSampler(8, mTintCubeSampler.id());
+        glBindSampler(8, mRawSampler.id());
     }
     // The view's depth for contact shadows: unit 5, read raw.
     if (in.viewDepth) {

@@ -95,11 +95,12 @@ private:
     // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;
-    gl::Sampler mRawSampler;     // stored depth, NEAREST, no comparison (PCSS, contact shadows)
+    // NEAREST, no comparison: stored depth (PCSS, contact shadows), transmittance cubes.
+    gl::Sampler mRawSampler;
     gl::Sampler mMomentSampler;  // moments: LINEAR, clamped (one bilinear lookup filters them)
-    gl::Sampler mTintSampler, mTintCubeSampler;     // transmittance: LINEAR, NEAREST; clamped
-    int mMapSamplerKey = -1, mCubeSamplerKey = -1;  // the filters they were made for
-    gl::Texture mDummyMaps, mDummyCubes;            // bound when a kind of map is absent
+    gl::Sampler mTintSampler;    // 2D transmittance maps: LINEAR, clamped
+    int mMapSamplerKey = -1, mCubeSamplerKey = -1;          // the filters they were made for
+    gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame
 };
 

@@ -177,8 +177,7 @@ void ShadowPass::setDepthState(const ShadowOptions& options, bool depthClamp) co
 std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLight& light,
                                          const ShadowOptions& options) {
     mVisible.clear();
-    const bool cube = light.frame.kind == shadow::FrameKind::Cube;
-    const glm::mat4 clipFromWorld = cube ? glm::mat4(1.0f) : light.frame.clipFromWorld();
+    const LightVolume volume(light);
     std::uint64_t hash = scene.geometryHash();
     const std::vector<DrawItem>& items = scene.items();
     for (std::uint32_t i = 0; i < items.size(); ++i) {
@@ -187,10 +186,7 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
         // the hash (moving one redraws both); their opaque texels are drawn here too.
         const bool depth = castsShadow(item, options), tints = castsTint(item, options);
         if (!depth && !tints) continue;
-        const bool outside =
-            cube ? shadow::outsideCube(item.bounds, light.frame)
-                 : shadow::outsideClipVolume(item.bounds, clipFromWorld, light.depthClamp);
-        if (outside) {
+        if (volume.outside(item.bounds)) {
             if (depth) ++mCulled;
             continue;
         }

@@ -17,6 +17,7 @@
 #include "gnomon/Options.h"
 #include "gnomon/Renderer.h"
 #include "render/GpuScene.h"
+#include "shadow/FrustumClip.h"
 #include "shadow/MapAtlas.h"
 #include "shadow/ShadowMath.h"
 
@@ -34,6 +35,25 @@ struct ShadowedLight {
     // cascade's blend band; every depth for the others).
     float depthFrom = 0.0f, depthTo = std::numeric_limits<float>::max();
     glm::ivec2 origin{0};  // 2D maps: the map's lower-left texel in its layer (shadow pass)
+};
+
+// What a light's map sees, for culling what it need not draw: its clip volume (casters in
+// front of the near plane count when the depth is clamped), or its cube's.
+class LightVolume {
+public:
+    explicit LightVolume(const ShadowedLight& light)
+        : mLight(light),
+          mCube(light.frame.kind == shadow::FrameKind::Cube),
+          mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()) {}
+    bool outside(const Aabb& box) const {
+        return mCube ? shadow::outsideCube(box, mLight.frame)
+                     : shadow::outsideClipVolume(box, mClipFromWorld, mLight.depthClamp);
+    }
+
+private:
+    const ShadowedLight& mLight;
+    bool mCube;
+    glm::mat4 mClipFromWorld;
 };
 
 // A pass's name for one map in FrameStats::passes: "<what> light N[, cascade K]".

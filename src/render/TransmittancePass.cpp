@@ -6,7 +6,6 @@
 #include "gnomon/Error.h"
 #include "render/DepthRuns.h"
 #include "render/PassClock.h"
-#include "shadow/FrustumClip.h"
 
 namespace gnomon::render {
 
@@ -73,15 +72,10 @@ void TransmittancePass::allocate(const ShadowPass& pass) {
 void TransmittancePass::collect(const GpuScene& scene, const ShadowedLight& light,
                                 const ShadowOptions& options) {
     mVisible.clear();
-    const bool cube = light.frame.kind == shadow::FrameKind::Cube;
-    const glm::mat4 clipFromWorld = cube ? glm::mat4(1.0f) : light.frame.clipFromWorld();
+    const LightVolume volume(light);
     const std::vector<DrawItem>& items = scene.items();
     for (std::uint32_t i = 0; i < items.size(); ++i) {
-        if (!castsTint(items[i], options)) continue;
-        const bool outside =
-            cube ? shadow::outsideCube(items[i].bounds, light.frame)
-                 : shadow::outsideClipVolume(items[i].bounds, clipFromWorld, light.depthClamp);
-        if (!outside) mVisible.push_back(i);
+        if (castsTint(items[i], options) && !volume.outside(items[i].bounds)) mVisible.push_back(i);
     }
 }
 
