@@ -6,8 +6,8 @@
 namespace gnomon::render {
 
 namespace {
-// One texture's layers (bottom-up rows, `channels` floats a texel) as top-down cells of
-// `out` ([cell * keep + c] for the first `keep` channels, through `store`).
+// One texture's layers (a layer per light, bottom-up rows, `channels` floats a texel) handed
+// to `store(cell, texel)` with ShadowVisibility's cell index (top-down rows, lights inner).
 template <typename Store>
 void readLayers(const gl::Texture& texture, GLenum format, int channels, int width, int height,
                 int lights, const Store& store) {
