@@ -168,12 +168,12 @@ void recordVisibility(LightData light, float visibility) {
 #ifdef CONTACT_SHADOWS
 // Point and spot lights: the march stops short of the light.
 #define CONTACT(light, visibility, vsToLight)                                            \
-    if (visibility > 0.0) {                                                             \
+    {                                                                                   \
         int kind = int(light.vsPosition.w);                                             \
         float reach = kind == kDirectional || kind == kArea                             \
                           ? 1e30                                                        \
                           : length(light.vsPosition.xyz - vIn.vsPosition);              \
-        visibility = min(visibility, contactShadow(vIn.vsPosition, s.vsN, vsToLight, reach)); \
+        visibility = contactShadow(vIn.vsPosition, s.vsN, vsToLight, reach, visibility); \
     }
 #else
 #define CONTACT(light, visibility, vsToLight)

@@ -28,6 +28,14 @@ bool handCompare(const ShadowOptions& s) {
 bool kernelFilter(const ShadowOptions& s) {
     return s.filter == ShadowFilter::Pcf || s.filter == ShadowFilter::Poisson;
 }
+// View-space z from window depth d as (x·d + y) / (z·d + w): the inverse projection's z and
+// w rows at ndc z = 2d − 1. They hold no x or y term for perspective and orthographic
+// projections (whose z and w rows do not involve x and y), so the contact march needs no
+// matrix product per step.
+glm::vec4 viewZFromDepth(const glm::mat4& clipFromView) {
+    const glm::mat4 m = glm::inverse(clipFromView);
+    return {2.0f * m[2][2], m[3][2] - m[2][2], 2.0f * m[2][3], m[3][3] - m[2][3]};
+}
 }  // namespace
 
 static_assert(sizeof(GpuLight) == 192, "GpuLight must match LightData in lights.glsl");
@@ -238,7 +246,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     glUniform3fv(7, 1, &u.depthAware[0]);
     if (u.in->hasCascades) glUniform4fv(11, 1, &u.in->cascadeDepth[0]);
     if (u.in->viewDepth) {
-        glUniformMatrix4fv(8, 1, GL_FALSE, &u.viewFromClip[0][0]);
+        glUniform4fv(8, 1, &u.viewZFromDepth[0]);
         glUniform1f(9, u.contactLength);
     }
     if (u.in->shadowMoments) glUniform1f(12, u.lightBleed);
@@ -323,7 +331,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     FrameUniforms u;
     u.in = &in;
     u.worldFromView = glm::inverse(in.viewFromWorld);
-    u.viewFromClip = glm::inverse(in.clipFromView);
+    u.viewZFromDepth = viewZFromDepth(in.clipFromView);
     u.shadowFactor = options.shading.shadowFactor;
     u.depthAware = glm::vec3(options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
                              spacing(cubeFormat));

@@ -71,7 +71,8 @@ private:
     // What every program of one frame's draws is given (the shaders' uniform locations).
     struct FrameUniforms {
         const MainPassInputs* in = nullptr;
-        glm::mat4 worldFromView{1.0f}, viewFromClip{1.0f};
+        glm::mat4 worldFromView{1.0f};
+        glm::vec4 viewZFromDepth{0.0f};
         float shadowFactor = 0.0f, contactLength = 0.0f, lightBleed = 0.0f;
         glm::vec3 depthAware{0.0f};  // steps, map and cube stored-depth spacing
         glm::ivec4 ranges{0};        // the light order's range: every light, or one tile's
