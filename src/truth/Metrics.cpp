@@ -53,6 +53,15 @@ bool occludedRef(const Reference& r, std::size_t cell, bool soft) {
     return soft ? r.soft[cell] < 0.5f : r.hard[cell] < 0.5f;
 }
 
+// Which side of a shadow edge a cell lies on: 1 lit, 0 occluded or facing away from the
+// light (the terminator, where a surface turns into its own attached shadow, is a shadow
+// edge as much as a cast shadow's outline is), -1 neither (no surface, no light there).
+int edgeSide(const Reference& r, std::size_t cell, bool soft) {
+    if (r.applies[cell]) return occludedRef(r, cell, soft) ? 0 : 1;
+    const bool facesAway = !r.lightCosine.empty() && r.lightCosine[cell] <= 0.0f;
+    return facesAway ? 0 : -1;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> aliasingBand(const Reference& r, const std::vector<float>& texelWorld,
@@ -65,14 +74,13 @@ std::vector<std::uint8_t> aliasingBand(const Reference& r, const std::vector<flo
         bool any = false;
         for (int y = 0; y < r.height; ++y) {
             for (int x = 0; x < r.width; ++x) {
-                const std::size_t c = r.at(x, y, l);
-                if (!r.applies[c]) continue;
-                const bool occ = occludedRef(r, c, soft);
+                const int here = edgeSide(r, r.at(x, y, l), soft);
+                if (here < 0) continue;
                 const int nx[2] = {x + 1, x}, ny[2] = {y, y + 1};
                 for (int k = 0; k < 2; ++k) {
                     if (nx[k] >= r.width || ny[k] >= r.height) continue;
-                    const std::size_t n = r.at(nx[k], ny[k], l);
-                    if (r.applies[n] && occludedRef(r, n, soft) != occ) {
+                    const int there = edgeSide(r, r.at(nx[k], ny[k], l), soft);
+                    if (there >= 0 && there != here) {
                         seeds[std::size_t(y) * std::size_t(r.width) + std::size_t(x)] = 1;
                         seeds[std::size_t(ny[k]) * std::size_t(r.width) + std::size_t(nx[k])] = 1;
                         any = true;

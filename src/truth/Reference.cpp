@@ -239,8 +239,11 @@ struct LightTracer {
                     break;
                 }
             }
-            if (!mat.unlit && !(glm::dot(n, toLight) > 0.0f)) continue;  // faces away
             const std::size_t cell = pixel * std::size_t(ref.lights) + l;
+            if (!mat.unlit && !(glm::dot(n, toLight) > 0.0f)) {
+                ref.lightCosine[cell] = 0.0f;  // faces away: in its own attached shadow
+                continue;
+            }
             ref.applies[cell] = 1;
             ref.lightCosine[cell] = mat.unlit ? 1.0f : glm::dot(n, toLight);
             ref.hard[cell] = transmitted(casters, blend, origin, toLight, distance,

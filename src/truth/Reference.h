@@ -41,7 +41,8 @@ struct Reference {
     // hard x tint.
     std::vector<glm::vec3> tint;
     // Cosine between the surface's geometric normal and the direction to the light (where
-    // applies): how far a map texel stretches along the surface, 1 / cosine.
+    // applies): how far a map texel stretches along the surface, 1 / cosine. 0 where the
+    // surface faces away from the light (its attached shadow, where applies is 0).
     std::vector<float> lightCosine;
     std::vector<float> soft;  // fraction of the light's surface visible (softSamples > 0)
 

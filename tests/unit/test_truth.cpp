@@ -242,5 +242,38 @@ TEST(Metrics, AliasingBandStretchesOnReceiversTiltedToTheLight) {
     EXPECT_EQ(bandWidth(0.05f), 2 + 2 * int(2.0f * truth::kBandMaxStretch));
 }
 
+// The terminator is a shadow edge: a lit strip whose right half faces away from the light
+// (no light applies there) has a band along the turn, as an occluded right half would; a
+// right half with no surface at all (the background) has none.
+TEST(Metrics, AliasingBandFollowsTheTerminator) {
+    auto bandAt = [](float rightCosine) {
+        truth::Reference r;
+        r.width = 16;
+        r.height = 4;
+        r.lights = 1;
+        const std::size_t n = std::size_t(r.width * r.height);
+        r.object.assign(n, 0);
+        r.pixelWorld.assign(n, 0.01f);
+        r.applies.assign(n, 1);
+        r.hard.assign(n, 1.0f);
+        r.lightCosine.assign(n, 1.0f);
+        for (int y = 0; y < r.height; ++y)
+            for (int x = 8; x < r.width; ++x) {
+                r.applies[r.at(x, y, 0)] = 0;
+                r.lightCosine[r.at(x, y, 0)] = rightCosine;
+            }
+        const std::vector<float> texel(n, 0.01f);
+        const std::vector<std::uint8_t> band = truth::aliasingBand(r, texel, 2.0f, false);
+        std::vector<int> row;
+        for (int x = 0; x < 8; ++x)
+            row.push_back(band[r.at(x, 1, 0)]);
+        return row;
+    };
+    // Faces away (cosine 0): the seed is pixel 7, and pixels within 2 of it are in the band.
+    EXPECT_EQ(bandAt(0.0f), (std::vector<int>{0, 0, 0, 0, 0, 1, 1, 1}));
+    // No surface there (cosine left at its default): no edge, no band.
+    EXPECT_EQ(bandAt(1.0f), (std::vector<int>{0, 0, 0, 0, 0, 0, 0, 0}));
+}
+
 }  // namespace
 }  // namespace gnomon
