@@ -264,11 +264,14 @@ void main() {
 // linear toe). To first order that is the encoded offset (off by under 1.5 % of it, at the
 // darkest end of the power segment) for one power per channel where encoding and decoding
 // cost two.
-const float kBayer4[16] = float[](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0,
-                                  15.0, 7.0, 13.0, 5.0);
+// The matrix's entry from the bits of x ^ y and y, interleaved and reversed (its recursive
+// construction), in integer operations: llvmpipe reads a table indexed per pixel one lane at
+// a time.
 vec3 dither(vec3 c) {
     ivec2 p = ivec2(gl_FragCoord.xy) & 3;
-    float offset = ((kBayer4[p.y * 4 + p.x] + 0.5) / 16.0 - 0.5) / 255.0;
+    int q = p.x ^ p.y;
+    int bayer = ((q & 1) << 3) | ((p.y & 1) << 2) | (q & 2) | ((p.y >> 1) & 1);
+    float offset = ((float(bayer) + 0.5) / 16.0 - 0.5) / 255.0;
 #ifdef DITHER_SRGB
     c = clamp(c, 0.0, 1.0);
     vec3 power = max(c, 0.0031308);  // the power segment's slope, kept finite on the toe
