@@ -117,7 +117,8 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          .group = "Shadow maps",
          .doc = "what fitted lights' maps cover: the points a coarse depth pre-pass of the view "
                 "sees (a point light whose points fit a cube face's angle gets one frustum over "
-                "them), or the visible receivers' boxes",
+                "them; a spot maps only the part of its cone they lie in), or the visible "
+                "receivers' boxes",
          .kind = K::Choice,
          .choices = namesOf<FitTo>(),
          ENUM(shadow.fitTo, FitTo)});

@@ -58,8 +58,7 @@ bool LightPlan::wantsViewSamples(const Scene& s, const RenderOptions& options) {
     if (options.shadow.fitTo != FitTo::ViewDepth) return false;
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         const Light& l = s.lights[i];
-        if (l.type != LightType::Spot && l.shadowCamera.policy == ShadowCameraPolicy::Fit &&
-            casts(s, options, i)) {
+        if (l.shadowCamera.policy == ShadowCameraPolicy::Fit && casts(s, options, i)) {
             return true;
         }
     }

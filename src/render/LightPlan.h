@@ -21,8 +21,8 @@ namespace gnomon::render {
 
 class LightPlan {
 public:
-    // Does planning `s` with `options` use view samples (a fitted directional, area or point
-    // light that casts shadows, with FitTo::ViewDepth)?
+    // Does planning `s` with `options` use view samples (a fitted light that casts shadows,
+    // with FitTo::ViewDepth)?
     static bool wantsViewSamples(const Scene& s, const RenderOptions& options);
 
     // Plans every light of `s` (the GPU copy `scene` gives the items' world boxes).

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/SceneUtil.h"
+#include "shadow/LocalFit.h"
 
 namespace gnomon::shadow {
 
@@ -45,9 +46,7 @@ glm::mat4 clipFromView(const Camera& camera, float aspect) {
     return glm::perspective(glm::radians(camera.fovyDegrees), a, camera.near, camera.far);
 }
 
-namespace {
-
-// Depth range of the bounds' corners in front of a light camera (view looks down -z).
+namespace fit {
 void depthRange(const Aabb& bounds, const glm::mat4& lightFromWorld, float& nearest,
                 float& farthest) {
     nearest = std::numeric_limits<float>::max();
@@ -58,6 +57,18 @@ void depthRange(const Aabb& bounds, const glm::mat4& lightFromWorld, float& near
         farthest = std::max(farthest, d);
     }
 }
+
+float quantizeUp(float x) {
+    const float step = std::exp2(std::ceil(std::log2(std::max(x, 1e-20f))) - 4.0f);
+    return std::ceil(x / step) * step;
+}
+}  // namespace fit
+
+using fit::depthRange;
+using fit::FitBoxes;
+using fit::quantizeUp;
+
+namespace {
 
 LightCameraFrame fromNumbers(const ShadowCamera& c, const glm::mat4& lightFromWorld, int mapSize) {
     LightCameraFrame f;
@@ -76,15 +87,6 @@ LightCameraFrame fromNumbers(const ShadowCamera& c, const glm::mat4& lightFromWo
     }
     return f;
 }
-
-// The boxes Fit works with in one frame: visible receivers (clipped to the view frustum's
-// box) and all casters.
-struct FitBoxes {
-    std::vector<Aabb> receivers;
-    const std::vector<Aabb>* casters = nullptr;
-    bool snap = false;           // the fit follows the view: keep it steady
-    HeldExtent* held = nullptr;  // with snap: the extent kept from the previous frame
-};
 
 // `receivers` false: only the casters (a fit to view samples needs no receiver boxes).
 FitBoxes visibleReceivers(const FitScene& scene, bool receivers = true) {
@@ -106,12 +108,6 @@ FitBoxes visibleReceivers(const FitScene& scene, bool receivers = true) {
         if (!clipped.empty()) f.receivers.push_back(clampInto(clipped, r));
     }
     return f;
-}
-
-// Rounds `x` up to a step of 1/16 of its power of two: few distinct sizes, at most 1/16 more.
-float quantizeUp(float x) {
-    const float step = std::exp2(std::ceil(std::log2(std::max(x, 1e-20f))) - 4.0f);
-    return std::ceil(x / step) * step;
 }
 
 // The rotation from world into a directional light's space: a turn only, so a snapped
@@ -238,142 +234,6 @@ Aabb receiversInLight(const FitScene& scene, const FitBoxes& boxes, const glm::v
     return receivers;
 }
 
-// A perspective frame through `lightFromWorld` (a look-at) whose image is the window
-// [lo, hi] of tan units (x / -z, y / -z): far at the farthest receiver corner inside the
-// window's pyramid (or at `farthest` when the caller knows it), near at the nearest caster
-// that can shadow one.
-LightCameraFrame fitFrustum(const glm::mat4& lightFromWorld, glm::vec2 lo, glm::vec2 hi,
-                            const FitBoxes& boxes, int mapSize, float farthest = 0.0f) {
-    LightCameraFrame f;
-    f.lightFromWorld = lightFromWorld;
-    f.valid = false;
-    auto pyramid = [&](float near, float far) {
-        return glm::frustum(lo.x * near, hi.x * near, lo.y * near, hi.y * near, near, far);
-    };
-    // The pyramid's four side planes (far pushed out of reach): what the map can see at all.
-    const glm::mat4 sides = pyramid(1.0f, 1e30f) * lightFromWorld;
-    const bool fromBoxes = !(farthest > 0.0f);
-    for (std::size_t i = 0; fromBoxes && i < boxes.receivers.size(); ++i) {
-        const Aabb& r = boxes.receivers[i];
-        if (outsideClipVolume(r, sides, true)) continue;
-        float nearest = 0.0f, far = 0.0f;
-        depthRange(r, lightFromWorld, nearest, far);
-        farthest = std::max(farthest, far);
-    }
-    if (!(farthest > 0.0f)) return f;
-    // Near at the nearest point of a caster inside the pyramid (not the nearest corner of
-    // its box: a floor reaching behind the light would pull near to ~0 and waste the depth
-    // precision of the whole map). Clipped to the pyramid from 1/1000 of far to far.
-    const glm::mat4 volume = pyramid(farthest * 1e-3f, farthest * 1.01f) * lightFromWorld;
-    const std::array<glm::vec3, 8> volumeCorners = frustumCorners(volume);
-    float nearestCaster = std::numeric_limits<float>::max();
-    for (const Aabb& c : *boxes.casters) {
-        if (c.empty() || outsideClipVolume(c, volume, false)) continue;
-        const ClippedPoints inside = clipToFrustum(c, volume, volumeCorners);
-        for (int i = 0; i < inside.count; ++i) {
-            const float d = -(lightFromWorld * glm::vec4(inside.points[size_t(i)], 1.0f)).z;
-            nearestCaster = std::min(nearestCaster, d);
-        }
-    }
-    if (nearestCaster == std::numeric_limits<float>::max()) return f;
-    // The light may sit inside the bounds: keep near positive, at most 1/1000 of far,
-    // so depth precision stays usable.
-    f.valid = true;
-    f.far = std::max(farthest * 1.01f, 1e-3f);
-    f.near = std::clamp(nearestCaster * 0.99f, f.far * 1e-3f, f.far * 0.999f);
-    f.clipFromLight = pyramid(f.near, f.far);
-    // At distance 1 along the axis (the shader scales by clip w, that distance).
-    f.texelWorldSize = std::max(hi.x - lo.x, hi.y - lo.y) / float(mapSize);
-    return f;
-}
-
-// Perspective camera from `eye` along `axis` with a square fovy (spot lights' cones).
-LightCameraFrame fitPerspective(const glm::vec3& eye, const glm::vec3& axis, float fovyRadians,
-                                const FitBoxes& boxes, int mapSize) {
-    const float t = std::tan(0.5f * fovyRadians);
-    return fitFrustum(safeLookAt(eye, eye + axis, glm::vec3(0, 1, 0)), glm::vec2(-t), glm::vec2(t),
-                      boxes, mapSize);
-}
-
-// Six faces around the light reaching the farthest receiver corner; near just before the
-// nearest caster, no nearer than depth precision allows (geometry nearer than near still
-// casts: the pass clamps depth for fitted lights).
-LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int mapSize) {
-    LightCameraFrame f;
-    f.kind = FrameKind::Cube;
-    f.lightFromWorld = glm::translate(glm::mat4(1.0f), -position);
-    f.valid = false;
-    float farthest = 0.0f;
-    for (const Aabb& r : boxes.receivers) {
-        for (const glm::vec3& c : r.corners())
-            farthest = std::max(farthest, glm::length(c - position));
-    }
-    if (!(farthest > 0.0f)) return f;
-    // A face's depth is the distance along its axis, the largest of |dx|, |dy|, |dz|, which is
-    // as small as 1/sqrt(3) of the Euclidean distance towards a face's corners. A near plane
-    // at the Euclidean distance cuts into casters there: depth clamp stores them at 0, the
-    // receivers they shadow also lie in front of near (same ray, same face), their reference
-    // depth is <= 0 too and the comparison passes: lit. So near is the nearest caster's
-    // depth along the axes. Clamping the light into the box minimises every |d| at once, so
-    // it also gives the box's smallest largest-component. Casters beyond every receiver
-    // (Euclidean) shadow none and are not waited for.
-    float nearestCaster = std::numeric_limits<float>::max();
-    for (const Aabb& c : *boxes.casters) {
-        if (c.empty()) continue;
-        const glm::vec3 d = glm::abs(glm::clamp(position, c.min, c.max) - position);
-        if (glm::length(d) <= farthest) {
-            nearestCaster = std::min(nearestCaster, std::max({d.x, d.y, d.z}));
-        }
-    }
-    if (nearestCaster == std::numeric_limits<float>::max()) return f;
-    f.valid = true;
-    f.far = std::max(farthest * 1.01f, 1e-3f);
-    f.near = std::clamp(nearestCaster * 0.99f, f.far * 1e-3f, f.far * 0.5f);
-    f.clipFromLight = glm::perspective(glm::radians(90.0f), 1.0f, f.near, f.far);
-    f.texelWorldSize = 2.0f / float(mapSize);  // tan(45 deg) = 1: two units per face at d = 1
-    return f;
-}
-
-// A point light: when the view's samples all lie in a window no wider than a cube face's
-// (2 x 2 tan units) around their mean direction, one frustum over that window: never
-// coarser than a cube face on its axis and often many times finer (a lamp over a small model
-// spends a few percent of a cube on what the view sees). Else the cube. A few texels of
-// margin keep filter taps at the window's rim inside the map.
-LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
-                          const FitBoxes& boxes, int mapSize) {
-    glm::vec3 axis(0.0f);
-    SampleWindow window;
-    if (!samples || !samplesDirection(*samples, position, axis))
-        return fitCube(position, boxes, mapSize);
-    const float n = float(std::max(mapSize, 16));
-    if (boxes.snap) {
-        // Steady while the view moves, as the orthographic fit is: the axis on a grid of
-        // half degrees, each side of the window a quantised size with its corner on its own
-        // texel grid, far quantised; small camera moves leave the map as it was.
-        const float step = glm::radians(0.5f);
-        const float yaw = std::round(std::atan2(axis.x, -axis.z) / step) * step;
-        const float pitch = std::round(std::asin(std::clamp(axis.y, -1.0f, 1.0f)) / step) * step;
-        axis = {std::cos(pitch) * std::sin(yaw), std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
-    }
-    const glm::mat4 lightFromWorld = safeLookAt(position, position + axis, glm::vec3(0, 1, 0));
-    if (!samplesWindow(*samples, lightFromWorld, window)) return fitCube(position, boxes, mapSize);
-    // A few texels of margin keep filter taps at the window's rim inside the map.
-    glm::vec2 size = glm::max(window.hi - window.lo, 1e-4f) / (1.0f - 8.0f / n);
-    glm::vec2 lo = 0.5f * (window.lo + window.hi - size);
-    float farthest = window.farthest;
-    if (boxes.snap) {
-        size = {quantizeUp(size.x / (1.0f - 4.0f / n)), quantizeUp(size.y / (1.0f - 4.0f / n))};
-        const glm::vec2 texel = size / n;
-        lo = glm::floor((0.5f * (window.lo + window.hi) - 0.5f * size) / texel) * texel;
-        farthest = quantizeUp(farthest);
-    }
-    const glm::vec2 hi = lo + size;
-    if (std::max(size.x, size.y) > 2.0f || std::max(glm::length(lo), glm::length(hi)) > 2.0f)
-        return fitCube(position, boxes, mapSize);
-    const LightCameraFrame f = fitFrustum(lightFromWorld, lo, hi, boxes, mapSize, farthest);
-    return f.valid ? f : fitCube(position, boxes, mapSize);
-}
-
 }  // namespace
 
 bool outsideCube(const Aabb& box, const LightCameraFrame& cube) {
@@ -424,12 +284,12 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
                                    receiversInLight(scene, boxes, light.direction, 0.0f, kNoEnd),
                                    boxes, mapSize);
         case LightType::Spot:
-            return fitPerspective(
+            return fit::fitSpot(
                 light.position, glm::normalize(light.direction),
-                glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), boxes,
-                mapSize);
+                glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), scene.samples,
+                boxes, mapSize);
         case LightType::Point:
-            return fitPoint(light.position, scene.samples, boxes, mapSize);
+            return fit::fitPoint(light.position, scene.samples, boxes, mapSize);
     }
     return {};
 }

@@ -93,22 +93,35 @@ bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::ve
 }
 
 bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
-                   SampleWindow& window) {
+                   SampleWindow& window, const SampleWindow* limit) {
     window.lo = glm::vec2(std::numeric_limits<float>::max());
     window.hi = -window.lo;
     window.farthest = 0.0f;
+    bool any = false;
     for (const glm::vec4& p : samples.points) {
         const glm::vec3 v = glm::vec3(lightFromWorld * glm::vec4(glm::vec3(p), 1.0f));
         const float depth = -v.z, pad = samples.pad(p.w);
+        // Wholly behind the camera's plane: outside any limit (a cone narrower than 180°).
+        if (limit && depth + pad < 0.0f) continue;
         if (!(depth > pad)) return false;
         const glm::vec2 t = glm::vec2(v) / depth;
         // A move by `pad` changes x / -z by at most pad (1 + |t|) / (depth - pad).
         const glm::vec2 reach = pad * (1.0f + glm::abs(t)) / (depth - pad);
-        window.lo = glm::min(window.lo, t - reach);
-        window.hi = glm::max(window.hi, t + reach);
+        const glm::vec2 lo = t - reach, hi = t + reach;
+        if (limit &&
+            (glm::any(glm::lessThan(hi, limit->lo)) || glm::any(glm::greaterThan(lo, limit->hi)))) {
+            continue;
+        }
+        window.lo = glm::min(window.lo, lo);
+        window.hi = glm::max(window.hi, hi);
         window.farthest = std::max(window.farthest, depth + pad);
+        any = true;
     }
-    return !samples.points.empty();
+    if (any && limit) {
+        window.lo = glm::max(window.lo, limit->lo);
+        window.hi = glm::min(window.hi, limit->hi);
+    }
+    return any;
 }
 
 float mapShareUsed(const ViewSamples& samples, const LightCameraFrame& frame, int mapSize,

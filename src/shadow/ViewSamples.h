@@ -58,13 +58,16 @@ Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld,
 bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction);
 // The window [lo, hi] in tan units (x / -z, y / -z) of the camera `lightFromWorld` (a
 // look-at) that holds every sample with its pad, and the largest depth -z among them. False
-// when some sample's pad reaches the camera's plane z = 0 (no window holds it).
+// when there is no sample or some sample's pad reaches the camera's plane z = 0 (no window
+// holds it). With `limit` (a spot light's cone window), only the samples whose footprint
+// overlaps it count (the others get no light to shadow), the window is clipped to it, and
+// false also means that none does.
 struct SampleWindow {
     glm::vec2 lo{0.0f}, hi{0.0f};
     float farthest = 0.0f;
 };
 bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
-                   SampleWindow& window);
+                   SampleWindow& window, const SampleWindow* limit = nullptr);
 
 struct LightCameraFrame;
 

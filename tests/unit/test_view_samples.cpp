@@ -223,6 +223,37 @@ TEST(ViewSamples, PointLightOverWhatTheViewSeesGetsOneFrustumNotACube) {
     EXPECT_EQ(shadow::lightCameraFrame(lamp, camera, scene, 1024).kind, shadow::FrameKind::Cube);
 }
 
+TEST(ViewSamples, SpotLightMapsOnlyThePartOfItsConeTheViewSees) {
+    // The ground seen close up (|x|, |z| <= 10), under a wide spot straight above it whose
+    // cone reaches far past what the camera sees.
+    const Camera camera = groundCamera();
+    const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
+    const float aspect = 4.0f / 3.0f;
+    shadow::ViewSamples samples;
+    shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
+    ASSERT_FALSE(samples.empty());
+    shadow::FitScene scene;
+    scene.receivers = {Aabb{{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}}};
+    scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
+    scene.viewKnown = true;
+    scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
+    scene.samples = &samples;
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0.0f, 10.0f, 0.0f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.outerConeDegrees = 70.0f;
+    const float coneTexel = 2.0f * std::tan(glm::radians(70.0f)) / 1024.0f;
+    const shadow::LightCameraFrame fitted = shadow::lightCameraFrame(spot, camera, scene, 1024);
+    ASSERT_TRUE(fitted.valid);
+    EXPECT_EQ(fitted.kind, shadow::FrameKind::Perspective);
+    EXPECT_LT(fitted.texelWorldSize, 0.5f * coneTexel);
+    expectCovers(fitted, samples);  // every sample lies in the cone here
+    // Without samples (fit to boxes): the whole cone.
+    scene.samples = nullptr;
+    EXPECT_FLOAT_EQ(shadow::lightCameraFrame(spot, camera, scene, 1024).texelWorldSize, coneTexel);
+}
+
 TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
     shadow::ViewSamples samples;
     samples.points = {{1.0f, 0.0f, -2.0f, 1.0f}, {-1.0f, 0.5f, -4.0f, 1.0f}};
@@ -248,6 +279,15 @@ TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
         }
     }
     EXPECT_FLOAT_EQ(w.farthest, 4.1f);
+    // Within a limit (a spot's cone) that only the first sample's footprint overlaps: the
+    // second is left out, and the window is clipped to the limit.
+    const shadow::SampleWindow limit{{0.45f, -1.0f}, {1.0f, 1.0f}, 0.0f};
+    ASSERT_TRUE(shadow::samplesWindow(samples, glm::mat4(1.0f), w, &limit));
+    EXPECT_FLOAT_EQ(w.lo.x, 0.45f);
+    EXPECT_NEAR(w.hi.x, 0.5f + 0.15f / 1.9f, 1e-6f);
+    EXPECT_FLOAT_EQ(w.farthest, 2.1f);
+    const shadow::SampleWindow elsewhere{{2.0f, 2.0f}, {3.0f, 3.0f}, 0.0f};
+    EXPECT_FALSE(shadow::samplesWindow(samples, glm::mat4(1.0f), w, &elsewhere));
     // A sample within its pad of the camera's plane: no window.
     samples.points.emplace_back(2.0f, 0.0f, -0.05f, 1.0f);
     EXPECT_FALSE(shadow::samplesWindow(samples, glm::mat4(1.0f), w));

@@ -1,0 +1,40 @@
+// Internal to shadow/: the fits of lights that sit at a point (spot and point lights), and
+// what they share with the rest of the fitting in ShadowMath.cpp. A spot's cone or a point
+// light's cube, each narrowed to the window of what the view sees when view samples exist.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/Aabb.h"
+#include "shadow/ShadowMath.h"
+#include "shadow/ViewSamples.h"
+
+namespace gnomon::shadow::fit {
+
+// The boxes Fit works with in one frame: visible receivers (clipped to the view frustum's
+// box) and all casters.
+struct FitBoxes {
+    std::vector<Aabb> receivers;
+    const std::vector<Aabb>* casters = nullptr;
+    bool snap = false;           // the fit follows the view: keep it steady
+    HeldExtent* held = nullptr;  // with snap: the extent kept from the previous frame
+};
+
+// Depth range of the bounds' corners in front of a light camera (view looks down -z).
+void depthRange(const Aabb& bounds, const glm::mat4& lightFromWorld, float& nearest,
+                float& farthest);
+// Rounds `x` up to a step of 1/16 of its power of two: few distinct sizes, at most 1/16 more.
+float quantizeUp(float x);
+
+// A point light: one frustum over the view's samples when they fit a cube face's angle
+// around their mean direction, else six faces around the light.
+LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
+                          const FitBoxes& boxes, int mapSize);
+// A spot light: its cone's window (fovy twice the outer cone angle), narrowed to the part the
+// view's samples lie in.
+LightCameraFrame fitSpot(const glm::vec3& position, const glm::vec3& axis, float fovyRadians,
+                         const ViewSamples* samples, const FitBoxes& boxes, int mapSize);
+
+}  // namespace gnomon::shadow::fit
