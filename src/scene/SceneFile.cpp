@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -121,17 +122,49 @@ void appendInclude(Scene& out, Scene s, const glm::mat4& t) {
     }
 }
 
+// How much `t` stretches lengths along `direction` (1 for a zero direction).
+float stretchAlong(const glm::mat4& t, const glm::vec3& direction) {
+    const float length = glm::length(direction);
+    return length > 0.0f ? glm::length(glm::mat3(t) * (direction / length)) : 1.0f;
+}
+
+// A camera's distances (near, far) and orthographic volume go with the transform's scale along
+// its view and across it: an included model scaled by 1000 keeps the framing it came with.
+template <typename C>
+void scaleVolume(C& c, const glm::mat4& t, const glm::vec3& forward, const glm::vec3& up) {
+    const float along = stretchAlong(t, forward);
+    const glm::vec3 side = glm::cross(forward, up);
+    const float across = stretchAlong(t, side), upward = stretchAlong(t, glm::cross(side, forward));
+    c.near *= along;
+    c.far *= along;
+    c.left *= across;
+    c.right *= across;
+    c.bottom *= upward;
+    c.top *= upward;
+}
+
+// The light moves with the transform and its distances scale with it: range, the attenuation's
+// distance terms (so the light falls off as it did across the scaled model) and a manual or
+// course shadow camera's volume.
 void placeLight(Light& l, const glm::mat4& t) {
     if (t == glm::mat4(1.0f)) return;
+    const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(t))));
+    const glm::vec3 toTarget = l.shadowCamera.target - l.position;
+    scaleVolume(l.shadowCamera, t, glm::length(toTarget) > 0.0f ? toTarget : l.direction,
+                l.shadowCamera.up);
     l.position = transformPoint(t, l.position);
     l.direction = glm::mat3(t) * l.direction;
     if (glm::length(l.direction) > 0.0f) l.direction = glm::normalize(l.direction);
     l.shadowCamera.target = transformPoint(t, l.shadowCamera.target);
     l.shadowCamera.up = glm::mat3(t) * l.shadowCamera.up;
+    l.range *= scale;
+    l.attenuation.linear /= scale;
+    l.attenuation.quadratic /= scale * scale;
 }
 
 void placeCamera(Camera& c, const glm::mat4& t) {
     if (t == glm::mat4(1.0f)) return;
+    scaleVolume(c, t, c.centre - c.eye, c.up);
     c.eye = transformPoint(t, c.eye);
     c.centre = transformPoint(t, c.centre);
     c.up = glm::mat3(t) * c.up;

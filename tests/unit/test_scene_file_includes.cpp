@@ -44,6 +44,40 @@ TEST(SceneFile, IncludedSceneIsPlacedAndItsOptionsTuned) {
     Compare{true}.options(*s.textbookOptions, *room.textbookOptions, "textbook");
 }
 
+// A model included at another scale (a glTF in centimetres placed in a scene in metres) keeps
+// what it looked like: the camera's near and far scale with it, and its lights' range and
+// falloff are the same at the same place on the model.
+TEST(SceneFile, ScaledIncludeKeepsItsFramingAndFalloff) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "big.json";
+    writeText(p, R"({"gnomon-scene": 1,
+        "include": [{"scene": "tutorial-spot", "transform": {"scale": 1000}}]})");
+    const Scene s = loadSceneFile(p.string());
+    const Scene spot = builtinScene("tutorial-spot");
+    EXPECT_FLOAT_EQ(s.camera.near, 1000.0f * spot.camera.near);
+    EXPECT_FLOAT_EQ(s.camera.far, 1000.0f * spot.camera.far);
+    ASSERT_EQ(s.lights.size(), spot.lights.size());
+    const Light &a = spot.lights[0], &b = s.lights[0];
+    Compare{false}.vec(b.position, 1000.0f * a.position, "spot position");
+    EXPECT_FLOAT_EQ(b.range, 1000.0f * a.range);
+    auto falloff = [](const Attenuation& c, float d) {
+        return 1.0f / (c.constant + c.linear * d + c.quadratic * d * d);
+    };
+    const float d = glm::length(a.position - spot.camera.centre);
+    EXPECT_NEAR(falloff(b.attenuation, 1000.0f * d), falloff(a.attenuation, d),
+                1e-5f * falloff(a.attenuation, d));
+    // A light's own shadow camera (the course text's orthographic one) scales too.
+    writeText(p, R"({"gnomon-scene": 1,
+        "include": [{"scene": "course-two-lights", "transform": {"scale": 0.01}}]})");
+    const Scene small = loadSceneFile(p.string());
+    const ShadowCamera& c = builtinScene("course-two-lights").lights[0].shadowCamera;
+    const ShadowCamera& scaled = small.lights[0].shadowCamera;
+    EXPECT_FLOAT_EQ(scaled.near, 0.01f * c.near);
+    EXPECT_FLOAT_EQ(scaled.far, 0.01f * c.far);
+    EXPECT_FLOAT_EQ(scaled.right - scaled.left, 0.01f * (c.right - c.left));
+    EXPECT_FLOAT_EQ(scaled.top - scaled.bottom, 0.01f * (c.top - c.bottom));
+}
+
 TEST(SceneFile, FilesIncludeFilesRelativeToTheirFolder) {
     ScopedTempDir dir;
     fs::create_directories(dir.path() / "parts");
