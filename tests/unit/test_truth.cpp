@@ -211,21 +211,29 @@ TEST(Metrics, PerfectVisibilityScoresZeroAndEachErrorCountsOnce) {
     EXPECT_DOUBLE_EQ(one.overall.meanAbsError, 3.0 / n);
 }
 
+// A strip `width` x 4 pixels of one light, lit everywhere, each pixel a map texel wide (0.01),
+// its receiver at `cosine` to the light.
+truth::Reference litStrip(int width, float cosine) {
+    truth::Reference r;
+    r.width = width;
+    r.height = 4;
+    r.lights = 1;
+    const std::size_t n = std::size_t(r.width * r.height);
+    r.object.assign(n, 0);
+    r.pixelWorld.assign(n, 0.01f);
+    r.applies.assign(n, 1);
+    r.hard.assign(n, 1.0f);
+    r.lightCosine.assign(n, cosine);
+    return r;
+}
+
 // A shadow edge down the middle of a strip whose pixels are one map texel each: the band
 // reaches 2 texels from the edge on a receiver facing the light, 2 / cos(theta) on one
 // tilted by theta, and no more than kBandMaxStretch times 2 however grazing.
 TEST(Metrics, AliasingBandStretchesOnReceiversTiltedToTheLight) {
     auto bandWidth = [](float cosine) {
-        truth::Reference r;
-        r.width = 64;
-        r.height = 4;
-        r.lights = 1;
-        const std::size_t n = std::size_t(r.width * r.height);
-        r.object.assign(n, 0);
-        r.pixelWorld.assign(n, 0.01f);
-        r.applies.assign(n, 1);
-        r.hard.assign(n, 1.0f);
-        r.lightCosine.assign(n, cosine);
+        truth::Reference r = litStrip(64, cosine);
+        const std::size_t n = r.hard.size();
         for (int y = 0; y < r.height; ++y)
             for (int x = 0; x < 32; ++x)
                 r.hard[r.at(x, y, 0)] = 0.0f;
@@ -247,16 +255,8 @@ TEST(Metrics, AliasingBandStretchesOnReceiversTiltedToTheLight) {
 // right half with no surface at all (the background) has none.
 TEST(Metrics, AliasingBandFollowsTheTerminator) {
     auto bandAt = [](float rightCosine) {
-        truth::Reference r;
-        r.width = 16;
-        r.height = 4;
-        r.lights = 1;
-        const std::size_t n = std::size_t(r.width * r.height);
-        r.object.assign(n, 0);
-        r.pixelWorld.assign(n, 0.01f);
-        r.applies.assign(n, 1);
-        r.hard.assign(n, 1.0f);
-        r.lightCosine.assign(n, 1.0f);
+        truth::Reference r = litStrip(16, 1.0f);
+        const std::size_t n = r.hard.size();
         for (int y = 0; y < r.height; ++y)
             for (int x = 8; x < r.width; ++x) {
                 r.applies[r.at(x, y, 0)] = 0;

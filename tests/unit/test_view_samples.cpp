@@ -190,20 +190,27 @@ TEST(ViewSamples, SunFittedToSamplesCoversThemWithSmallerTexels) {
                      .valid);
 }
 
-TEST(ViewSamples, PointLightOverWhatTheViewSeesGetsOneFrustumNotACube) {
-    // The ground close up (|x|, |z| <= 10), with a post on it, lit by a point light.
-    const Camera camera = groundCamera();
+// The ground (|x|, |z| <= 10) with a post on it, seen by `camera` at 128 x 96 reduced to
+// 64-cell rows: `samples` filled from its depth, the fit scene pointing at them.
+shadow::FitScene groundWithPost(const Camera& camera, shadow::ViewSamples& samples) {
     const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
     const float aspect = 4.0f / 3.0f;
-    shadow::ViewSamples samples;
     shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
-    ASSERT_FALSE(samples.empty());
     shadow::FitScene scene;
     scene.receivers = {Aabb{{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}}};
     scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
     scene.viewKnown = true;
     scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
     scene.samples = &samples;
+    return scene;
+}
+
+TEST(ViewSamples, PointLightOverWhatTheViewSeesGetsOneFrustumNotACube) {
+    // The ground close up (|x|, |z| <= 10), with a post on it, lit by a point light.
+    const Camera camera = groundCamera();
+    shadow::ViewSamples samples;
+    shadow::FitScene scene = groundWithPost(camera, samples);
+    ASSERT_FALSE(samples.empty());
     Light lamp;
     lamp.type = LightType::Point;
     // High above: everything the view sees lies in a narrow window, one frustum holds it
@@ -227,17 +234,9 @@ TEST(ViewSamples, SpotLightMapsOnlyThePartOfItsConeTheViewSees) {
     // The ground seen close up (|x|, |z| <= 10), under a wide spot straight above it whose
     // cone reaches far past what the camera sees.
     const Camera camera = groundCamera();
-    const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
-    const float aspect = 4.0f / 3.0f;
     shadow::ViewSamples samples;
-    shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
+    shadow::FitScene scene = groundWithPost(camera, samples);
     ASSERT_FALSE(samples.empty());
-    shadow::FitScene scene;
-    scene.receivers = {Aabb{{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}}};
-    scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
-    scene.viewKnown = true;
-    scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
-    scene.samples = &samples;
     Light spot;
     spot.type = LightType::Spot;
     spot.position = {0.0f, 10.0f, 0.0f};
