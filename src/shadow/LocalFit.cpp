@@ -106,9 +106,13 @@ LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int m
 // moves when `boxes.snap` (as the orthographic fit is): each side a quantised size with its
 // corner on its own texel grid, far quantised, and with `boxes.held` the previous frame's
 // window kept while it serves; small camera moves leave the map as it was.
-// Invalid when the window reaches further than `widest` tan units from the axis.
+// Invalid when the window reaches further than `widest` tan units from the axis, or, with
+// `onlyHeld`, when the held window does not serve (the held one is then left as it was).
 LightCameraFrame fitWindow(const glm::mat4& lightFromWorld, const SampleWindow& window,
-                           const FitBoxes& boxes, int mapSize, float widest) {
+                           const FitBoxes& boxes, int mapSize, float widest,
+                           bool onlyHeld = false) {
+    LightCameraFrame none;
+    none.valid = false;
     const float n = float(std::max(mapSize, 16));
     glm::vec2 size = glm::max(window.hi - window.lo, 1e-4f) / (1.0f - 8.0f / n);
     glm::vec2 lo = 0.5f * (window.lo + window.hi - size);
@@ -134,15 +138,16 @@ LightCameraFrame fitWindow(const glm::mat4& lightFromWorld, const SampleWindow& 
                 lo = held->lo;
                 size = held->hi - held->lo;
                 farthest = held->zFar;
+            } else if (onlyHeld) {
+                return none;
             } else {
                 *held = {true, lightFromWorld, mapSize, lo, lo + size, 0.0f, farthest};
             }
         }
     }
+    if (onlyHeld && !(boxes.snap && boxes.held)) return none;
     const glm::vec2 hi = lo + size;
     if (std::max(size.x, size.y) > widest || std::max(glm::length(lo), glm::length(hi)) > widest) {
-        LightCameraFrame none;
-        none.valid = false;
         return none;
     }
     return fitFrustum(lightFromWorld, lo, hi, boxes, mapSize, farthest);
@@ -160,6 +165,16 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
     SampleWindow window;
     if (!samples || !samplesDirection(*samples, position, axis))
         return fitCube(position, boxes, mapSize);
+    // Following frames keep the held frustum, axis and all, while it still holds the view:
+    // the mean direction drifts with every camera move, and a new axis is a new texel grid.
+    const HeldExtent* held = boxes.snap ? boxes.held : nullptr;
+    if (held && held->valid &&
+        glm::length(glm::vec3(held->rotation * glm::vec4(position, 1.0f))) <=
+            1e-5f * (1.0f + glm::length(position)) &&
+        samplesWindow(*samples, held->rotation, window)) {
+        const LightCameraFrame f = fitWindow(held->rotation, window, boxes, mapSize, 2.0f, true);
+        if (f.valid) return f;
+    }
     if (boxes.snap) {
         // The axis on a grid of half degrees, so small camera moves keep it.
         const float step = glm::radians(0.5f);

@@ -67,11 +67,13 @@ struct FitScene {
     bool stabilise = true;  // with viewKnown: square, quantise and snap (see below)
 };
 
-// A stabilised orthographic map's box in its light space, kept from one frame of a moving
-// view to the next: while it still holds everything the view needs from the map and is at
-// most kHoldSlack times larger on each axis than a fresh fit, the map keeps it, so nothing
-// in the map moves or resizes. Refits happen when the view leaves it or it grows too loose.
-// A box kept this way always covers what the view sees: only sharpness is traded.
+// A stabilised map's extent, kept from one frame of a moving view to the next: an
+// orthographic box in its light space, or a perspective window (lo, hi in tan units, zFar
+// its far distance; a point light's axis is in `rotation`). While it still holds everything
+// the view needs from the map and is at most kHoldSlack times larger on each axis than a
+// fresh fit, the map keeps it, so nothing in the map moves or resizes. Refits happen when the
+// view leaves it or it grows too loose. An extent kept this way always covers what the view
+// sees: only sharpness is traded.
 struct HeldExtent {
     bool valid = false;
     glm::mat4 rotation{0.0f};  // world to the light's space, exactly: a turned light refits
@@ -94,8 +96,8 @@ constexpr float kHoldSlack = 1.25f;
 //   caster along the faces' axes (a face's depth is the largest of |dx|, |dy|, |dz|).
 // Invalid (no map needed) when no receiver is visible or no caster can shadow one.
 // `mapSize` sets texelWorldSize.
-// `held` (with a stabilised fit of a directional or area light): the extent kept from the
-// previous frame, read and updated.
+// `held` (with a stabilised fit): the extent kept from the previous frame, read and
+// updated: a directional or area light's box, a spot's window, a point light's frustum.
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const FitScene& scene,
                                   int mapSize, HeldExtent* held = nullptr);
 // The same with one box as every caster and receiver and no view (fit the whole box).

@@ -253,6 +253,40 @@ TEST(ViewSamples, SpotLightMapsOnlyThePartOfItsConeTheViewSees) {
     EXPECT_FLOAT_EQ(shadow::lightCameraFrame(spot, camera, scene, 1024).texelWorldSize, coneTexel);
 }
 
+// Frames that follow one another (the viewer, a scored path): a point light's frustum and a
+// spot's window are held while they still hold what the view sees, so a camera moving a
+// little leaves the map, texel grid and all, exactly as it was.
+TEST(ViewSamples, HeldFrustumsStayPutWhileTheCameraMovesALittle) {
+    Light lamp;
+    lamp.type = LightType::Point;
+    lamp.position = {1.0f, 40.0f, 2.0f};
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0.0f, 10.0f, 0.0f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.outerConeDegrees = 70.0f;
+    for (const Light& light : {lamp, spot}) {
+        shadow::HeldExtent held;
+        Camera camera = groundCamera();
+        shadow::ViewSamples samples;
+        const shadow::FitScene first = groundWithPost(camera, samples);
+        const shadow::LightCameraFrame a =
+            shadow::lightCameraFrame(light, camera, first, 1024, &held);
+        ASSERT_TRUE(a.valid && held.valid);
+        camera.eye += glm::vec3(0.02f, 0.0f, -0.05f);  // a step of a dolly
+        shadow::ViewSamples moved;
+        const shadow::FitScene second = groundWithPost(camera, moved);
+        const shadow::LightCameraFrame b =
+            shadow::lightCameraFrame(light, camera, second, 1024, &held);
+        ASSERT_TRUE(b.valid);
+        EXPECT_EQ(a.clipFromWorld(), b.clipFromWorld()) << int(light.type);
+        // Without the held extent the same step refits: the mean direction (point) or the
+        // window (spot) moves with the view.
+        EXPECT_NE(shadow::lightCameraFrame(light, camera, second, 1024, nullptr).clipFromWorld(),
+                  a.clipFromWorld());
+    }
+}
+
 TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
     shadow::ViewSamples samples;
     samples.points = {{1.0f, 0.0f, -2.0f, 1.0f}, {-1.0f, 0.5f, -4.0f, 1.0f}};
