@@ -34,7 +34,9 @@ about the vertical (there the true shadow moves too, and the map's texel grid tu
 the light, so no stabilisation can hold it). `--stabilise off` refits the maps exactly every
 frame. A path's frames follow one another as a viewer's do, so stabilised maps also hold
 their extent while it covers the view; what stabilisation does is in docs/techniques.md
-(Cascades)."""
+(Cascades). The point light of `toycar-lamp` gets one frustum over what the view sees and
+the spot of `sponza-capitals-spot` the part of its cone the view sees, each held between
+frames the same way; `--fit-to boxes` gives them the fixed cube and the whole cone."""
 
 # (settings name, flags) for every view and path
 SETTINGS = [
@@ -48,7 +50,9 @@ SETTINGS = [
     ("--filter pcss", ["--filter", "pcss"]),
 ]
 RUNS = [("tutorial-room", "dolly"), ("tutorial-room", "orbit"), ("sponza-atrium", "dolly"),
-        ("sponza-atrium", "orbit"), ("lantern-low-sun", "dolly"), ("lantern-low-sun", "sun")]
+        ("sponza-atrium", "orbit"), ("lantern-low-sun", "dolly"), ("lantern-low-sun", "sun"),
+        ("toycar-lamp", "dolly"), ("toycar-lamp", "orbit"), ("sponza-capitals-spot", "dolly"),
+        ("sponza-capitals-spot", "orbit")]
 
 
 def main():
