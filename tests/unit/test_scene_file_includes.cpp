@@ -70,7 +70,8 @@ TEST(SceneFile, ScaledIncludeKeepsItsFramingAndFalloff) {
     writeText(p, R"({"gnomon-scene": 1,
         "include": [{"scene": "course-two-lights", "transform": {"scale": 0.01}}]})");
     const Scene small = loadSceneFile(p.string());
-    const ShadowCamera& c = builtinScene("course-two-lights").lights[0].shadowCamera;
+    const Scene course = builtinScene("course-two-lights");
+    const ShadowCamera& c = course.lights[0].shadowCamera;
     const ShadowCamera& scaled = small.lights[0].shadowCamera;
     EXPECT_FLOAT_EQ(scaled.near, 0.01f * c.near);
     EXPECT_FLOAT_EQ(scaled.far, 0.01f * c.far);
