@@ -91,6 +91,7 @@ struct Camera {
     float near = 1.0f;
     float far = 100.0f;
     float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;  // orthographic volume
+    bool operator==(const Camera&) const = default;
 };
 
 // The camera's clip space from world space, as the renderer draws it for an image of that
@@ -128,6 +129,7 @@ struct ShadowCamera {
     float near = 1.0f;
     float far = 100.0f;
     float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;  // orthographic
+    bool operator==(const ShadowCamera&) const = default;
 };
 
 // Distance falloff 1 / (c0 + c1 d + c2 d^2).
@@ -135,6 +137,7 @@ struct Attenuation {
     float constant = 1.0f;
     float linear = 0.0f;
     float quadratic = 0.0f;
+    bool operator==(const Attenuation&) const = default;
 };
 
 struct Light {
@@ -154,6 +157,7 @@ struct Light {
     bool castsShadows = true;
     int shadowMapSize = 1024;  // texels per side, 64..8192
     ShadowCamera shadowCamera;
+    bool operator==(const Light&) const = default;
 };
 
 // Names one state of a scene's meshes, materials, textures and objects, so a renderer

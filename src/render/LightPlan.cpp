@@ -71,9 +71,24 @@ LightPlan::Held* LightPlan::held(std::size_t i) {
     return &mHeld[i];
 }
 
+bool LightPlan::unchanged(const Scene& s, const RenderOptions& options, const GpuScene& scene,
+                          const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
+                          const Camera* fitCamera) const {
+    const Made& m = mMade;
+    // Samples filled some other way than viewSamples() carry no generation: always replan.
+    const std::uint64_t generation = samples ? samples->generation : 0;
+    return m.valid && (!samples || generation != 0) && m.geometry == scene.revision() &&
+           m.samples == generation && m.following == mFollowing &&
+           m.hasFitCamera == (fitCamera != nullptr) && (!fitCamera || m.fitCamera == *fitCamera) &&
+           m.viewFromWorld == viewFromWorld && m.camera == s.camera && m.options == options &&
+           m.lights == s.lights;
+}
+
 void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
                      const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
                      const Camera* fitCamera) {
+    if (unchanged(s, options, scene, viewFromWorld, samples, fitCamera)) return;
+    mMade.valid = false;  // until this plan is whole
     mFitCamera = fitCamera ? *fitCamera : s.camera;
     mShadowed.clear();
     mLights.clear();
@@ -147,6 +162,16 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
         mLights.push_back(g);
     }
     orderLights(s.lights.size());
+    mMade.geometry = scene.revision();
+    mMade.samples = samples ? samples->generation : 0;
+    mMade.lights = s.lights;
+    mMade.camera = s.camera;
+    mMade.hasFitCamera = fitCamera != nullptr;
+    if (fitCamera) mMade.fitCamera = *fitCamera;
+    mMade.following = mFollowing;
+    mMade.viewFromWorld = viewFromWorld;
+    mMade.options = options;
+    mMade.valid = true;
 }
 
 // Orders the records by kind for the main pass's loops (shaders/lights.glsl): lights that

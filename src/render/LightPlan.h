@@ -62,6 +62,23 @@ private:
     // Light `i`'s, or null when not following.
     Held* held(std::size_t i);
 
+    // What the last plan was made from: a frame whose inputs are all the same keeps it
+    // (a still view of an unchanged scene plans nothing). Compared in place, so an unchanged
+    // frame allocates nothing.
+    struct Made {
+        bool valid = false;
+        std::uint64_t geometry = 0, samples = 0;  // GpuScene::revision, ViewSamples generation
+        std::vector<Light> lights;
+        Camera camera, fitCamera;
+        bool hasFitCamera = false, following = false;
+        glm::mat4 viewFromWorld{0.0f};
+        RenderOptions options;
+    };
+    bool unchanged(const Scene& s, const RenderOptions& options, const GpuScene& scene,
+                   const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
+                   const Camera* fitCamera) const;
+
+    Made mMade;
     bool mFollowing = false;
     std::vector<Held> mHeld;  // grows with the scene's lights, never shrinks
     std::vector<ShadowedLight> mShadowed;

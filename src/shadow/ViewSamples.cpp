@@ -1,6 +1,7 @@
 #include "shadow/ViewSamples.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -20,6 +21,8 @@ SampleGrid sampleGrid(int width, int height, int limit) {
 
 void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, const Camera& camera,
                  float aspect, ViewSamples& out) {
+    static std::atomic<std::uint64_t> fillings{0};
+    out.generation = ++fillings;
     out.points.clear();
     out.padConstant = out.padPerDepth = 0.0f;
     const glm::mat4 clip = clipFromView(camera, aspect);

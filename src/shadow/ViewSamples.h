@@ -6,6 +6,7 @@
 // the whole model). Pure math: the GL pass that draws the depth lives in render/.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -23,6 +24,9 @@ struct ViewSamples {
     // World distance between neighbouring samples at view depth d is padConstant +
     // padPerDepth * d: how far the surface they stand for may reach beyond a sample.
     float padConstant = 0.0f, padPerDepth = 0.0f;
+    // Which filling these points are: viewSamples() gives each a value none had before, so a
+    // fit made from them can be kept while it is unchanged (0: never filled by viewSamples).
+    std::uint64_t generation = 0;
 
     bool empty() const { return points.empty(); }
     float pad(float depth) const { return padConstant + padPerDepth * depth; }

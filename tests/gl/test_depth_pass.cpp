@@ -140,6 +140,30 @@ TEST(Cost, MapsFollowOnlyTheCastersInTheirVolume) {
     EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 2);
 }
 
+// The light plan is kept while nothing it is made from changes (a still view of an unchanged
+// scene plans nothing); lights and the camera are not covered by the scene's revision, so an
+// edit to either, unannounced, must still be seen.
+TEST(Cost, ALightOrCameraEditedInPlaceIsPlannedAgain) {
+    Scene s = builtinScene("tutorial-spot");
+    RenderOptions o = s.options;
+    o.width = o.height = 64;
+    sharedRenderer().render(s, o);
+    const Image before = sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 0);
+    s.lights[0].position += glm::vec3(1.0f, 0.0f, 0.0f);
+    const Image moved = sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 1);
+    EXPECT_NE(before.pixels, moved.pixels);
+    s.lights[0].enabled = false;
+    sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowMaps, 0);
+    s.lights[0].enabled = true;
+    s.camera.eye += glm::vec3(0.0f, 0.0f, 2.0f);
+    const Image away = sharedRenderer().render(s, o);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowMaps, 1);
+    EXPECT_NE(away.pixels, moved.pixels);
+}
+
 TEST(Cost, AnUnchangedSceneIsNotReadAgain) {
     // The GPU copy reads a scene's meshes, textures and objects (hashing every byte) only
     // for a revision or a time it has not synced.
