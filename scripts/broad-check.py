@@ -26,7 +26,8 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GNOMON = os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
+# $GNOMON picks another build (a copy kept aside while this tree rebuilds).
+GNOMON = os.environ.get("GNOMON") or os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
 SCENES = os.path.join(os.path.dirname(ROOT), "shared", "scenes")
 BOUNDS = (1.0, 0.05, 0.1)  # misclassified, false shadow away, leak away (percent)
 SUNS = [[], ["--sun", "30,60"], ["--sun", "200,20"], ["--sun", "120,8"]]

@@ -16,7 +16,8 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GNOMON = os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
+# $GNOMON picks another build (a copy kept aside while this tree rebuilds).
+GNOMON = os.environ.get("GNOMON") or os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
 
 MARK = "<!-- flicker: made by scripts/quality-flicker.py -->"
 INTRO = """## Temporal stability: flicker over camera and light paths

@@ -13,7 +13,8 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GNOMON = os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
+# $GNOMON picks another build (a copy kept aside while this tree rebuilds).
+GNOMON = os.environ.get("GNOMON") or os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
 
 # (label, flags): the techniques compared on every scene.
 VARIANTS = [

@@ -14,7 +14,8 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-GNOMON = os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
+# $GNOMON picks another build (a copy kept aside while this tree rebuilds).
+GNOMON = os.environ.get("GNOMON") or os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
 QUALITY_REAL = os.path.join(ROOT, "scripts", "quality-real.py")
 
 
