@@ -77,6 +77,23 @@ TEST(Truth, HardShadowIsTheAnalyticOutline) {
     EXPECT_FLOAT_EQ(r.pixelWorld[0], 0.125f);
 }
 
+// Where the light reaches a surface, the reference keeps the cosine between its geometric
+// normal and the light; a surface facing away from the light (its attached shadow, where no
+// light applies) is marked with cosine 0, which the aliasing band reads as the terminator.
+TEST(Truth, SurfacesFacingAwayFromTheLightAreMarked) {
+    Scene s = plateOverFloor();
+    const truth::Reference lit = truth::traceReference(s, s.options, {});
+    const std::size_t floorPixel = lit.at(kSize - 2, kSize / 2, 0);  // world x ~ 3.9: the floor
+    ASSERT_TRUE(lit.applies[floorPixel]);
+    EXPECT_NEAR(lit.lightCosine[floorPixel], std::sqrt(0.5f), 1e-5f);
+    s.lights[0].direction = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));  // from below
+    const truth::Reference below = truth::traceReference(s, s.options, {});
+    for (std::size_t c = 0; c < below.applies.size(); ++c) {
+        ASSERT_FALSE(below.applies[c]) << c;
+        ASSERT_EQ(below.lightCosine[c], 0.0f) << c;
+    }
+}
+
 TEST(Truth, SoftShadowIsFractionalOnlyAcrossThePenumbra) {
     Scene s = plateOverFloor();
     RenderOptions o = s.options;
