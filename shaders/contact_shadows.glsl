@@ -14,9 +14,10 @@ layout(location = 9) uniform float uContactLength;  // world units (= view units
 
 const int kContactSteps = 8;
 
-// 1 when nothing in the depth buffer lies between the fragment and `length` towards the
-// light, 0 when something does. `lightDistance` is the light's distance for point and spot
-// lights (the march stops there), or a large number for directional ones.
+// `visible` (the map's visibility) when nothing in the depth buffer lies between the
+// fragment and the march's length towards the light, 0 when something does; a fragment the
+// map already shadows (visible 0) does not march. `lightDistance` is the light's distance
+// for point and spot lights (the march stops there), or a large number for directional ones.
 float contactShadow(vec3 vsP, vec3 vsN, vec3 vsToLight, float lightDistance, float visible) {
     float len = min(uContactLength, 0.95 * lightDistance);
     if (!(len > 0.0)) return visible;

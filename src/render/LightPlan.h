@@ -3,8 +3,9 @@
 // cast shadows this frame. Fitted cameras cover what the view sees: the visible receivers'
 // boxes, or, with FitTo::ViewDepth, the view's depth samples: directional and area lights cover
 // them (which also choose cascade splits and, with `cascades` 0, their count), a point light
-// whose samples fit a 90-degree cone gets one frustum over them instead of a cube. No drawing: the
-// samples come in from the view depth pass.
+// whose samples fit a 90-degree cone gets one frustum over them instead of a cube, and a spot
+// maps only the window of its cone they lie in. No drawing: the samples come in from the view
+// depth pass. A plan is kept while everything it is made from is unchanged.
 #pragma once
 
 #include <cstdint>
