@@ -5,7 +5,7 @@ misclassified < 1 %, false shadow away from edges < 0.05 %, leak away from edges
 Run from anywhere after `make build`:
 
     scripts/broad-check.py [--scenes DIR] [--size WxH] [--lights sun,point,spot] [--only A,B]
-                           [--out docs/broad-check.md]
+                           [--flags "--bias-slope 0"] [--out docs/broad-check.md]
 
 Views per model, each with and without `--ground`:
 - sun: the model's own camera under four suns (`--sun` at the default, 30,60, 200,20, 120,8);
@@ -20,6 +20,7 @@ import glob
 import json
 import math
 import os
+import shlex
 import struct
 import subprocess
 import sys
@@ -114,7 +115,10 @@ def main():
     parser.add_argument("--lights", default="sun,point,spot")
     parser.add_argument("--only", default="", help="comma-separated parts of model names")
     parser.add_argument("--out", help="also write the table as a markdown page")
+    parser.add_argument("--flags", default="",
+                        help="gnomon score flags added to every view (a candidate default)")
     args = parser.parse_args()
+    extra = shlex.split(args.flags)
     models = sorted(glob.glob(os.path.join(args.scenes, "*", "*.gltf")) +
                     glob.glob(os.path.join(args.scenes, "*", "*.glb")))
     if args.only:
@@ -134,7 +138,7 @@ def main():
             for label, scene, flags in views(model, args.lights.split(","), work):
                 for ground in ([], ["--ground"]):
                     run = subprocess.run([GNOMON, "score", "--scene", scene, "--size", args.size,
-                                          "--out-dir", os.path.join(work, "out")] + flags + ground,
+                                          "--out-dir", os.path.join(work, "out")] + flags + ground + extra,
                                          capture_output=True, text=True)
                     total += 1
                     if run.returncode:
@@ -157,7 +161,7 @@ def main():
         commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                                 capture_output=True, text=True).stdout.strip()
         page = ["# Broad check: every model, many views, default settings", "",
-                head, "", f"`scripts/broad-check.py --size {args.size} --out FILE`, at commit {commit}. "
+                head, "", f"`scripts/broad-check.py --size {args.size}{' --flags ' + shlex.quote(args.flags) if args.flags else ''} --out FILE`, at commit {commit}. "
                 + summary + ".", ""] + lines
         tmp = args.out + ".tmp"
         with open(tmp, "w") as f:

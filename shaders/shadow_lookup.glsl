@@ -16,9 +16,13 @@ layout(location = 7) uniform vec3 uDepthAware;
 float depthTolerance(LightData light, float stored, float spacing) {
     // One ulp of a positive normal float: its exponent bits alone are 2^floor(log2 x), times
     // 2^-23. Bit operations, where exp2(floor(log2(x))) cost two transcendentals per lookup.
+    // Never less than the ulp of 0.5: a stored depth is computed, by the rasterizer and here,
+    // as a difference of terms near 1 (a perspective's (f + n) / (f - n) - 2fn / ((f - n) z)),
+    // so near 0 it is off by their ulps, not its own. A point light's cube fitted tight to a
+    // floor right under it stores depths of 1e-3 and shadowed all of that floor without this.
     float step = spacing >= 0.0
                      ? spacing
-                     : uintBitsToFloat(floatBitsToUint(max(stored, 1e-30)) & 0x7f800000u) *
+                     : uintBitsToFloat(floatBitsToUint(max(stored, 0.5)) & 0x7f800000u) *
                            exp2(-23.0);
     return light.shadowBias.x + uDepthAware.x * step;
 }

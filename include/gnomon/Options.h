@@ -91,8 +91,11 @@ struct ShadowOptions {
     // depth-aware step cover most of it, and a constant in stored depth is a distance that
     // grows with the square of the distance from a spot or point light (0.0002 was 14 cm at
     // 6 m from a near plane at 5 cm: Sponza's shafts lit through it under their capitals).
-    // What is left is the cubes' bilinear taps (Sponza's pillars near a point light need 5e-5).
-    float biasConstant = 0.00005f;
+    // Default 0: over the real-scene suite (scripts/quality-real.py) and the broad check, 5e-5
+    // only lifted shadows off their contacts (Sponza's gallery and capitals misclassified 1.3x
+    // more). What it used to hide, float rounding of depths near 0 in point lights' cubes,
+    // the depth-aware step now covers (shadow_lookup.glsl, depthTolerance).
+    float biasConstant = 0.0f;
     float biasDepthAware = 1.0f;  // + this many steps of the stored depth's spacing
     float biasSlope = 1.5f;       // glPolygonOffset factor in the depth pass, >= 0
     float biasUnits = 2.0f;       // glPolygonOffset units in the depth pass, >= 0

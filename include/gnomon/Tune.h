@@ -1,6 +1,7 @@
 // Shadow settings calibrated against ray-traced truth (gnomon tune): a search over the
-// tolerances, filter and its size, map size and cascades for the lowest error over one or
-// more views within a frame-time budget. The reference of each view is traced once and
+// tolerances, filter and its size, map size (per light when a scene has several shadowed
+// lights) and cascades for the lowest error over one or more views within a frame-time
+// budget. The reference of each view is traced once and
 // reused for every setting tried.
 #pragma once
 
@@ -31,7 +32,13 @@ struct TuneOptions {
 // One setting tried, scored over every view (means) and timed.
 struct TuneTrial {
     RenderOptions options;
-    std::string flags;  // what differs from the starting settings, as CLI flags ("" = none)
+    // Per light of the scene, its shadow map size in this trial (Light::shadowMapSize): the
+    // search sets them one by one when two or more lights cast shadows and
+    // options.shadow.mapSize is 0; otherwise they are the scene's own.
+    std::vector<int> mapSizes;
+    // What differs from the starting settings ("" = none): CLI flags, and "light N map-size
+    // S" for a light's own size.
+    std::string flags;
     double misclassified = 0.0;
     double awayFromEdges = 0.0;  // false shadow + leak outside the aliasing band
     double error = 0.0;          // what the search minimises: misclassified + awayFromEdges

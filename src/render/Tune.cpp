@@ -29,20 +29,44 @@ bool hasFittedSun(const Scene& s) {
     return false;
 }
 
+const std::vector<std::string> kMapSizes = {"512", "1024", "2048", "4096"};
+
+// Lights whose map sizes are searched one by one: every shadowed light when there are two or
+// more and the options leave each its own size (map-size 0), so a scene's sun can take the
+// texels its spot does not need. Otherwise none: one map size is searched for all.
+std::vector<int> lightsSizedApart(const Scene& scene, const RenderOptions& o) {
+    std::vector<int> lights;
+    if (o.shadow.mapSize != 0) return lights;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        if (scene.lights[i].enabled && scene.lights[i].castsShadows) lights.push_back(int(i));
+    if (lights.size() < 2) lights.clear();
+    return lights;
+}
+
+// What the search varies: options by their names, then one map size per light of
+// `sizedLights` (parameter i >= options is that light's).
+struct Space {
+    std::vector<search::Parameter> parameters;
+    std::size_t options = 0;
+    std::vector<int> sizedLights;
+};
+
 // The settings searched, each with the starting value among its values; `start` gets the
 // index of that value per parameter.
-std::vector<search::Parameter> searchSpace(const Scene& scene, const RenderOptions& o,
-                                           search::Point& start) {
-    std::vector<search::Parameter> space = {
+Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& start) {
+    Space result;
+    result.sizedLights = lightsSizedApart(scene, o);
+    std::vector<search::Parameter>& space = result.parameters;
+    space = {
         {"filter", {"none", "pcf", "poisson", "pcss"}},
         {"pcf-size", {"1", "3", "5", "7"}},
-        {"map-size", {"512", "1024", "2048", "4096"}},
         {"receiver-plane", {"on", "off"}},
         {"normal-offset", {"0", "0.5", "1", "2"}},
         {"bias-depth-aware", {"0.5", "1", "2", "4"}},
         {"bias-slope", {"0", "1.5", "3"}},
         {"bias-constant", {"0", "0.00005", "0.0002"}},
     };
+    if (result.sizedLights.empty()) space.insert(space.begin() + 2, {"map-size", kMapSizes});
     if (hasFittedSun(scene)) space.push_back({"cascades", {"auto", "1", "2", "3", "4"}});
     start.clear();
     for (search::Parameter& p : space) {
@@ -55,22 +79,48 @@ std::vector<search::Parameter> searchSpace(const Scene& scene, const RenderOptio
         if (at == p.values.end()) at = p.values.insert(p.values.begin(), formatOption(spec, o));
         start.push_back(int(at - p.values.begin()));
     }
-    return space;
+    result.options = space.size();
+    for (int light : result.sizedLights) {
+        search::Parameter p{"light " + std::to_string(light) + " map-size", kMapSizes};
+        const std::string own = std::to_string(scene.lights[std::size_t(light)].shadowMapSize);
+        auto at = std::find(p.values.begin(), p.values.end(), own);
+        if (at == p.values.end()) at = p.values.insert(p.values.begin(), own);
+        start.push_back(int(at - p.values.begin()));
+        space.push_back(std::move(p));
+    }
+    return result;
 }
 
-RenderOptions optionsAt(const std::vector<search::Parameter>& space, const search::Point& point,
-                        const RenderOptions& start, std::string& flags) {
-    RenderOptions o = start;
+// A point of the search as settings: the options, and every light's map size (its own
+// unless the search sets it). `flags` says what differs from the start: CLI flags for
+// options, "light N map-size S" for a light's size (a scene-file light's shadow-map-size).
+struct Setting {
+    RenderOptions options;
+    std::vector<int> mapSizes;
+};
+
+Setting settingAt(const Space& space, const search::Point& point, const RenderOptions& start,
+                  const Scene& scene, std::string& flags) {
+    Setting s{start, {}};
     flags.clear();
-    for (std::size_t i = 0; i < space.size(); ++i) {
-        const OptionSpec& spec = *findOption(space[i].name);
-        const std::string& value = space[i].values[std::size_t(point[i])];
-        if (const auto problem = parseOption(spec, value, o))
-            throw Error(ErrorKind::InvalidInput, "tune: --" + space[i].name + ": " + *problem);
-        if (spec.get(o) != spec.get(start))
-            flags += (flags.empty() ? "--" : " --") + space[i].name + " " + value;
+    for (const Light& l : scene.lights)
+        s.mapSizes.push_back(l.shadowMapSize);
+    auto add = [&](const std::string& text) { flags += (flags.empty() ? "" : " ") + text; };
+    for (std::size_t i = 0; i < space.parameters.size(); ++i) {
+        const search::Parameter& p = space.parameters[i];
+        const std::string& value = p.values[std::size_t(point[i])];
+        if (i >= space.options) {
+            const auto light = std::size_t(space.sizedLights[i - space.options]);
+            s.mapSizes[light] = std::stoi(value);
+            if (s.mapSizes[light] != scene.lights[light].shadowMapSize) add(p.name + " " + value);
+            continue;
+        }
+        const OptionSpec& spec = *findOption(p.name);
+        if (const auto problem = parseOption(spec, value, s.options))
+            throw Error(ErrorKind::InvalidInput, "tune: --" + p.name + ": " + *problem);
+        if (spec.get(s.options) != spec.get(start)) add("--" + p.name + " " + value);
     }
-    return o;
+    return s;
 }
 
 class Evaluator {
@@ -79,13 +129,16 @@ public:
               const TuneOptions& options)
         : mRenderer(renderer), mScene(scene), mViews(std::move(views)), mOptions(options) {}
 
-    // Scores `o` over every view (means), and times it on the first against `start` (the
-    // starting settings; the very object for their own trial).
-    TuneTrial run(const RenderOptions& o, const RenderOptions& start, std::string flags,
+    // Scores `setting` over every view (means), and times it on the first against `start`
+    // (the starting settings; the very object for their own trial).
+    TuneTrial run(const Setting& setting, const Setting& start, std::string flags,
                   double& traceSeconds) {
         TuneTrial t;
+        const RenderOptions& o = setting.options;
         t.options = o;
+        t.mapSizes = setting.mapSizes;
         t.flags = std::move(flags);
+        apply(setting);
         for (std::size_t v = 0; v < mViews.size(); ++v) {
             mScene.camera = mViews[v];
             ScoreFrame frame = renderForScore(mRenderer, mScene, o, mOptions.score);
@@ -96,11 +149,16 @@ public:
                                double(mViews.size());
         }
         t.error = t.misclassified + t.awayFromEdges;
-        t.frameMs = frameMs(o, start);
+        t.frameMs = frameMs(setting, start);
         return t;
     }
 
 private:
+    void apply(const Setting& setting) {
+        for (std::size_t i = 0; i < mScene.lights.size(); ++i)
+            mScene.lights[i].shadowMapSize = setting.mapSizes[i];
+    }
+
     // Traced once per view (and once more soft, for pcss, as gnomon score compares it).
     const truth::Reference& reference(std::size_t view, const RenderOptions& o,
                                       double& traceSeconds) {
@@ -123,14 +181,15 @@ private:
     // the starting settings' first median. The machine's drift (15-35 % here) hits both
     // alike, so a cheaper setting is not refused the budget for having been timed at a
     // slow moment.
-    double frameMs(const RenderOptions& o, const RenderOptions& start) {
+    double frameMs(const Setting& o, const Setting& start) {
         mScene.camera = mViews.front();
         mRenderer.setPassTiming(true);
         std::vector<double> mine, theirs;
-        auto time = [&](const RenderOptions& options) {
+        auto time = [&](const Setting& setting) {
+            apply(setting);
             mRenderer.invalidateShadowMaps();
             const auto begin = std::chrono::steady_clock::now();
-            mRenderer.render(mScene, options);
+            mRenderer.render(mScene, setting.options);
             return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
                                                              begin)
                 .count();
@@ -177,21 +236,22 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     TuneResult result;
     result.views = int(views.size());
     search::Point startPoint;
-    const std::vector<search::Parameter> space = searchSpace(scene, start, startPoint);
+    const Space space = searchSpace(scene, start, startPoint);
     Evaluator evaluator(renderer, scene, views, options);
     std::string flags;
+    const Setting first = settingAt(space, startPoint, start, scene, flags);
     // The starting settings first: their frame time is the budget when none is given.
-    result.trials.push_back(evaluator.run(start, start, "", result.traceSeconds));
+    result.trials.push_back(evaluator.run(first, first, "", result.traceSeconds));
     if (onTrial) onTrial(result.trials.back());
     if (progress) ++progress->trialsDone;
     result.budgetMs = options.budgetMs > 0.0 ? options.budgetMs : result.trials[0].frameMs;
     std::map<search::Point, int> trialOf = {{startPoint, 0}};
     const search::SearchResult found = search::coordinateDescent(
-        space, startPoint, result.budgetMs,
+        space.parameters, startPoint, result.budgetMs,
         [&](const search::Point& p) {
             if (!trialOf.count(p)) {
-                const RenderOptions o = optionsAt(space, p, start, flags);
-                result.trials.push_back(evaluator.run(o, start, flags, result.traceSeconds));
+                const Setting setting = settingAt(space, p, start, scene, flags);
+                result.trials.push_back(evaluator.run(setting, first, flags, result.traceSeconds));
                 trialOf[p] = int(result.trials.size()) - 1;
                 if (onTrial) onTrial(result.trials.back());
                 if (progress) ++progress->trialsDone;
@@ -218,6 +278,7 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
 std::string toJson(const TuneResult& r, const std::string& scene) {
     auto trial = [](const TuneTrial& t) {
         return nlohmann::json{{"flags", t.flags},
+                              {"map_sizes", t.mapSizes},
                               {"misclassified", t.misclassified},
                               {"away_from_edges", t.awayFromEdges},
                               {"error", t.error},

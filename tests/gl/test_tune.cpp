@@ -1,7 +1,8 @@
 // gnomon tune on a scene whose optimum is known: tutorial-room started with one tolerance
 // off (no slope-scaled offset and no receiver plane: acne over a third of the pixels) must
 // find its way back to a setting that is right almost everywhere, within the budget, and
-// report every trial on the front or behind it.
+// report every trial on the front or behind it. With two shadowed lights, one starved of
+// texels, it must size each light's map apart.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -43,6 +44,35 @@ TEST(Tune, FindsTheKnownRemedyForAcne) {
     const nlohmann::json j = nlohmann::json::parse(toJson(r, "tutorial-room"));
     EXPECT_EQ(j["trials"].size(), r.trials.size());
     EXPECT_EQ(j["best"].get<int>(), r.best);
+}
+
+// Two shadowed lights, one with a 64² map (its shadows a blur of blocks): the search sizes
+// each light's map on its own, grows the starved one and leaves the global map size alone.
+TEST(Tune, SizesEachLightsMapApart) {
+    Scene s = builtinScene("tutorial-room");
+    s.lights.push_back(builtinScene("tutorial-spot").lights.front());
+    s.lights[0].shadowMapSize = 64;
+    const int spotSize = s.lights[1].shadowMapSize;
+    RenderOptions start = s.options;
+    start.width = start.height = 96;
+    TuneOptions o;
+    o.budgetMs = 1e5;
+    o.timedFrames = 1;
+    o.maxSweeps = 1;
+    const TuneResult r = tune(sharedRenderer(), s, start, o);
+    EXPECT_EQ(s.lights[0].shadowMapSize, 64);  // the scene is put back
+    ASSERT_GE(r.best, 1);
+    EXPECT_EQ(r.trials.front().mapSizes, (std::vector<int>{64, spotSize}));
+    const TuneTrial& best = r.trials[std::size_t(r.best)];
+    EXPECT_GE(best.mapSizes[0], 512);
+    EXPECT_LT(best.misclassified, 0.5 * r.trials.front().misclassified);
+    EXPECT_NE(best.flags.find("light 0 map-size"), std::string::npos) << best.flags;
+    bool spotSearched = false;
+    for (const TuneTrial& t : r.trials) {
+        EXPECT_EQ(t.options.shadow.mapSize, 0) << t.flags;  // no size for every light at once
+        spotSearched |= t.mapSizes[1] != spotSize;
+    }
+    EXPECT_TRUE(spotSearched);
 }
 
 }  // namespace

@@ -108,11 +108,17 @@ void Viewer::pollTune() {
     mTuneJob.reset();
 }
 
-// The best settings' shadow options over the current ones (the view's size stays).
+// The best settings' shadow options over the current ones (the view's size stays), and the
+// map size it gave each light.
 void Viewer::applyTune() {
     if (!mTune || mTune->best < 0)
         throw Error(ErrorKind::InvalidInput, "apply-tune: no tune result to apply");
-    mState.options.shadow = mTune->trials[std::size_t(mTune->best)].options.shadow;
+    const TuneTrial& best = mTune->trials[std::size_t(mTune->best)];
+    mState.options.shadow = best.options.shadow;
+    if (best.mapSizes.size() == mState.scene.lights.size()) {
+        for (std::size_t i = 0; i < best.mapSizes.size(); ++i)
+            mState.scene.lights[i].shadowMapSize = best.mapSizes[i];
+    }
     changed(true);
 }
 
