@@ -55,6 +55,7 @@ struct TuneResult {
     double budgetMs = 0.0;
     int views = 0;
     int sweeps = 0;
+    int trades = 0;            // pairs of changes that trade time the search moved to
     bool interrupted = false;  // progress->cancel stopped it: what was found so far
     double traceSeconds = 0.0;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 namespace gnomon::search {
 
@@ -27,6 +28,111 @@ private:
     std::map<Point, int> mIndex;
 };
 
+// The search's state and its two moves. A move returns whether the current point moved, or
+// nothing when `stop` ended the search.
+class Descent {
+public:
+    Descent(const std::vector<Parameter>& parameters, double budgetMs,
+            const std::function<Evaluation(const Point&)>& evaluate,
+            const std::function<bool()>& stop, SearchResult& result)
+        : mParameters(parameters),
+          mBudget(budgetMs),
+          mStop(stop),
+          mResult(result),
+          mMemo(result, evaluate) {}
+
+    bool start(const Point& p) {
+        if (stopping()) return false;
+        mCurrent = mMemo.trial(p);
+        consider(mCurrent);
+        return true;
+    }
+
+    // Every other value of each parameter in turn, the rest held; the current point moves
+    // to the best within the budget that lowers the error (an over-budget current point
+    // gives way to any feasible one).
+    std::optional<bool> sweep() {
+        bool moved = false;
+        for (std::size_t p = 0; p < mParameters.size(); ++p) {
+            int bestHere = mCurrent;
+            for (int v = 0; v < int(mParameters[p].values.size()); ++v) {
+                if (v == point(mCurrent)[p]) continue;
+                if (stopping()) return std::nullopt;
+                Point next = point(mCurrent);
+                next[p] = v;
+                bestHere = better(mMemo.trial(next), bestHere);
+            }
+            moved |= bestHere != mCurrent;
+            mCurrent = bestHere;
+        }
+        return moved;
+    }
+
+    // Pairs that trade time: a single change that lowers the error but breaks the budget (a
+    // larger map) may fit beside one that saves time (a smaller filter), a pair that
+    // changing one setting at a time never tries. From a point no single change improves,
+    // the two best over-budget changes are each tried with every change of another
+    // parameter that is faster than the point itself.
+    std::optional<bool> trade() {
+        struct Change {
+            std::size_t parameter;
+            int trial;
+        };
+        std::vector<Change> over, faster;
+        for (std::size_t p = 0; p < mParameters.size(); ++p) {
+            for (int v = 0; v < int(mParameters[p].values.size()); ++v) {
+                if (v == point(mCurrent)[p]) continue;
+                if (stopping()) return std::nullopt;
+                Point next = point(mCurrent);
+                next[p] = v;
+                const int t = mMemo.trial(next);  // known already after a sweep that stayed
+                if (!feasible(t) && error(t) < error(mCurrent)) over.push_back({p, t});
+                if (ms(t) < ms(mCurrent)) faster.push_back({p, t});
+            }
+        }
+        std::sort(over.begin(), over.end(), [&](const Change& a, const Change& b) {
+            return error(a.trial) < error(b.trial);
+        });
+        if (over.size() > 2) over.resize(2);
+        int bestHere = mCurrent;
+        for (const Change& gain : over) {
+            for (const Change& saving : faster) {
+                if (saving.parameter == gain.parameter) continue;
+                if (stopping()) return std::nullopt;
+                Point pair = point(gain.trial);
+                pair[saving.parameter] = point(saving.trial)[saving.parameter];
+                bestHere = better(mMemo.trial(pair), bestHere);
+            }
+        }
+        const bool moved = bestHere != mCurrent;
+        mCurrent = bestHere;
+        return moved;
+    }
+
+private:
+    const Point& point(int t) const { return mResult.trials[std::size_t(t)].point; }
+    double error(int t) const { return mResult.trials[std::size_t(t)].eval.error; }
+    double ms(int t) const { return mResult.trials[std::size_t(t)].eval.ms; }
+    bool feasible(int t) const { return ms(t) <= mBudget; }
+    bool stopping() { return mStop && (mResult.stopped = mStop()); }
+    void consider(int t) {
+        if (feasible(t) && (mResult.best < 0 || error(t) < error(mResult.best))) mResult.best = t;
+    }
+    // `t` (just evaluated) or `incumbent`, whichever the current point should move to.
+    int better(int t, int incumbent) {
+        consider(t);
+        const bool wins = feasible(t) && (!feasible(incumbent) || error(t) < error(incumbent));
+        return wins ? t : incumbent;
+    }
+
+    const std::vector<Parameter>& mParameters;
+    double mBudget;
+    const std::function<bool()>& mStop;
+    SearchResult& mResult;
+    Memo mMemo;
+    int mCurrent = -1;
+};
+
 }  // namespace
 
 SearchResult coordinateDescent(const std::vector<Parameter>& parameters, const Point& start,
@@ -34,40 +140,17 @@ SearchResult coordinateDescent(const std::vector<Parameter>& parameters, const P
                                const std::function<Evaluation(const Point&)>& evaluate,
                                int maxSweeps, const std::function<bool()>& stop) {
     SearchResult result;
-    Memo memo(result, evaluate);
-    auto stopping = [&] { return stop && (result.stopped = stop()); };
-    auto feasible = [&](int t) { return result.trials[std::size_t(t)].eval.ms <= budgetMs; };
-    auto error = [&](int t) { return result.trials[std::size_t(t)].eval.error; };
-    auto consider = [&](int t) {
-        if (feasible(t) && (result.best < 0 || error(t) < error(result.best))) result.best = t;
-    };
-    if (stopping()) return result;
-    int current = memo.trial(start);
-    consider(current);
+    Descent descent(parameters, budgetMs, evaluate, stop, result);
+    if (!descent.start(start)) return result;
     for (int sweep = 0; sweep < maxSweeps; ++sweep) {
-        bool moved = false;
-        for (std::size_t p = 0; p < parameters.size(); ++p) {
-            int bestHere = current;
-            for (int v = 0; v < int(parameters[p].values.size()); ++v) {
-                if (v == result.trials[std::size_t(current)].point[p]) continue;
-                if (stopping()) return result;
-                Point next = result.trials[std::size_t(current)].point;
-                next[p] = v;
-                const int t = memo.trial(next);
-                consider(t);
-                // Within the budget and lower than what this parameter has found so far (an
-                // over-budget current point gives way to any feasible one).
-                const bool better =
-                    feasible(t) && (!feasible(bestHere) || error(t) < error(bestHere));
-                if (better) bestHere = t;
-            }
-            if (bestHere != current) {
-                current = bestHere;
-                moved = true;
-            }
-        }
+        const std::optional<bool> moved = descent.sweep();
+        if (!moved) return result;
         result.sweeps = sweep + 1;
-        if (!moved) break;
+        if (*moved) continue;
+        const std::optional<bool> traded = descent.trade();
+        if (!traded) return result;
+        if (!*traded) break;
+        ++result.trades;
     }
     return result;
 }

@@ -9,7 +9,9 @@
 // some thirty trials each. Every trial is a full render and score of each view, so
 // exhaustive search (thousands of points) is out; successive halving pays off when a cheap,
 // noisy early estimate exists, and a shadow score has none (a smaller image scores
-// differently, not roughly the same).
+// differently, not roughly the same). One setting at a time cannot see a pair that trades
+// time (a larger map paid for by a smaller filter), so the descent also tries such pairs
+// where it would otherwise stop.
 #pragma once
 
 #include <functional>
@@ -36,15 +38,18 @@ struct SearchResult {
     std::vector<Trial> trials;  // every point evaluated, once each, in order
     int best = -1;              // the trial with the lowest error within the budget (-1: none)
     int sweeps = 0;             // sweeps over the parameters done
+    int trades = 0;             // pairs of changes the search moved to (coordinateDescent)
     bool stopped = false;       // `stop` ended it early: `trials` and `best` hold what was found
 };
 
 // Starts at `start` (evaluated first; it is the current point even over the budget) and
 // sweeps the parameters in order: each of its other values is tried with the rest held, and
 // the current point moves to the best one within `budgetMs` (frame time <= budget) that
-// lowers the error. Stops after a sweep that moved nothing, after `maxSweeps`, or when
-// `stop` returns true (checked before each trial). `evaluate` may throw; the search does not
-// catch.
+// lowers the error. After a sweep that moved nothing it tries trades: the two best single
+// changes that lower the error but break the budget, each paired with every single change
+// of another parameter that is faster than the current point; a winning pair starts another
+// sweep. Stops when no trade wins, after `maxSweeps` sweeps, or when `stop` returns true
+// (checked before each trial). `evaluate` may throw; the search does not catch.
 SearchResult coordinateDescent(const std::vector<Parameter>& parameters, const Point& start,
                                double budgetMs,
                                const std::function<Evaluation(const Point&)>& evaluate,

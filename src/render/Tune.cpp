@@ -261,6 +261,7 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
         },
         options.maxSweeps, [&] { return progress && progress->cancel.load(); });
     result.sweeps = found.sweeps;
+    result.trades = found.trades;
     result.interrupted = found.stopped;
     if (found.best >= 0) result.best = trialOf[found.trials[std::size_t(found.best)].point];
     std::vector<search::Trial> all;
@@ -289,6 +290,7 @@ std::string toJson(const TuneResult& r, const std::string& scene) {
     j["views"] = r.views;
     j["budget_ms"] = r.budgetMs;
     j["sweeps"] = r.sweeps;
+    j["trades"] = r.trades;
     j["interrupted"] = r.interrupted;
     j["trace_seconds"] = r.traceSeconds;
     j["best"] = r.best;

@@ -1,6 +1,7 @@
 // gnomon tune's search without GL: coordinate descent finds the known optimum of a space
-// whose best point is known (found here by trying every point), respects the budget, stops
-// when asked, and the front keeps exactly the trials nothing beats.
+// whose best point is known (found here by trying every point), respects the budget, finds
+// a pair of changes that trades time, stops when asked, and the front keeps exactly the
+// trials nothing beats.
 #include <gtest/gtest.h>
 
 #include "core/TuneSearch.h"
@@ -62,6 +63,25 @@ TEST(TuneSearch, AStartOverBudgetGivesWay) {
     const SearchResult r = coordinateDescent(space(), {4, 3, 2}, 16.0, model);
     ASSERT_GE(r.best, 0);
     EXPECT_LE(r.trials[std::size_t(r.best)].eval.ms, 16.0);
+}
+
+// A larger map (a = 1) halves the error but costs 10 ms over the budget; a smaller filter
+// (b = 1) saves 10 ms for a little error. Neither alone improves on the start within the
+// budget, so one change at a time stops there; the pair is the optimum.
+TEST(TuneSearch, FindsAPairThatTradesTime) {
+    const std::vector<Parameter> two = {{"a", {"0", "1"}}, {"b", {"0", "1"}}, {"c", {"0", "1"}}};
+    auto cost = [](const Point& p) {
+        return Evaluation{1.0 - 0.5 * p[0] + 0.05 * p[1] + 0.1 * p[2],
+                          100.0 + 10.0 * p[0] - 10.0 * p[1] + 1.0 * p[2]};
+    };
+    const SearchResult r = coordinateDescent(two, {0, 0, 0}, 100.0, cost);
+    ASSERT_GE(r.best, 0);
+    EXPECT_EQ(r.trials[std::size_t(r.best)].point, (Point{1, 1, 0}));
+    EXPECT_EQ(r.trades, 1);
+    // Over the budget the pair is not needed: the larger map alone.
+    const SearchResult free = coordinateDescent(two, {0, 0, 0}, 1e9, cost);
+    EXPECT_EQ(free.trials[std::size_t(free.best)].point, (Point{1, 0, 0}));
+    EXPECT_EQ(free.trades, 0);
 }
 
 TEST(TuneSearch, StopsWhenAskedAndKeepsWhatItFound) {
