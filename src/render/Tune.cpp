@@ -44,11 +44,13 @@ std::vector<int> lightsSizedApart(const Scene& scene, const RenderOptions& o) {
 }
 
 // What the search varies: options by their names, then one map size per light of
-// `sizedLights` (parameter i >= options is that light's).
+// `sizedLights` (parameter i >= options is that light's). `ownSizes`: every light's map size
+// as the scene had it when the search began (the evaluator sets them on the scene per trial).
 struct Space {
     std::vector<search::Parameter> parameters;
     std::size_t options = 0;
     std::vector<int> sizedLights;
+    std::vector<int> ownSizes;
 };
 
 // The settings searched, each with the starting value among its values; `start` gets the
@@ -56,6 +58,8 @@ struct Space {
 Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& start) {
     Space result;
     result.sizedLights = lightsSizedApart(scene, o);
+    for (const Light& l : scene.lights)
+        result.ownSizes.push_back(l.shadowMapSize);
     std::vector<search::Parameter>& space = result.parameters;
     space = {
         {"filter", {"none", "pcf", "poisson", "pcss"}},
@@ -82,7 +86,7 @@ Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& sta
     result.options = space.size();
     for (int light : result.sizedLights) {
         search::Parameter p{"light " + std::to_string(light) + " map-size", kMapSizes};
-        const std::string own = std::to_string(scene.lights[std::size_t(light)].shadowMapSize);
+        const std::string own = std::to_string(result.ownSizes[std::size_t(light)]);
         auto at = std::find(p.values.begin(), p.values.end(), own);
         if (at == p.values.end()) at = p.values.insert(p.values.begin(), own);
         start.push_back(int(at - p.values.begin()));
@@ -100,11 +104,9 @@ struct Setting {
 };
 
 Setting settingAt(const Space& space, const search::Point& point, const RenderOptions& start,
-                  const Scene& scene, std::string& flags) {
-    Setting s{start, {}};
+                  std::string& flags) {
+    Setting s{start, space.ownSizes};
     flags.clear();
-    for (const Light& l : scene.lights)
-        s.mapSizes.push_back(l.shadowMapSize);
     auto add = [&](const std::string& text) { flags += (flags.empty() ? "" : " ") + text; };
     for (std::size_t i = 0; i < space.parameters.size(); ++i) {
         const search::Parameter& p = space.parameters[i];
@@ -112,7 +114,7 @@ Setting settingAt(const Space& space, const search::Point& point, const RenderOp
         if (i >= space.options) {
             const auto light = std::size_t(space.sizedLights[i - space.options]);
             s.mapSizes[light] = std::stoi(value);
-            if (s.mapSizes[light] != scene.lights[light].shadowMapSize) add(p.name + " " + value);
+            if (s.mapSizes[light] != space.ownSizes[light]) add(p.name + " " + value);
             continue;
         }
         const OptionSpec& spec = *findOption(p.name);
@@ -239,7 +241,7 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     const Space space = searchSpace(scene, start, startPoint);
     Evaluator evaluator(renderer, scene, views, options);
     std::string flags;
-    const Setting first = settingAt(space, startPoint, start, scene, flags);
+    const Setting first = settingAt(space, startPoint, start, flags);
     // The starting settings first: their frame time is the budget when none is given.
     result.trials.push_back(evaluator.run(first, first, "", result.traceSeconds));
     if (onTrial) onTrial(result.trials.back());
@@ -250,7 +252,7 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
         space.parameters, startPoint, result.budgetMs,
         [&](const search::Point& p) {
             if (!trialOf.count(p)) {
-                const Setting setting = settingAt(space, p, start, scene, flags);
+                const Setting setting = settingAt(space, p, start, flags);
                 result.trials.push_back(evaluator.run(setting, first, flags, result.traceSeconds));
                 trialOf[p] = int(result.trials.size()) - 1;
                 if (onTrial) onTrial(result.trials.back());

@@ -71,6 +71,9 @@ TEST(Tune, SizesEachLightsMapApart) {
     for (const TuneTrial& t : r.trials) {
         EXPECT_EQ(t.options.shadow.mapSize, 0) << t.flags;  // no size for every light at once
         spotSearched |= t.mapSizes[1] != spotSize;
+        // The flags name a light's size exactly when it differs from the scene's own.
+        EXPECT_EQ(t.mapSizes[0] != 64, t.flags.find("light 0 map-size") != std::string::npos)
+            << t.flags;
     }
     EXPECT_TRUE(spotSearched);
 }
