@@ -14,6 +14,7 @@
 #include "gnomon/Error.h"
 #include "gnomon/OptionSchema.h"
 #include "render/ScoreDetail.h"
+#include "scene/SceneUtil.h"
 
 namespace gnomon {
 
@@ -31,14 +32,15 @@ bool hasFittedSun(const Scene& s) {
 
 const std::vector<std::string> kMapSizes = {"512", "1024", "2048", "4096"};
 
-// Lights whose map sizes are searched one by one: every shadowed light when there are two or
-// more and the options leave each its own size (map-size 0), so a scene's sun can take the
-// texels its spot does not need. Otherwise none: one map size is searched for all.
+// Lights whose map sizes are searched one by one: every shadowed light that is on (the
+// scene's switches, or --light-only's) when there are two or more and the options leave each
+// its own size (map-size 0), so a scene's sun can take the texels its spot does not need.
+// Otherwise none: one map size is searched for all.
 std::vector<int> lightsSizedApart(const Scene& scene, const RenderOptions& o) {
     std::vector<int> lights;
     if (o.shadow.mapSize != 0) return lights;
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
-        if (scene.lights[i].enabled && scene.lights[i].castsShadows) lights.push_back(int(i));
+        if (lightIsOn(scene, o, i) && scene.lights[i].castsShadows) lights.push_back(int(i));
     if (lights.size() < 2) lights.clear();
     return lights;
 }
