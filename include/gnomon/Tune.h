@@ -33,7 +33,7 @@ struct TuneOptions {
 struct TuneTrial {
     RenderOptions options;
     // Per light of the scene, its shadow map size in this trial (Light::shadowMapSize): the
-    // search sets them one by one when two or more lights cast shadows and
+    // search sets them one by one when two to eight lights cast shadows and
     // options.shadow.mapSize is 0; otherwise they are the scene's own.
     std::vector<int> mapSizes;
     // What differs from the starting settings ("" = none): CLI flags, and "light N map-size

@@ -78,5 +78,25 @@ TEST(Tune, SizesEachLightsMapApart) {
     EXPECT_TRUE(spotSearched);
 }
 
+// Sixteen shadowed lights: sizing each apart would add three trials per light and sweep, so
+// one map size is searched for all (stopped after the first settings, map size among them).
+TEST(Tune, ManyLightsShareOneMapSize) {
+    Scene s = builtinScene("mixed-lights");
+    RenderOptions start = s.options;
+    start.width = start.height = 32;
+    TuneOptions o;
+    o.budgetMs = 1e5;
+    o.timedFrames = 1;
+    TuneProgress progress;
+    bool globalSize = false;
+    const TuneResult r = tune(sharedRenderer(), s, start, o, &progress, [&](const TuneTrial& t) {
+        globalSize |= t.options.shadow.mapSize != 0;
+        EXPECT_EQ(t.flags.find("light "), std::string::npos) << t.flags;
+        if (progress.trialsDone >= 9) progress.cancel = true;
+    });
+    EXPECT_TRUE(r.interrupted);
+    EXPECT_TRUE(globalSize);
+}
+
 }  // namespace
 }  // namespace gnomon::test
