@@ -48,6 +48,11 @@ double pct(double f) {
 }
 
 void printTrial(std::size_t i, const TuneTrial& t, double budget) {
+    if (!t.failure.empty()) {
+        std::printf("%5zu  failed (never chosen): %s: %s\n", i, t.flags.c_str(), t.failure.c_str());
+        std::fflush(stdout);
+        return;
+    }
     std::printf("%5zu  %13.3f%%  %13.3f%%  %9.1f%s  %s\n", i, pct(t.misclassified),
                 pct(t.awayFromEdges), t.frameMs, t.frameMs > budget ? "*" : " ",
                 t.flags.empty() ? "(starting settings)" : t.flags.c_str());

@@ -43,6 +43,9 @@ struct TuneTrial {
     double awayFromEdges = 0.0;  // false shadow + leak outside the aliasing band
     double error = 0.0;          // what the search minimises: misclassified + awayFromEdges
     double frameMs = 0.0;
+    // Why the setting could not be rendered ("" = it was), e.g. maps beyond the driver's
+    // memory: its error and time are then infinite, so it is never chosen.
+    std::string failure;
 };
 
 struct TuneResult {

@@ -293,6 +293,7 @@ void LightPlan::finish(const ShadowPass& pass) {
         const bool cube = sl.frame.kind == shadow::FrameKind::Cube;
         const int arraySize = cube ? pass.cubes().width() : pass.mapArraySize();
         g.colour.w = float(sl.layer);
+        g.shadow.y = sl.frame.texelWorldSize;  // a cube drawn larger than asked has finer texels
         g.shadow.w = float(sl.mapSize) / float(arraySize);
         g.shadowBias.z = 1.0f / float(arraySize);
         // A 2D map's square in its layer (lights.glsl: wsPosition.xy, which only cubes use

@@ -277,6 +277,14 @@ void ShadowPass::layOut(std::vector<ShadowedLight>& lights, const ShadowOptions&
             mSizes.push_back(l.mapSize);
         }
     }
+    // A cube map array has one size, and a cube's lookups read whole faces: every cube is
+    // drawn at the largest size asked for, its texel shrunk to match (a light that asked for
+    // less gets the finer map).
+    for (ShadowedLight& l : lights) {
+        if (l.frame.kind != shadow::FrameKind::Cube || l.mapSize == sizeCube) continue;
+        l.frame.texelWorldSize *= float(l.mapSize) / float(sizeCube);
+        l.mapSize = sizeCube;
+    }
     const int count2D = shadow::packMaps(mSizes, size2D, mSlots);
     std::size_t next2D = 0;
     for (ShadowedLight& l : lights) {

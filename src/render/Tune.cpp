@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -145,6 +146,24 @@ public:
         t.mapSizes = setting.mapSizes;
         t.flags = std::move(flags);
         apply(setting);
+        try {
+            score(t, o, traceSeconds);
+            t.frameMs = frameMs(setting, start);
+        } catch (const Error& e) {
+            // A setting the driver cannot hold (maps beyond its memory) is a point of the
+            // space that does not exist: recorded, never chosen, and the search goes on. The
+            // starting settings must render, as they do for gnomon render.
+            if (&setting == &start) throw;
+            t.failure = e.what();
+            t.misclassified = t.awayFromEdges = t.error = t.frameMs =
+                std::numeric_limits<double>::infinity();
+        }
+        return t;
+    }
+
+private:
+    // Renders and scores `o` over every view: the means.
+    void score(TuneTrial& t, const RenderOptions& o, double& traceSeconds) {
         for (std::size_t v = 0; v < mViews.size(); ++v) {
             mScene.camera = mViews[v];
             ScoreFrame frame = renderForScore(mRenderer, mScene, o, mOptions.score);
@@ -155,11 +174,8 @@ public:
                                double(mViews.size());
         }
         t.error = t.misclassified + t.awayFromEdges;
-        t.frameMs = frameMs(setting, start);
-        return t;
     }
 
-private:
     void apply(const Setting& setting) {
         for (std::size_t i = 0; i < mScene.lights.size(); ++i)
             mScene.lights[i].shadowMapSize = setting.mapSizes[i];
@@ -284,6 +300,7 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
 
 std::string toJson(const TuneResult& r, const std::string& scene) {
     auto trial = [](const TuneTrial& t) {
+        if (!t.failure.empty()) return nlohmann::json{{"flags", t.flags}, {"failed", t.failure}};
         return nlohmann::json{{"flags", t.flags},
                               {"map_sizes", t.mapSizes},
                               {"misclassified", t.misclassified},

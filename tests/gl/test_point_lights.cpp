@@ -153,6 +153,24 @@ TEST(PointLights, CasterTowardsAFaceCornerShadowsTheReceiverBehindIt) {
     EXPECT_EQ(n.same, n.lit) << "light where the geometry says lit was taken away";
 }
 
+// A cube map array has one size, so a point light that asks for a smaller map than another
+// is drawn at the larger one. Drawn at its own size it filled a corner of each face while its
+// lookups read the whole face (gnomon tune found it: ToyCar's lamp at 7.5 % misclassified).
+TEST(PointLights, LightsAskingForDifferentMapSizesShareTheCubesRight) {
+    Scene s = builtinScene("tutorial-point");
+    RenderOptions o = s.options;
+    o.width = o.height = 128;
+    const double alone = score(sharedRenderer(), s, o).overall.misclassified;
+    Light second = s.lights.front();
+    second.position += glm::vec3(1.0f, 0.5f, 0.0f);
+    second.shadowMapSize = 2 * s.lights.front().shadowMapSize;
+    s.lights.push_back(second);
+    const ScoreResult both = score(sharedRenderer(), s, o);
+    ASSERT_EQ(both.lights.size(), 2u);
+    EXPECT_LT(both.lights[0].misclassified, std::max(2.0 * alone, 0.002));
+    EXPECT_LT(both.lights[1].misclassified, 0.002);
+}
+
 TEST(PointLights, SixPassFallbackWritesTheSameCubes) {
     sharedRenderer().glInfo();  // context current
     const Scene s = sixAxes(0);

@@ -73,9 +73,13 @@ void Viewer::startTune() {
             raw->result = tune(
                 renderer, *scene, options, tuneOptions, &raw->progress, [raw](const TuneTrial& t) {
                     char line[200];
-                    std::snprintf(line, sizeof line, "%.3f%% in %.1f ms: %s",
-                                  100.0 * t.misclassified, t.frameMs,
-                                  t.flags.empty() ? "(current settings)" : t.flags.c_str());
+                    if (!t.failure.empty()) {
+                        std::snprintf(line, sizeof line, "failed: %s", t.flags.c_str());
+                    } else {
+                        std::snprintf(line, sizeof line, "%.3f%% in %.1f ms: %s",
+                                      100.0 * t.misclassified, t.frameMs,
+                                      t.flags.empty() ? "(current settings)" : t.flags.c_str());
+                    }
                     const std::lock_guard<std::mutex> lock(raw->mutex);
                     raw->latest = line;
                 });
