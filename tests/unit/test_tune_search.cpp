@@ -4,6 +4,8 @@
 // trials nothing beats.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "core/TuneSearch.h"
 
 namespace gnomon::search {
@@ -82,6 +84,22 @@ TEST(TuneSearch, FindsAPairThatTradesTime) {
     const SearchResult free = coordinateDescent(two, {0, 0, 0}, 1e9, cost);
     EXPECT_EQ(free.trials[std::size_t(free.best)].point, (Point{1, 0, 0}));
     EXPECT_EQ(free.trades, 0);
+}
+
+// gnomon tune records a setting the driver cannot hold as infinite error and time: the search
+// goes past it to the optimum, and the front leaves it out.
+TEST(TuneSearch, PointsThatCannotBeRenderedAreNeverChosen) {
+    const double inf = std::numeric_limits<double>::infinity();
+    auto failing = [&](const Point& p) { return p[0] == 4 ? Evaluation{inf, inf} : model(p); };
+    const SearchResult r = coordinateDescent(space(), {0, 3, 0}, 1e9, failing);
+    ASSERT_GE(r.best, 0);
+    EXPECT_EQ(r.trials[std::size_t(r.best)].point, (Point{3, 1, 2}));
+    bool triedIt = false;
+    for (const Trial& t : r.trials)
+        triedIt |= t.point[0] == 4;
+    EXPECT_TRUE(triedIt);
+    for (int i : paretoFront(r.trials))
+        EXPECT_NE(r.trials[std::size_t(i)].point[0], 4);
 }
 
 TEST(TuneSearch, StopsWhenAskedAndKeepsWhatItFound) {
