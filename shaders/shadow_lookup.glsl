@@ -9,21 +9,12 @@
 // COLOURED_SHADOWS (each lookup also sets gTint: transmittance_lookup.glsl).
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
-// Depth-aware tolerance: x steps of the stored depth's spacing; y, z that spacing
-// for the 2D maps and the cubes (< 0: one float ulp of the stored depth, which grows with it).
+// Depth-aware tolerance: x steps of the stored depth's spacing; y, z that step for the 2D
+// maps' and the cubes' formats (shadow::depthAwareTolerance says which step, and why float
+// maps take one ulp of 0.5 at every depth).
 layout(location = 7) uniform vec3 uDepthAware;
 
-float depthTolerance(LightData light, float stored, float spacing) {
-    // One ulp of a positive normal float: its exponent bits alone are 2^floor(log2 x), times
-    // 2^-23. Bit operations, where exp2(floor(log2(x))) cost two transcendentals per lookup.
-    // Never less than the ulp of 0.5: a stored depth is computed, by the rasterizer and here,
-    // as a difference of terms near 1 (a perspective's (f + n) / (f - n) - 2fn / ((f - n) z)),
-    // so near 0 it is off by their ulps, not its own. A point light's cube fitted tight to a
-    // floor right under it stores depths of 1e-3 and shadowed all of that floor without this.
-    float step = spacing >= 0.0
-                     ? spacing
-                     : uintBitsToFloat(floatBitsToUint(max(stored, 0.5)) & 0x7f800000u) *
-                           exp2(-23.0);
+float depthTolerance(LightData light, float step) {
     return light.shadowBias.x + uDepthAware.x * step;
 }
 
@@ -201,7 +192,7 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     major = max(a.x, max(a.y, a.z));
     float ndc = (far + near) / (far - near) - 2.0 * far * near / ((far - near) * major);
     float stored = 0.5 * ndc + 0.5;
-    float reference = stored - depthTolerance(light, stored, uDepthAware.z);
+    float reference = stored - depthTolerance(light, uDepthAware.z);
     float layer = light.colour.w;
 #if defined(COLOURED_SHADOWS)
     gTint = cubeTint(toPoint, layer, reference);
@@ -322,7 +313,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
         return 1.0;
     }
 #endif
-    float reference = coord.z - depthTolerance(light, coord.z, uDepthAware.y);
+    float reference = coord.z - depthTolerance(light, uDepthAware.y);
     // The light's map covers [origin, origin + uvScale] of the layer; keep every tap inside.
     vec2 origin = light.wsPosition.xy;
     vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);

@@ -321,10 +321,6 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     uploadLights(*in.lights, tiled.order());
     const bool rawDepths = bindMaps(in, options.shadow);
 
-    // Spacing of stored depths per kind of map; -1 asks the shader for a float ulp.
-    auto spacing = [](DepthFormat f) {
-        return f == DepthFormat::Depth32F ? -1.0f : shadow::storedDepthSpacing(f, 0.5f);
-    };
     const DepthFormat cubeFormat = isColourFormat(options.shadow.depthFormat)
                                        ? DepthFormat::Depth32F
                                        : options.shadow.depthFormat;
@@ -333,8 +329,9 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     u.worldFromView = glm::inverse(in.viewFromWorld);
     u.viewZFromDepth = viewZFromDepth(in.clipFromView);
     u.shadowFactor = options.shading.shadowFactor;
-    u.depthAware = glm::vec3(options.shadow.biasDepthAware, spacing(options.shadow.depthFormat),
-                             spacing(cubeFormat));
+    u.depthAware =
+        glm::vec3(options.shadow.biasDepthAware, shadow::toleranceStep(options.shadow.depthFormat),
+                  shadow::toleranceStep(cubeFormat));
     u.contactLength = options.shadow.contactLength;
     u.lightBleed = options.shadow.lightBleed;
     // The light order's range the draws use: every light, or one tile's.

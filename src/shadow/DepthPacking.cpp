@@ -93,8 +93,12 @@ float storedDepthSpacing(DepthFormat format, float stored) {
     return 0.0f;
 }
 
-float depthAwareTolerance(DepthFormat format, float stored, float constant, float depthAware) {
-    return constant + depthAware * storedDepthSpacing(format, stored);
+float toleranceStep(DepthFormat format) {
+    return storedDepthSpacing(format, 0.5f);
+}
+
+float depthAwareTolerance(DepthFormat format, float constant, float depthAware) {
+    return constant + depthAware * toleranceStep(format);
 }
 
 float worldDepthResolution(float z, float near, float far, int bits) {

@@ -37,8 +37,17 @@ namespace gnomon::shadow {
 // for packed-255 (exact in 8-bit channels; the decode's float sum limits it).
 float storedDepthSpacing(DepthFormat format, float stored);
 
-// The tolerance of a lookup in stored-depth units: constant + depthAware x spacing.
-float depthAwareTolerance(DepthFormat format, float stored, float constant, float depthAware);
+// The step the depth-aware tolerance counts in: the spacing of stored depths for fixed-point
+// formats, and for depth32f one ulp of 0.5 at every depth. A stored depth is computed, by the
+// rasterizer and by the lookup, as a difference of terms near 1 (a perspective's
+// (f + n) / (f - n) - 2fn / ((f - n) z)), so near 0 it is off by their rounding, not by its
+// own finer spacing: a point light's cube fitted tight to a floor right under it stores
+// depths near 1e-3, and with the stored depth's own ulp it shadowed all of that floor.
+float toleranceStep(DepthFormat format);
+
+// The tolerance of a lookup in stored-depth units: constant + depthAware x toleranceStep
+// (what shaders/shadow_lookup.glsl's depthTolerance computes).
+float depthAwareTolerance(DepthFormat format, float constant, float depthAware);
 
 // The course text's error graph: the view-space distance between adjacent stored depths at
 // view distance `z` for a perspective camera (near, far) storing `bits` bits, i.e. how far
