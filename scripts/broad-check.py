@@ -145,7 +145,8 @@ def main():
                         emit(f"| {label} | {'yes' if ground else 'no'} | failed: {run.stderr.strip()} | | |")
                         over.append(label)
                         continue
-                    s = json.load(open(os.path.join(work, "out", "score.json")))["overall"]
+                    with open(os.path.join(work, "out", "score.json")) as f:
+                        s = json.load(f)["overall"]
                     row = (100 * s["misclassified"], 100 * s["false_shadow_outside_band"],
                            100 * s["leak_outside_band"])
                     mark = " **over**" if any(v >= b for v, b in zip(row, BOUNDS)) else ""

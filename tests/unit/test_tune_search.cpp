@@ -80,7 +80,7 @@ TEST(TuneSearch, FindsAPairThatTradesTime) {
     ASSERT_GE(r.best, 0);
     EXPECT_EQ(r.trials[std::size_t(r.best)].point, (Point{1, 1, 0}));
     EXPECT_EQ(r.trades, 1);
-    // Over the budget the pair is not needed: the larger map alone.
+    // With no budget to speak of the pair is not needed: the larger map alone.
     const SearchResult free = coordinateDescent(two, {0, 0, 0}, 1e9, cost);
     EXPECT_EQ(free.trials[std::size_t(free.best)].point, (Point{1, 0, 0}));
     EXPECT_EQ(free.trades, 0);

@@ -205,12 +205,17 @@ shadow::FitScene groundWithPost(const Camera& camera, shadow::ViewSamples& sampl
     return scene;
 }
 
-TEST(ViewSamples, PointLightOverWhatTheViewSeesGetsOneFrustumNotACube) {
-    // The ground close up (|x|, |z| <= 10), with a post on it, lit by a point light.
+// The ground close up (|x|, |z| <= 10) with a post on it, and its view's samples.
+class ViewSamplesOnGround : public ::testing::Test {
+protected:
+    void SetUp() override { ASSERT_FALSE(samples.empty()); }
     const Camera camera = groundCamera();
     shadow::ViewSamples samples;
     shadow::FitScene scene = groundWithPost(camera, samples);
-    ASSERT_FALSE(samples.empty());
+};
+
+TEST_F(ViewSamplesOnGround, PointLightOverWhatTheViewSeesGetsOneFrustumNotACube) {
+    // Lit by a point light.
     Light lamp;
     lamp.type = LightType::Point;
     // High above: everything the view sees lies in a narrow window, one frustum holds it
@@ -230,18 +235,20 @@ TEST(ViewSamples, PointLightOverWhatTheViewSeesGetsOneFrustumNotACube) {
     EXPECT_EQ(shadow::lightCameraFrame(lamp, camera, scene, 1024).kind, shadow::FrameKind::Cube);
 }
 
-TEST(ViewSamples, SpotLightMapsOnlyThePartOfItsConeTheViewSees) {
-    // The ground seen close up (|x|, |z| <= 10), under a wide spot straight above it whose
-    // cone reaches far past what the camera sees.
-    const Camera camera = groundCamera();
-    shadow::ViewSamples samples;
-    shadow::FitScene scene = groundWithPost(camera, samples);
-    ASSERT_FALSE(samples.empty());
+// A wide spot straight above the ground's centre, its cone reaching far past what the ground
+// camera sees.
+Light wideSpot() {
     Light spot;
     spot.type = LightType::Spot;
     spot.position = {0.0f, 10.0f, 0.0f};
     spot.direction = {0.0f, -1.0f, 0.0f};
     spot.outerConeDegrees = 70.0f;
+    return spot;
+}
+
+TEST_F(ViewSamplesOnGround, SpotLightMapsOnlyThePartOfItsConeTheViewSees) {
+    // Under a wide spot whose cone reaches far past what the camera sees.
+    const Light spot = wideSpot();
     const float coneTexel = 2.0f * std::tan(glm::radians(70.0f)) / 1024.0f;
     const shadow::LightCameraFrame fitted = shadow::lightCameraFrame(spot, camera, scene, 1024);
     ASSERT_TRUE(fitted.valid);
@@ -260,12 +267,7 @@ TEST(ViewSamples, HeldFrustumsStayPutWhileTheCameraMovesALittle) {
     Light lamp;
     lamp.type = LightType::Point;
     lamp.position = {1.0f, 40.0f, 2.0f};
-    Light spot;
-    spot.type = LightType::Spot;
-    spot.position = {0.0f, 10.0f, 0.0f};
-    spot.direction = {0.0f, -1.0f, 0.0f};
-    spot.outerConeDegrees = 70.0f;
-    for (const Light& light : {lamp, spot}) {
+    for (const Light& light : {lamp, wideSpot()}) {
         shadow::HeldExtent held;
         Camera camera = groundCamera();
         shadow::ViewSamples samples;
