@@ -64,7 +64,6 @@ float quantizeUp(float x) {
 }
 }  // namespace fit
 
-using fit::depthRange;
 using fit::FitBoxes;
 using fit::quantizeUp;
 

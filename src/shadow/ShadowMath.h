@@ -86,14 +86,17 @@ constexpr float kHoldSlack = 1.25f;
 // The light camera of `light` for a frame: Manual and Course use the light's numbers; Fit
 // holds the visible receivers that casters can shadow, and those casters:
 // - directional and area lights: an orthographic box over the receivers' and casters'
-//   common extent across the light, from the nearest caster to the farthest receiver;
+//   common extent across the light (with the view's samples: over the samples instead),
+//   from the nearest caster to the farthest receiver;
 //   when it follows the view it is squared and snapped (size in steps of 1/16 of a power
 //   of two, origin and depth on the texel grid) so small camera moves neither change the
 //   map nor make its edges shimmer;
 // - spot lights: the cone (fovy = 2 x outer angle), near at the nearest caster, far at the
-//   farthest receiver inside it;
+//   farthest receiver inside it; with the view's samples (scene.samples), only the window
+//   of the cone they lie in (fit::fitSpot);
 // - point lights: six faces reaching the farthest visible receiver, near before the nearest
-//   caster along the faces' axes (a face's depth is the largest of |dx|, |dy|, |dz|).
+//   caster along the faces' axes (a face's depth is the largest of |dx|, |dy|, |dz|); with
+//   samples that fit within one face's angle, one frustum over them (fit::fitPoint).
 // Invalid (no map needed) when no receiver is visible or no caster can shadow one.
 // `mapSize` sets texelWorldSize.
 // `held` (with a stabilised fit): the extent kept from the previous frame, read and
