@@ -31,6 +31,11 @@ CLI::App* addTuneCommand(CLI::App& app, TuneArgs& args) {
                     "most passes over the settings, 1..10 (default " +
                         std::to_string(args.options.maxSweeps) + ")")
         ->type_name("N");
+    cmd->add_option("--time-limit", args.options.timeLimitSeconds,
+                    "seconds the search may take, tracing included; at the limit it keeps the "
+                    "best found so far (0: none; default " +
+                        std::to_string(int(args.options.timeLimitSeconds)) + ")")
+        ->type_name("S");
     cmd->add_option("--out-dir", args.outDir,
                     "folder for tune.json (every trial), front.svg and tuned.json (default tune)")
         ->type_name("DIR");
@@ -91,8 +96,14 @@ std::string frontSvg(const TuneResult& r, const std::string& scene) {
     return toSvg(plot);
 }
 
-void printSummary(const TuneResult& r) {
+void printSummary(const TuneResult& r, double timeLimit) {
     const TuneTrial& start = r.trials.front();
+    if (r.timedOut) {
+        std::printf(
+            "\nstopped at the time limit (%.0f s) after %zu trials and %d sweep(s): the "
+            "best found so far is kept (--time-limit 0 searches to the end)\n",
+            timeLimit, r.trials.size(), r.sweeps);
+    }
     std::printf("\nfront (nothing tried is both faster and better):\n");
     for (int i : r.front)
         printTrial(std::size_t(i), r.trials[std::size_t(i)], r.budgetMs);
@@ -131,6 +142,8 @@ int runTune(const TuneArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput, "--sweeps must be in 1..10");
     if (!(args.options.budgetMs >= 0.0 && args.options.budgetMs < 1e6))
         throw Error(ErrorKind::InvalidInput, "--budget-ms must be in [0, 1e6)");
+    if (!(args.options.timeLimitSeconds >= 0.0 && args.options.timeLimitSeconds < 1e7))
+        throw Error(ErrorKind::InvalidInput, "--time-limit must be in [0, 1e7) seconds");
     Scene scene = loadWithProgress(args.scene);
     printWarnings(scene);
     args.flags.editScene(scene);
@@ -153,7 +166,7 @@ int runTune(const TuneArgs& args, bool verbose) {
         printTrial(shown++, t, budget);
         if (interrupted()) progress.cancel = true;
     });
-    printSummary(r);
+    printSummary(r, options.timeLimitSeconds);
     const std::string tuned = args.out.empty() ? out.file("tuned.json") : out.add(args.out);
     if (r.best >= 0) {
         // Each light with the map size the best trial gave it (its own unless searched).
@@ -166,8 +179,10 @@ int runTune(const TuneArgs& args, bool verbose) {
     writeTextFile(out.file("tune.json"), toJson(r, scene.name));
     writeTextFile(out.file("front.svg"), frontSvg(r, scene.name));
     out.keep();
-    std::printf("wrote %s, %s/tune.json and front.svg (%.1f s tracing the references)\n",
-                tuned.c_str(), args.outDir.c_str(), r.traceSeconds);
+    std::printf(
+        "wrote %s, %s/tune.json and front.svg (searched %.0f s, %.1f s of it tracing the "
+        "references)\n",
+        tuned.c_str(), args.outDir.c_str(), r.seconds, r.traceSeconds);
     if (r.interrupted) {
         throw Interrupted("interrupted while tuning; kept the best of the " +
                           std::to_string(r.trials.size()) + " trials finished");

@@ -25,6 +25,11 @@ struct TuneOptions {
     double budgetMs = 0.0;
     int timedFrames = 5;
     int maxSweeps = 3;
+    // Wall-clock seconds the search may take, from the call (tracing the references and the
+    // starting settings' trial included; those always finish); 0: no limit. At the limit the
+    // trial under way finishes and the search stops with what it found (TuneResult::timedOut).
+    // Ten minutes: what the slowest real scenes (871k triangles at 512²) need for two sweeps.
+    double timeLimitSeconds = 600.0;
     std::vector<Camera> extraViews;  // scored besides the scene's camera
     ScoreOptions score;
 };
@@ -60,6 +65,8 @@ struct TuneResult {
     int sweeps = 0;
     int trades = 0;            // pairs of changes that trade time the search moved to
     bool interrupted = false;  // progress->cancel stopped it: what was found so far
+    bool timedOut = false;     // TuneOptions::timeLimitSeconds stopped it: the same
+    double seconds = 0.0;      // the search's wall-clock time
     double traceSeconds = 0.0;
 };
 

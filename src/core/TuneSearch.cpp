@@ -41,11 +41,11 @@ public:
           mResult(result),
           mMemo(result, evaluate) {}
 
-    bool start(const Point& p) {
-        if (stopping()) return false;
+    // The start is always evaluated, asked to stop or not: it is the point every result
+    // holds (and, in gnomon tune, the budget).
+    void start(const Point& p) {
         mCurrent = mMemo.trial(p);
         consider(mCurrent);
-        return true;
     }
 
     // Every other value of each parameter in turn, the rest held; the current point moves
@@ -141,7 +141,7 @@ SearchResult coordinateDescent(const std::vector<Parameter>& parameters, const P
                                int maxSweeps, const std::function<bool()>& stop) {
     SearchResult result;
     Descent descent(parameters, budgetMs, evaluate, stop, result);
-    if (!descent.start(start)) return result;
+    descent.start(start);
     for (int sweep = 0; sweep < maxSweeps; ++sweep) {
         const std::optional<bool> moved = descent.sweep();
         if (!moved) return result;

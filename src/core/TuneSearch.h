@@ -49,7 +49,8 @@ struct SearchResult {
 // changes that lower the error but break the budget, each paired with every single change
 // of another parameter that is faster than the current point; a winning pair starts another
 // sweep. Stops when no trade wins, after `maxSweeps` sweeps, or when `stop` returns true
-// (checked before each trial). `evaluate` may throw; the search does not catch.
+// (checked before each trial after the start's, which always runs). `evaluate` may throw; the
+// search does not catch.
 SearchResult coordinateDescent(const std::vector<Parameter>& parameters, const Point& start,
                                double budgetMs,
                                const std::function<Evaluation(const Point&)>& evaluate,

@@ -248,10 +248,15 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
                 const TuneOptions& options, TuneProgress* progress,
                 const std::function<void(const TuneTrial&)>& onTrial) {
     if (!(options.budgetMs >= 0.0) || options.timedFrames < 1 || options.timedFrames > 1000 ||
-        options.maxSweeps < 1) {
+        options.maxSweeps < 1 || !(options.timeLimitSeconds >= 0.0)) {
         throw Error(ErrorKind::InvalidInput,
-                    "tune: the budget must be >= 0 ms, timed frames 1..1000, sweeps >= 1");
+                    "tune: the budget must be >= 0 ms, timed frames 1..1000, sweeps >= 1, the "
+                    "time limit >= 0 s");
     }
+    const auto began = std::chrono::steady_clock::now();
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    };
     const detail::RestoreView restore(scene);
     std::vector<Camera> views = {scene.camera};
     views.insert(views.end(), options.extraViews.begin(), options.extraViews.end());
@@ -281,10 +286,17 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
             const TuneTrial& t = result.trials[std::size_t(trialOf[p])];
             return search::Evaluation{t.error, t.frameMs};
         },
-        options.maxSweeps, [&] { return progress && progress->cancel.load(); });
+        options.maxSweeps,
+        [&] {
+            if (progress && progress->cancel.load()) return true;
+            result.timedOut =
+                options.timeLimitSeconds > 0.0 && elapsed() >= options.timeLimitSeconds;
+            return result.timedOut;
+        });
     result.sweeps = found.sweeps;
     result.trades = found.trades;
-    result.interrupted = found.stopped;
+    result.interrupted = found.stopped && !result.timedOut;
+    result.seconds = elapsed();
     if (found.best >= 0) result.best = trialOf[found.trials[std::size_t(found.best)].point];
     std::vector<search::Trial> all;
     for (const TuneTrial& t : result.trials)
@@ -315,6 +327,8 @@ std::string toJson(const TuneResult& r, const std::string& scene) {
     j["sweeps"] = r.sweeps;
     j["trades"] = r.trades;
     j["interrupted"] = r.interrupted;
+    j["timed_out"] = r.timedOut;
+    j["seconds"] = r.seconds;
     j["trace_seconds"] = r.traceSeconds;
     j["best"] = r.best;
     j["start_on_front"] = r.beatsStart < 0;

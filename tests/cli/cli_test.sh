@@ -127,6 +127,12 @@ score)
     for f in tuned.json tune.json front.svg; do [[ -s "$work/t/$f" ]] || fail "no $f"; done
     run render --scene "$work/t/tuned.json" --out "$work/t/r.png"
     [[ $(cat "$work/code") == 0 && -s "$work/t/r.png" ]] || fail "tuned.json does not render"
+    # At its time limit a search keeps what it found: a success, the files written.
+    run tune --scene tutorial-room --size 48x48 --time-limit 0.001 --out-dir "$work/l"
+    expect 0 "stopped at the time limit"
+    [[ -s "$work/l/tuned.json" ]] || fail "a timed-out tune wrote no tuned.json"
+    run tune --scene tutorial-room --size 48x48 --time-limit -1 --out-dir "$work/u"
+    expect 2 "--time-limit must be in [0, 1e7) seconds"
     run tune --scene tutorial-room --size 48x48 --sweeps 11 --out-dir "$work/u"
     expect 2 "--sweeps must be in 1..10"
     [[ ! -e "$work/u" ]] || fail "a rejected tune left its --out-dir"

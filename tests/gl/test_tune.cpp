@@ -78,6 +78,36 @@ TEST(Tune, SizesEachLightsMapApart) {
     EXPECT_TRUE(spotSearched);
 }
 
+// A search past its time limit stops after the trial under way and keeps what it found; it
+// is not an interruption. The starting settings' trial always finishes (it sets the budget).
+TEST(Tune, StopsAtItsTimeLimitWithWhatItFound) {
+    Scene s = builtinScene("tutorial-room");
+    RenderOptions start = s.options;
+    start.width = start.height = 32;
+    TuneOptions o;
+    o.timedFrames = 1;
+    o.timeLimitSeconds = 1e-6;
+    const TuneResult r = tune(sharedRenderer(), s, start, o);
+    EXPECT_TRUE(r.timedOut);
+    EXPECT_FALSE(r.interrupted);
+    ASSERT_EQ(r.trials.size(), 1u);
+    EXPECT_EQ(r.best, 0);  // within its own frame time
+    EXPECT_GE(r.seconds, r.traceSeconds);
+    const nlohmann::json j = nlohmann::json::parse(toJson(r, "tutorial-room"));
+    EXPECT_TRUE(j["timed_out"].get<bool>());
+    // Without a limit the same search goes on past the first trial.
+    o.timeLimitSeconds = 0.0;
+    o.maxSweeps = 1;
+    o.budgetMs = 1e5;
+    TuneProgress progress;
+    const TuneResult all = tune(sharedRenderer(), s, start, o, &progress, [&](const TuneTrial&) {
+        if (progress.trialsDone >= 2) progress.cancel = true;
+    });
+    EXPECT_FALSE(all.timedOut);
+    EXPECT_TRUE(all.interrupted);
+    EXPECT_GT(all.trials.size(), 1u);
+}
+
 // Sixteen shadowed lights: sizing each apart would add three trials per light and sweep, so
 // one map size is searched for all (stopped after the first settings, map size among them).
 TEST(Tune, ManyLightsShareOneMapSize) {

@@ -114,6 +114,12 @@ TEST(TuneSearch, StopsWhenAskedAndKeepsWhatItFound) {
     EXPECT_TRUE(r.stopped);
     EXPECT_EQ(r.trials.size(), 4u);
     EXPECT_GE(r.best, 0);
+    // Asked to stop from the outset, it still has its starting point.
+    const SearchResult first = coordinateDescent(
+        space(), {0, 0, 0}, 1e9, [&](const Point& p) { return model(p); }, 3, [] { return true; });
+    EXPECT_TRUE(first.stopped);
+    ASSERT_EQ(first.trials.size(), 1u);
+    EXPECT_EQ(first.best, 0);
 }
 
 TEST(TuneSearch, FrontHoldsWhatNothingBeats) {
