@@ -198,14 +198,13 @@ private:
         return found->second;
     }
 
-    // As gnomon bench times a frame (pass timing on, every map redrawn, wall time of
+    // As gnomon bench times a frame (every map redrawn, no pass timing: wall time of
     // render()), alternating with the starting settings: the ratio of the two medians times
     // the starting settings' first median. The machine's drift (15-35 % here) hits both
     // alike, so a cheaper setting is not refused the budget for having been timed at a
     // slow moment.
     double frameMs(const Setting& o, const Setting& start) {
         mScene.camera = mViews.front();
-        mRenderer.setPassTiming(true);
         std::vector<double> mine, theirs;
         auto time = [&](const Setting& setting) {
             apply(setting);
@@ -223,7 +222,6 @@ private:
             mine.push_back(time(o));
             if (!same) theirs.push_back(time(start));
         }
-        mRenderer.setPassTiming(false);
         const double median = medianOf(mine);
         if (same) return mBaselineMs = median;
         return medianOf(theirs) > 0.0 ? mBaselineMs * median / medianOf(theirs) : median;
