@@ -28,8 +28,10 @@ struct TuneOptions {
     // Wall-clock seconds the search may take, from the call (tracing the references and the
     // starting settings' trial included; those always finish); 0: no limit. At the limit the
     // trial under way finishes and the search stops with what it found (TuneResult::timedOut).
-    // Ten minutes: what the slowest real scenes (871k triangles at 512²) need for two sweeps.
-    double timeLimitSeconds = 600.0;
+    // Nine minutes, so that a whole `gnomon tune` (loading, the trial under way at the limit,
+    // the files written) keeps within ten on the slowest real scenes (871k triangles at 512²:
+    // a trial takes 5-15 s there).
+    double timeLimitSeconds = 540.0;
     std::vector<Camera> extraViews;  // scored besides the scene's camera
     ScoreOptions score;
 };
