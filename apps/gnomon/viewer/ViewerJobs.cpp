@@ -100,11 +100,11 @@ void Viewer::pollTune() {
         const TuneTrial& start = mTune->trials.front();
         const TuneTrial& best = mTune->best >= 0 ? mTune->trials[std::size_t(mTune->best)] : start;
         std::printf(
-            "gnomon view: tune: %zu trials; best within %.1f ms: %s (misclassified "
+            "gnomon view: tune: %zu trials%s; best within %.1f ms: %s (misclassified "
             "%.4f, from %.4f)\n",
-            mTune->trials.size(), mTune->budgetMs,
-            best.flags.empty() ? "the current settings" : best.flags.c_str(), best.misclassified,
-            start.misclassified);
+            mTune->trials.size(), mTune->timedOut ? " (stopped at its time limit)" : "",
+            mTune->budgetMs, best.flags.empty() ? "the current settings" : best.flags.c_str(),
+            best.misclassified, start.misclassified);
     } else {
         mTuneError = mTuneJob->error;
         if (mScripted) fail("tune: " + mTuneJob->error);
