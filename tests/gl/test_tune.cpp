@@ -12,15 +12,28 @@
 namespace gnomon::test {
 namespace {
 
+// The scene's own options at a small square size: every trial renders at it.
+RenderOptions smallStart(const Scene& s, int size) {
+    RenderOptions o = s.options;
+    o.width = o.height = size;
+    return o;
+}
+
+// One timed frame per trial and a budget no trial breaks: these tests judge errors and the
+// search's course, never time (the budget has its own unit test).
+TuneOptions quickTune() {
+    TuneOptions o;
+    o.budgetMs = 1e5;
+    o.timedFrames = 1;
+    return o;
+}
+
 TEST(Tune, FindsTheKnownRemedyForAcne) {
     Scene s = builtinScene("tutorial-room");
-    RenderOptions start = s.options;
-    start.width = start.height = 96;
+    RenderOptions start = smallStart(s, 96);
     start.shadow.biasSlope = 0.0f;
     start.shadow.receiverPlane = false;
-    TuneOptions o;
-    o.budgetMs = 1e5;  // the error alone decides here; the budget has its own unit test
-    o.timedFrames = 1;
+    TuneOptions o = quickTune();
     o.maxSweeps = 1;
     const Camera camera = s.camera;
     const TuneResult r = tune(sharedRenderer(), s, start, o);
@@ -53,11 +66,8 @@ TEST(Tune, SizesEachLightsMapApart) {
     s.lights.push_back(builtinScene("tutorial-spot").lights.front());
     s.lights[0].shadowMapSize = 64;
     const int spotSize = s.lights[1].shadowMapSize;
-    RenderOptions start = s.options;
-    start.width = start.height = 96;
-    TuneOptions o;
-    o.budgetMs = 1e5;
-    o.timedFrames = 1;
+    const RenderOptions start = smallStart(s, 96);
+    TuneOptions o = quickTune();
     o.maxSweeps = 1;
     const TuneResult r = tune(sharedRenderer(), s, start, o);
     EXPECT_EQ(s.lights[0].shadowMapSize, 64);  // the scene is put back
@@ -82,10 +92,9 @@ TEST(Tune, SizesEachLightsMapApart) {
 // is not an interruption. The starting settings' trial always finishes (it sets the budget).
 TEST(Tune, StopsAtItsTimeLimitWithWhatItFound) {
     Scene s = builtinScene("tutorial-room");
-    RenderOptions start = s.options;
-    start.width = start.height = 32;
-    TuneOptions o;
-    o.timedFrames = 1;
+    const RenderOptions start = smallStart(s, 32);
+    TuneOptions o = quickTune();
+    o.budgetMs = 0.0;  // the start's own time
     o.timeLimitSeconds = 1e-6;
     const TuneResult r = tune(sharedRenderer(), s, start, o);
     EXPECT_TRUE(r.timedOut);
@@ -96,9 +105,9 @@ TEST(Tune, StopsAtItsTimeLimitWithWhatItFound) {
     const nlohmann::json j = nlohmann::json::parse(toJson(r, "tutorial-room"));
     EXPECT_TRUE(j["timed_out"].get<bool>());
     // Without a limit the same search goes on past the first trial.
+    o = quickTune();
     o.timeLimitSeconds = 0.0;
     o.maxSweeps = 1;
-    o.budgetMs = 1e5;
     TuneProgress progress;
     const TuneResult all = tune(sharedRenderer(), s, start, o, &progress, [&](const TuneTrial&) {
         if (progress.trialsDone >= 2) progress.cancel = true;
@@ -112,11 +121,8 @@ TEST(Tune, StopsAtItsTimeLimitWithWhatItFound) {
 // one map size is searched for all (stopped after the first settings, map size among them).
 TEST(Tune, ManyLightsShareOneMapSize) {
     Scene s = builtinScene("mixed-lights");
-    RenderOptions start = s.options;
-    start.width = start.height = 32;
-    TuneOptions o;
-    o.budgetMs = 1e5;
-    o.timedFrames = 1;
+    const RenderOptions start = smallStart(s, 32);
+    const TuneOptions o = quickTune();
     TuneProgress progress;
     bool globalSize = false;
     const TuneResult r = tune(sharedRenderer(), s, start, o, &progress, [&](const TuneTrial& t) {
