@@ -168,12 +168,8 @@ int runTune(const TuneArgs& args, bool verbose) {
     });
     printSummary(r, options.timeLimitSeconds);
     const std::string tuned = args.out.empty() ? out.file("tuned.json") : out.add(args.out);
-    if (r.best >= 0) {
-        // Each light with the map size the best trial gave it (its own unless searched).
-        const std::vector<int>& sizes = r.trials[std::size_t(r.best)].mapSizes;
-        for (std::size_t i = 0; i < scene.lights.size() && i < sizes.size(); ++i)
-            scene.lights[i].shadowMapSize = sizes[i];
-    }
+    // Each light with the map size the best trial gave it (its own unless searched).
+    if (r.best >= 0) applyMapSizes(r.trials[std::size_t(r.best)].mapSizes, scene);
     saveSceneFile(tuned, args.scene, scene,
                   r.best >= 0 ? r.trials[std::size_t(r.best)].options : start, args.flags.ground);
     writeTextFile(out.file("tune.json"), toJson(r, scene.name));

@@ -83,6 +83,11 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
                 const TuneOptions& options, TuneProgress* progress = nullptr,
                 const std::function<void(const TuneTrial&)>& onTrial = {});
 
+// Gives each light of `scene` its map size in `mapSizes` (one per light, as
+// TuneTrial::mapSizes holds them); sizes for another light count change nothing (a scene
+// edited since the search).
+void applyMapSizes(const std::vector<int>& mapSizes, Scene& scene);
+
 // The result as JSON: every trial with its flags and numbers, the best and the front.
 std::string toJson(const TuneResult& result, const std::string& scene);
 

@@ -176,10 +176,7 @@ private:
         t.error = t.misclassified + t.awayFromEdges;
     }
 
-    void apply(const Setting& setting) {
-        for (std::size_t i = 0; i < mScene.lights.size(); ++i)
-            mScene.lights[i].shadowMapSize = setting.mapSizes[i];
-    }
+    void apply(const Setting& setting) { applyMapSizes(setting.mapSizes, mScene); }
 
     // Traced once per view (and once more soft, for pcss, as gnomon score compares it).
     const truth::Reference& reference(std::size_t view, const RenderOptions& o,
@@ -306,6 +303,12 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
         if (t.error < s0.error && t.frameMs <= s0.frameMs) result.beatsStart = int(i);
     }
     return result;
+}
+
+void applyMapSizes(const std::vector<int>& mapSizes, Scene& scene) {
+    if (mapSizes.size() != scene.lights.size()) return;
+    for (std::size_t i = 0; i < mapSizes.size(); ++i)
+        scene.lights[i].shadowMapSize = mapSizes[i];
 }
 
 std::string toJson(const TuneResult& r, const std::string& scene) {

@@ -117,6 +117,18 @@ TEST(Tune, StopsAtItsTimeLimitWithWhatItFound) {
     EXPECT_GT(all.trials.size(), 1u);
 }
 
+// A trial's sizes go to the lights they were found for; sizes for another light count (a
+// scene edited since) change nothing.
+TEST(Tune, MapSizesApplyOnlyToTheSceneTheyCameFrom) {
+    Scene s = builtinScene("tutorial-room");
+    s.lights.push_back(builtinScene("tutorial-spot").lights.front());
+    applyMapSizes({512, 4096}, s);
+    EXPECT_EQ(s.lights[0].shadowMapSize, 512);
+    EXPECT_EQ(s.lights[1].shadowMapSize, 4096);
+    applyMapSizes({1024}, s);
+    EXPECT_EQ(s.lights[0].shadowMapSize, 512);
+}
+
 // Sixteen shadowed lights: sizing each apart would add three trials per light and sweep, so
 // one map size is searched for all (stopped after the first settings, map size among them).
 TEST(Tune, ManyLightsShareOneMapSize) {

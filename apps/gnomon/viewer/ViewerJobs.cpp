@@ -119,10 +119,7 @@ void Viewer::applyTune() {
         throw Error(ErrorKind::InvalidInput, "apply-tune: no tune result to apply");
     const TuneTrial& best = mTune->trials[std::size_t(mTune->best)];
     mState.options.shadow = best.options.shadow;
-    if (best.mapSizes.size() == mState.scene.lights.size()) {
-        for (std::size_t i = 0; i < best.mapSizes.size(); ++i)
-            mState.scene.lights[i].shadowMapSize = best.mapSizes[i];
-    }
+    applyMapSizes(best.mapSizes, mState.scene);
     changed(true);
 }
 
