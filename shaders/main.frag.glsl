@@ -290,6 +290,9 @@ vec3 dither(vec3 c) {
 
 void main() {
     findReceiverPlane();
+#ifdef CONTACT_SHADOWS
+    findContactPlane();
+#endif
     Surface s;
     s.unlit = vIn.material.z > 0.5;
     s.receives = vIn.receives > 0.5;

@@ -46,5 +46,28 @@ TEST(ContactShadows, AddNoFalseShadowWhereTheMapIsRight) {
         << " without";
 }
 
+// A march shorter than the receiver's depth change across a pixel, under a sun that comes
+// from behind the surfaces as the camera sees them (the march moves away from the camera):
+// its first steps read the depth buffer at the fragment's own pixel and its neighbours,
+// where the receiver itself lies nearer the camera than the step. They must not take it for
+// an occluder (before: 30 % false shadow at 0.01 here), nor the two depth passes' rounding
+// of the same surface (6 % at 0.001).
+TEST(ContactShadows, AShortMarchDoesNotShadowItsOwnReceiver) {
+    Scene s = builtinScene("tutorial-room");
+    ASSERT_EQ(s.lights.size(), 1u);
+    s.lights[0].direction = -glm::vec3(0.0f, 0.5f, 0.8660254f);  // --sun 0,30
+    RenderOptions off = s.options;
+    off.width = off.height = 192;
+    const ScoreResult without = score(sharedRenderer(), s, off);
+    for (const float length : {0.001f, 0.01f}) {
+        RenderOptions on = off;
+        on.shadow.contactLength = length;
+        const ScoreResult with = score(sharedRenderer(), s, on);
+        EXPECT_LT(with.overall.falseShadow, without.overall.falseShadow + 0.0002)
+            << "march " << length << ": false shadow " << with.overall.falseShadow << " with, "
+            << without.overall.falseShadow << " without";
+    }
+}
+
 }  // namespace
 }  // namespace gnomon::test
