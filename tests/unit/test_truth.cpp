@@ -94,6 +94,24 @@ TEST(Truth, SurfacesFacingAwayFromTheLightAreMarked) {
     }
 }
 
+// A light that only grazes a surface (under 0.01 degrees) leaves it edge-on, in its own
+// attached shadow, whichever side the rounding of the light's direction puts it on (cos 90
+// degrees is -4.4e-8 in float): here 1e-7 above the floor's plane. A light 0.1 degrees
+// above it does light the floor.
+TEST(Truth, SurfacesEdgeOnToTheLightAreMarked) {
+    Scene s = plateOverFloor();
+    s.lights[0].direction = -glm::vec3(1.0f, 1e-7f, 0.0f);
+    const truth::Reference grazed = truth::traceReference(s, s.options, {});
+    const std::size_t floorPixel = grazed.at(kSize - 2, kSize / 2, 0);
+    EXPECT_FALSE(grazed.applies[floorPixel]);
+    EXPECT_EQ(grazed.lightCosine[floorPixel], 0.0f);
+    const float tenth = glm::radians(0.1f);
+    s.lights[0].direction = -glm::vec3(std::cos(tenth), std::sin(tenth), 0.0f);
+    const truth::Reference low = truth::traceReference(s, s.options, {});
+    EXPECT_TRUE(low.applies[floorPixel]);
+    EXPECT_NEAR(low.lightCosine[floorPixel], std::sin(tenth), 1e-6f);
+}
+
 TEST(Truth, SoftShadowIsFractionalOnlyAcrossThePenumbra) {
     Scene s = plateOverFloor();
     RenderOptions o = s.options;
