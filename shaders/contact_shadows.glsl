@@ -24,17 +24,12 @@ void findContactPlane() {
     gContactPlane = vec3(gl_FragCoord.z, dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
 }
 
-// Four steps of the stored depth (32-bit float: 2^-24 below 1) at the fragment, in view z:
-// the two depth passes round the same surface apart by about that much, and a march shorter
-// than it could tell them apart (tutorial-room, a march of 0.001: 6 % false shadow in rows).
-float depthSpacing() {
+// dz/dd, view z per unit of window depth at window depth d: the march converts its
+// tolerances into depth once, at the fragment, and compares depths without a division.
+float viewZPerDepth(float d) {
     vec4 m = uViewZFromDepth;
-    float denominator = m.z * gl_FragCoord.z + m.w;
-    return abs(m.x * m.w - m.y * m.z) / (denominator * denominator) * exp2(-22.0);
-}
-
-float viewZFromDepth(float d) {
-    return (uViewZFromDepth.x * d + uViewZFromDepth.y) / (uViewZFromDepth.z * d + uViewZFromDepth.w);
+    float denominator = m.z * d + m.w;
+    return abs(m.x * m.w - m.y * m.z) / (denominator * denominator);
 }
 
 // `visible` (the map's visibility) when nothing in the depth buffer lies between the
@@ -48,24 +43,40 @@ float contactShadow(vec3 vsP, vec3 vsN, vec3 vsToLight, float lightDistance, flo
     // Jimenez 2014), so a short march leaves no bands.
     float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
     vec3 start = vsP + vsN * (0.02 * len);
-    vec3 end = start + vsToLight * len;
-    // Clip coordinates and view z are linear along the segment, so each step interpolates
-    // them instead of projecting its point: no matrix product inside the loop.
     vec4 clipStart = uClipFromView * vec4(start, 1.0);
-    vec4 clipEnd = uClipFromView * vec4(end, 1.0);
-    // The tolerance: a surface nearer the camera than the step, or than the receiver's own
-    // plane, by less than this is the receiver (depth-buffer rounding, curvature between
-    // pixels).
-    float tolerance = 0.04 * len + depthSpacing();
+    vec4 clipEnd = uClipFromView * vec4(start + vsToLight * len, 1.0);
+    // A march towards the camera stops before the camera's plane, where it would not project.
+    float wMin = 0.1 * clipStart.w;
+    if (clipEnd.w < wMin) {
+        float keep = (clipStart.w - wMin) / (clipStart.w - clipEnd.w);
+        clipEnd = mix(clipStart, clipEnd, keep);
+        len *= keep;
+    }
+    // A segment stays a segment on screen, with window depth linear along it: the march
+    // steps evenly in pixels and window depth, with no division per step.
     vec2 size = vec2(textureSize(uViewDepth, 0));
+    vec3 from = vec3(clipStart.xy / clipStart.w * 0.5 + 0.5, clipStart.z / clipStart.w * 0.5 + 0.5);
+    vec3 to = vec3(clipEnd.xy / clipEnd.w * 0.5 + 0.5, clipEnd.z / clipEnd.w * 0.5 + 0.5);
+    from.xy *= size;
+    to.xy *= size;
+    // One step per pixel crossed, up to kContactSteps: more would read the same pixels again,
+    // so a short march (a contact is a few pixels wide) costs a step or two.
+    int steps = int(clamp(ceil(max(abs(to.x - from.x), abs(to.y - from.y))), 1.0,
+                          float(kContactSteps)));
+    // The tolerances in window depth at the fragment. A surface nearer the camera than the
+    // step, or than the receiver's own plane, by less than `tolerance` is the receiver
+    // (curvature between pixels: a share of the march; the two depth passes' rounding of one
+    // surface: four steps of 32-bit float depth below 1, 2^-24 each; a march shorter than
+    // that rounding shadowed rows of tutorial-room's floor). Nearer by more than the march's
+    // length, it is the far side of the world, not a thin occluder.
+    float perDepth = viewZPerDepth(gl_FragCoord.z);
+    float tolerance = 0.04 * len / perDepth + exp2(-22.0);
+    float thickness = len / perDepth;
     // The march ends at its first occluder; a block of pixels leaves the loop once all of
     // its pixels have (llvmpipe skips a loop only when no pixel of the block is in it).
-    for (int i = 0; i < kContactSteps && visible > 0.0; ++i) {
-        float t = (float(i) + jitter) / float(kContactSteps);
-        vec4 c = mix(clipStart, clipEnd, t);
-        if (!(c.w > 0.0)) break;
-        vec2 pixel = (c.xy / c.w * 0.5 + 0.5) * size;
-        if (any(lessThan(pixel, vec2(0.0))) || any(greaterThanEqual(pixel, size))) break;
+    for (int i = 0; i < steps && visible > 0.0; ++i) {
+        vec3 q = mix(from, to, (float(i) + jitter) / float(steps));
+        if (any(lessThan(q.xy, vec2(0.0))) || any(greaterThanEqual(q.xy, size))) break;
         // The buffer holds each pixel's depth at its centre, not where the step's ray meets
         // the surface: the receiver seen or lit at a grazing angle is there nearer the camera
         // than the step by up to half a pixel's depth change. It is told apart by lying on
@@ -73,11 +84,11 @@ float contactShadow(vec3 vsP, vec3 vsN, vec3 vsToLight, float lightDistance, flo
         // of a short march, inside the fragment's own pixel, for occluders wherever the
         // light came from behind the surface as the camera sees it (LightsPunctualLamp, sun
         // at 200,20, a march of 0.01: 66 % false shadow).
-        vec2 centre = floor(pixel) + 0.5;
-        float sceneZ = viewZFromDepth(texelFetch(uViewDepth, ivec2(centre), 0).r);
-        float ownZ = viewZFromDepth(gContactPlane.x + dot(gContactPlane.yz, centre - gl_FragCoord.xy));
-        float inFront = sceneZ - mix(start.z, end.z, t);  // > 0: the scene is nearer the camera
-        if (inFront > tolerance && inFront < len && sceneZ - ownZ > tolerance) visible = 0.0;
+        vec2 centre = floor(q.xy) + 0.5;
+        float scene = texelFetch(uViewDepth, ivec2(centre), 0).r;
+        float own = gContactPlane.x + dot(gContactPlane.yz, centre - gl_FragCoord.xy);
+        float inFront = q.z - scene;  // > 0: the scene is nearer the camera than the step
+        if (inFront > tolerance && inFront < thickness && own - scene > tolerance) visible = 0.0;
     }
     return visible;
 }
