@@ -55,13 +55,8 @@ public:
         bool moved = false;
         for (std::size_t p = 0; p < mParameters.size(); ++p) {
             int bestHere = mCurrent;
-            for (int v = 0; v < int(mParameters[p].values.size()); ++v) {
-                if (v == point(mCurrent)[p]) continue;
-                if (stopping()) return std::nullopt;
-                Point next = point(mCurrent);
-                next[p] = v;
-                bestHere = better(mMemo.trial(next), bestHere);
-            }
+            if (!eachOtherValue(p, [&](int t) { bestHere = better(t, bestHere); }))
+                return std::nullopt;
             moved |= bestHere != mCurrent;
             mCurrent = bestHere;
         }
@@ -80,15 +75,12 @@ public:
         };
         std::vector<Change> over, faster;
         for (std::size_t p = 0; p < mParameters.size(); ++p) {
-            for (int v = 0; v < int(mParameters[p].values.size()); ++v) {
-                if (v == point(mCurrent)[p]) continue;
-                if (stopping()) return std::nullopt;
-                Point next = point(mCurrent);
-                next[p] = v;
-                const int t = mMemo.trial(next);  // known already after a sweep that stayed
+            // Every trial is known already after a sweep that stayed.
+            const bool going = eachOtherValue(p, [&](int t) {
                 if (!feasible(t) && error(t) < error(mCurrent)) over.push_back({p, t});
                 if (ms(t) < ms(mCurrent)) faster.push_back({p, t});
-            }
+            });
+            if (!going) return std::nullopt;
         }
         std::sort(over.begin(), over.end(), [&](const Change& a, const Change& b) {
             return error(a.trial) < error(b.trial);
@@ -110,6 +102,20 @@ public:
     }
 
 private:
+    // Evaluates the current point with parameter `p` at each of its other values, handing
+    // each trial to `visit`; false when `stop` ended the search first.
+    template <typename Visit>
+    bool eachOtherValue(std::size_t p, Visit&& visit) {
+        for (int v = 0; v < int(mParameters[p].values.size()); ++v) {
+            if (v == point(mCurrent)[p]) continue;
+            if (stopping()) return false;
+            Point next = point(mCurrent);
+            next[p] = v;
+            visit(mMemo.trial(next));
+        }
+        return true;
+    }
+
     const Point& point(int t) const { return mResult.trials[std::size_t(t)].point; }
     double error(int t) const { return mResult.trials[std::size_t(t)].eval.error; }
     double ms(int t) const { return mResult.trials[std::size_t(t)].eval.ms; }

@@ -35,13 +35,13 @@ const std::vector<std::string> kMapSizes = {"512", "1024", "2048", "4096"};
 
 // Lights whose map sizes are searched one by one: every shadowed light that is on (the
 // scene's switches, or --light-only's) when there are two to kMaxSizedApart of them and the
-// options leave each its own size (map-size 0), so a scene's sun can take the texels its spot
-// does not need. Otherwise none: one map size is searched for all (with many lights, three
-// more trials per light and sweep would swamp the search; mixed-lights has 16).
+// options leave each its own size (map-size 0) with shadows on, so a scene's sun can take the
+// texels its spot does not need. Otherwise none: one map size is searched for all (with many
+// lights, three more trials per light and sweep would swamp the search; mixed-lights has 16).
 constexpr std::size_t kMaxSizedApart = 8;
 std::vector<int> lightsSizedApart(const Scene& scene, const RenderOptions& o) {
     std::vector<int> lights;
-    if (o.shadow.mapSize != 0) return lights;
+    if (o.shadow.mapSize != 0 || !o.shadow.enabled) return lights;
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
         if (lightIsOn(scene, o, i) && scene.lights[i].castsShadows) lights.push_back(int(i));
     if (lights.size() < 2 || lights.size() > kMaxSizedApart) lights.clear();
