@@ -170,9 +170,10 @@ int runScore(const ScoreArgs& args, bool verbose) {
     if (options.shadow.blendShadows == BlendShadows::Coloured) {
         std::printf(
             "coloured shadows: transmitted light off by %.2f/255 on average over %ld "
-            "tinted pixel x light pairs (%.2f/255 over the %ld away from edges)\n",
+            "tinted pixel x light pairs (%.2f/255 over the %ld away from edges; its colour, "
+            "where both pass light: %.2f/255 over %ld)\n",
             255.0 * r.tint.meanError, r.tint.cells, 255.0 * r.tint.meanErrorOutsideBand,
-            r.tint.cellsOutsideBand);
+            r.tint.cellsOutsideBand, 255.0 * r.tint.meanColourError, r.tint.cellsBothLit);
     }
     std::printf("wrote %s/render.png, errors.png, %sscore.json\n", args.outDir.c_str(),
                 r.tintErrors.empty() ? "" : "tint-errors.png, ");

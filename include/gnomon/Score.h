@@ -46,6 +46,11 @@ struct TintScore {
     long cellsOutsideBand = 0;  // of them, away from the reference's shadow boundaries
     double meanError = 0.0;     // mean |rendered - reference| per channel, 0..1 (x 255: steps)
     double meanErrorOutsideBand = 0.0;
+    // The colour alone: pairs where both let light past the opaque casters (rendered
+    // visibility and the reference at least 0.5), |rendered tint - reference tint|. Apart
+    // from the opaque shadow's edges, which misclassification already counts.
+    long cellsBothLit = 0;
+    double meanColourError = 0.0;
 };
 
 struct ScoreResult {

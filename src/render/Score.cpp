@@ -142,7 +142,9 @@ std::string toJson(const ScoreResult& r, const std::string& scene, const RenderO
         j["tint"] = {{"cells", r.tint.cells},
                      {"cells_outside_band", r.tint.cellsOutsideBand},
                      {"mean_error", r.tint.meanError},
-                     {"mean_error_outside_band", r.tint.meanErrorOutsideBand}};
+                     {"mean_error_outside_band", r.tint.meanErrorOutsideBand},
+                     {"cells_both_lit", r.tint.cellsBothLit},
+                     {"mean_colour_error", r.tint.meanColourError}};
     }
     return j.dump(2) + "\n";
 }

@@ -247,7 +247,7 @@ TintScore scoreTint(const Reference& r, const std::vector<float>& visibility,
                     bool soft) {
     TintScore score;
     if (!tintScored(r, visibility, tint)) return score;
-    double sum = 0.0, sumOutside = 0.0;
+    double sum = 0.0, sumOutside = 0.0, sumColour = 0.0;
     for (std::size_t c = 0; c < r.applies.size(); ++c) {
         const float error = tintError(r, visibility, tint, soft, c);
         if (error < 0.0f) continue;
@@ -257,8 +257,15 @@ TintScore scoreTint(const Reference& r, const std::vector<float>& visibility,
             ++score.cellsOutsideBand;
             sumOutside += error;
         }
+        if (visibility[c] >= 0.5f && (soft ? r.soft[c] : r.hard[c]) >= 0.5f) {
+            const glm::vec3 d =
+                glm::abs(glm::vec3(tint[3 * c], tint[3 * c + 1], tint[3 * c + 2]) - r.tint[c]);
+            ++score.cellsBothLit;
+            sumColour += (d.x + d.y + d.z) / 3.0f;
+        }
     }
     if (score.cells > 0) score.meanError = sum / double(score.cells);
+    if (score.cellsBothLit > 0) score.meanColourError = sumColour / double(score.cellsBothLit);
     if (score.cellsOutsideBand > 0) {
         score.meanErrorOutsideBand = sumOutside / double(score.cellsOutsideBand);
     }

@@ -310,5 +310,29 @@ TEST(Metrics, AliasingBandFollowsTheTerminator) {
     EXPECT_EQ(bandAt(1.0f), (std::vector<int>{0, 0, 0, 0, 0, 0, 0, 0}));
 }
 
+// The transmitted light's error counts every pair either side tints; its colour alone only
+// the pairs where both let light past the opaque casters. On a lit strip of four pixels
+// tinted (0.5, 0.5, 0.5) by the reference: the renderer's tint off by 0.1 where both pass
+// light, and lit with the right tint where the reference is shadowed (an opaque shadow's
+// edge, which misclassification counts already).
+TEST(Metrics, TheTintsColourIsScoredWhereBothPassLight) {
+    truth::Reference r;
+    r.width = 4;
+    r.height = 1;
+    r.lights = 1;
+    r.applies.assign(4, 1);
+    r.hard = {1.0f, 1.0f, 0.0f, 1.0f};
+    r.tint.assign(4, glm::vec3(0.5f));
+    r.tint[3] = glm::vec3(1.0f);  // untinted on both sides: not scored
+    const std::vector<float> visibility = {1.0f, 1.0f, 1.0f, 1.0f};
+    std::vector<float> tint = {0.6f, 0.6f, 0.6f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 1, 1, 1};
+    const std::vector<std::uint8_t> band(4, 0);
+    const TintScore t = truth::scoreTint(r, visibility, tint, band, false);
+    EXPECT_EQ(t.cells, 3);
+    EXPECT_NEAR(t.meanError, (0.1 + 0.0 + 0.5) / 3.0, 1e-6);
+    EXPECT_EQ(t.cellsBothLit, 2);
+    EXPECT_NEAR(t.meanColourError, (0.1 + 0.0) / 2.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace gnomon
