@@ -5,14 +5,18 @@ misclassified < 1 %, false shadow away from edges < 0.05 %, leak away from edges
 Run from anywhere after `make build`:
 
     scripts/broad-check.py [--scenes DIR] [--size WxH] [--lights sun,point,spot] [--only A,B]
-                           [--flags "--bias-slope 0"] [--out docs/broad-check.md]
+                           [--random N [--seed S]] [--flags "--bias-slope 0"]
+                           [--out docs/broad-check.md]
 
 Views per model, each with and without `--ground`:
 - sun: the model's own camera under four suns (`--sun` at the default, 30,60, 200,20, 120,8);
 - point, spot: a point light and a 35° spot placed from the model's bounds (above and to
   one side, about 1.5 radii out), each seen from the model's own camera and from a low
   close camera. Bounds come from the glTF's position accessors through its node
-  transforms, so they are the file's, not gnomon's.
+  transforms, so they are the file's, not gnomon's;
+- random (with --random N): N more views per model, each a camera 1.2 to 3 radii out at a
+  random bearing and height (5 degrees below the centre to 60 above), aimed within 0.3 radii
+  of the centre, under a random sun (6 to 85 degrees high); --seed picks another set.
 Scene files and score outputs go to a temporary folder; only --out writes a file.
 """
 import argparse
@@ -20,6 +24,7 @@ import glob
 import json
 import math
 import os
+import random
 import shlex
 import struct
 import subprocess
@@ -83,12 +88,29 @@ def bounds(path):
     return [(lo[k] + hi[k]) / 2 for k in range(3)], math.dist(lo, hi) / 2
 
 
-def views(model, kinds, work):
+def random_views(model, name, count, rng):
+    """`count` random cameras around `model` under random suns, as gnomon flags."""
+    c, r = bounds(model)
+    for i in range(count):
+        bearing, height = rng.uniform(0, 2 * math.pi), math.radians(rng.uniform(-5, 60))
+        d = rng.uniform(1.2, 3.0) * r
+        eye = [c[0] + d * math.cos(height) * math.sin(bearing), c[1] + d * math.sin(height),
+               c[2] + d * math.cos(height) * math.cos(bearing)]
+        target = [c[k] + rng.uniform(-0.3, 0.3) * r for k in range(3)]
+        sun = f"{rng.uniform(0, 360):.1f},{rng.uniform(6, 85):.1f}"
+        flags = ["--camera-eye", ",".join(f"{v:.5g}" for v in eye),
+                 "--camera-target", ",".join(f"{v:.5g}" for v in target), "--sun", sun]
+        yield f"{name} random {i} sun {sun}", model, flags
+
+
+def views(model, kinds, work, random_count=0, rng=None):
     """(label, scene file or model, extra flags) for every view of `model`."""
     name = os.path.basename(model).split(".")[0]
     if "sun" in kinds:
         for sun in SUNS:
             yield f"{name} sun {sun[1] if sun else 'default'}", model, sun
+    if random_count:
+        yield from random_views(model, name, random_count, rng)
     if not {"point", "spot"} & set(kinds):
         return
     c, r = bounds(model)
@@ -117,7 +139,11 @@ def main():
     parser.add_argument("--out", help="also write the table as a markdown page")
     parser.add_argument("--flags", default="",
                         help="gnomon score flags added to every view (a candidate default)")
+    parser.add_argument("--random", type=int, default=0,
+                        help="also this many random cameras and suns per model")
+    parser.add_argument("--seed", type=int, default=1, help="which random views")
     args = parser.parse_args()
+    rng = random.Random(args.seed)
     extra = shlex.split(args.flags)
     models = sorted(glob.glob(os.path.join(args.scenes, "*", "*.gltf")) +
                     glob.glob(os.path.join(args.scenes, "*", "*.glb")))
@@ -135,7 +161,7 @@ def main():
     emit("|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as work:
         for model in models:
-            for label, scene, flags in views(model, args.lights.split(","), work):
+            for label, scene, flags in views(model, args.lights.split(","), work, args.random, rng):
                 for ground in ([], ["--ground"]):
                     run = subprocess.run([GNOMON, "score", "--scene", scene, "--size", args.size,
                                           "--out-dir", os.path.join(work, "out")] + flags + ground + extra,
@@ -162,7 +188,8 @@ def main():
         commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                                 capture_output=True, text=True).stdout.strip()
         page = ["# Broad check: every model, many views, default settings", "",
-                head, "", f"`scripts/broad-check.py --size {args.size}{' --flags ' + shlex.quote(args.flags) if args.flags else ''} --out FILE`, at commit {commit}. "
+                head, "", f"`scripts/broad-check.py --size {args.size}{' --flags ' + shlex.quote(args.flags) if args.flags else ''}"
+                f"{f' --random {args.random} --seed {args.seed}' if args.random else ''} --out FILE`, at commit {commit}. "
                 + summary + ".", ""] + lines
         tmp = args.out + ".tmp"
         with open(tmp, "w") as f:
