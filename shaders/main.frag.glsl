@@ -31,6 +31,9 @@ in VertexOut {
     vec2 uv;
     flat vec3 alpha;
 #endif
+#ifdef VISIBILITY_PASS
+    flat float object;  // the scene object's index
+#endif
 } vIn;
 
 #ifdef MATERIAL_PATH
@@ -56,7 +59,8 @@ layout(location = 11) uniform vec4 uCascadeDepth;
 
 #ifdef VISIBILITY_PASS
 layout(early_fragment_tests) in;
-layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
+// Per light: visibility, the map texel's world size, and 1 + the scene object drawn here.
+layout(rgba32f, binding = 0) uniform writeonly image2DArray uVisibility;
 #ifdef COLOURED_SHADOWS
 layout(rgba32f, binding = 1) uniform writeonly image2DArray uTintRecord;  // gTint per light
 #endif
@@ -124,7 +128,7 @@ void shade(LightData light, Surface s, vec3 vsToLight, float falloff, vec3 visib
 #ifdef VISIBILITY_PASS
 void recordVisibility(LightData light, float visibility) {
     imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)),
-               vec4(visibility, gTexelWorld, 0.0, 0.0));
+               vec4(visibility, gTexelWorld, vIn.object + 1.0, 0.0));
 #ifdef COLOURED_SHADOWS
     imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)), vec4(gTint, 1.0));
 #endif

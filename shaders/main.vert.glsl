@@ -29,6 +29,9 @@ out VertexOut {
     vec2 uv;
     flat vec3 alpha;  // alpha factor, alpha mode (0 opaque, 1 mask, 2 blend), cutoff
 #endif
+#ifdef VISIBILITY_PASS
+    flat float object;  // the scene object's index, recorded beside each light's visibility
+#endif
 } vOut;
 
 void main() {
@@ -47,6 +50,9 @@ void main() {
 #ifdef MATERIAL_PATH
     vOut.uv = materialUv(o, msUv);
     vOut.alpha = vec3(o.baseColour.a, o.flags.y, o.flags.z);
+#endif
+#ifdef VISIBILITY_PASS
+    vOut.object = float(aObject);
 #endif
     gl_Position = uClipFromView * vsPosition;
 }

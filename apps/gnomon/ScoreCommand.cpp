@@ -175,6 +175,11 @@ int runScore(const ScoreArgs& args, bool verbose) {
             255.0 * r.tint.meanError, r.tint.cells, 255.0 * r.tint.meanErrorOutsideBand,
             r.tint.cellsOutsideBand, 255.0 * r.tint.meanColourError, r.tint.cellsBothLit);
     }
+    if (r.otherSurfacePixels > 0) {
+        std::printf("not scored: %ld pixels where the render drew another surface than the "
+                    "reference sees (or none)\n",
+                    r.otherSurfacePixels);
+    }
     std::printf("wrote %s/render.png, errors.png, %sscore.json\n", args.outDir.c_str(),
                 r.tintErrors.empty() ? "" : "tint-errors.png, ");
     if (args.maxError >= 0.0 && r.overall.misclassified > args.maxError) {

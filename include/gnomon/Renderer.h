@@ -71,6 +71,9 @@ struct ShadowVisibility {
     int width = 0, height = 0, lights = 0;
     std::vector<float> visibility;  // 0 shadowed .. 1 lit
     std::vector<float> texelWorld;  // world size of the map texel the lookup used
+    // Per pixel (top-down rows, not per light): the scene object whose shadows were recorded
+    // there, -1 where the main pass drew none that receives them.
+    std::vector<int> object;
     // --blend-shadows coloured only (else empty): RGB transmittance per pixel x light (three
     // floats at 3 * cell), 1 where no blended caster tints the light.
     std::vector<float> tint;

@@ -58,6 +58,10 @@ struct ScoreResult {
     ShadowScore overall;
     TintScore tint;              // cells 0 unless --blend-shadows coloured tinted something
     bool softReference = false;  // filter pcss: compared with the soft reference
+    // Pixels left out: the reference sees a receiving surface there and the render drew
+    // another one, or none (a thin part seen edge-on that rasterisation misses, an alpha
+    // mask read at another mip level). Their shadows are not the same surface's.
+    long otherSurfacePixels = 0;
     double traceSeconds = 0.0;   // ray tracing wall time
     Image render;                // the frame scored
     Image errors;                // the error map (see truth/Metrics.h)

@@ -72,20 +72,23 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
     ScoreResult result;
     result.render = std::move(frame.render);
     result.softReference = options.shadow.filter == ShadowFilter::Pcss;
-    // One aliasing band for the numbers and the map.
+    // One aliasing band for the numbers and the map, around the reference's own edges;
+    // then only the pixels where the render drew the surface the reference sees are scored.
     const ShadowVisibility& visibility = frame.visibility;
     const std::vector<std::uint8_t> band = truth::aliasingBand(
         reference, visibility.texelWorld, scoreOptions.bandTexels, result.softReference);
+    const truth::Reference same =
+        truth::onSameSurfaces(reference, visibility.object, result.otherSurfacePixels);
     const truth::Scores scores =
-        truth::scoreVisibility(scene, reference, visibility.visibility, band, result.softReference);
+        truth::scoreVisibility(scene, same, visibility.visibility, band, result.softReference);
     result.lights = scores.lights;
     result.overall = scores.overall;
-    result.tint = truth::scoreTint(reference, visibility.visibility, visibility.tint, band,
+    result.tint = truth::scoreTint(same, visibility.visibility, visibility.tint, band,
                                    result.softReference);
-    result.errors = truth::errorMap(reference, visibility.visibility, band, result.softReference,
+    result.errors = truth::errorMap(same, visibility.visibility, band, result.softReference,
                                     result.render);
     if (options.shadow.blendShadows == BlendShadows::Coloured) {
-        result.tintErrors = truth::tintErrorMap(reference, visibility.visibility, visibility.tint,
+        result.tintErrors = truth::tintErrorMap(same, visibility.visibility, visibility.tint,
                                                 result.softReference, result.render);
     }
     return result;
@@ -133,6 +136,7 @@ std::string toJson(const ScoreResult& r, const std::string& scene, const RenderO
     j["filter"] = toString(o.shadow.filter);
     j["depth_format"] = toString(o.shadow.depthFormat);
     j["soft_reference"] = r.softReference;
+    j["other_surface_pixels"] = r.otherSurfacePixels;
     j["trace_seconds"] = r.traceSeconds;
     j["overall"] = toJson(r.overall);
     j["lights"] = nlohmann::json::array();

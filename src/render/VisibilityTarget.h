@@ -1,5 +1,6 @@
-// What `gnomon score` reads of a frame: per light and pixel the shadow visibility and the
-// world size of the map texel it came from (RG32F, a layer per scene light), and with
+// What `gnomon score` reads of a frame: per light and pixel the shadow visibility, the
+// world size of the map texel it came from and the scene object drawn there (RGBA32F, a
+// layer per scene light), and with
 // coloured shadows the transmittance the lookup found (RGBA32F, the same layers). The main
 // pass's visibility pass writes them as images.
 #pragma once
@@ -11,7 +12,8 @@ namespace gnomon::render {
 
 class VisibilityTarget {
 public:
-    // Sized for `lights` layers of width x height, every pixel unset (lit, no map, untinted);
+    // Sized for `lights` layers of width x height, every pixel unset (lit, no map, no object,
+    // untinted);
     // the tint layers only `withTint`.
     void clear(int width, int height, int lights, bool withTint);
     const gl::Texture& visibility() const { return mVisibility; }

@@ -131,6 +131,24 @@ std::vector<float> squaredDistance(const std::vector<std::uint8_t>& seeds, int w
     return grid;
 }
 
+Reference onSameSurfaces(const Reference& r, const std::vector<int>& object, long& excluded) {
+    excluded = 0;
+    Reference same = r;
+    const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
+    if (object.size() != pixels || r.object.size() != pixels) return same;
+    const std::size_t lights = std::size_t(r.lights);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        if (object[p] == r.object[p]) continue;
+        bool applied = false;
+        for (std::size_t l = 0; l < lights; ++l) {
+            applied = applied || r.applies[p * lights + l];
+            same.applies[p * lights + l] = 0;
+        }
+        excluded += applied;
+    }
+    return same;
+}
+
 Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector<float>& visibility,
                        const std::vector<std::uint8_t>& band, bool soft) {
     struct Counts {

@@ -26,6 +26,13 @@ std::vector<std::uint8_t> aliasingBand(const Reference& reference,
                                        const std::vector<float>& texelWorld, float bandTexels,
                                        bool soft);
 
+// `reference` where the render drew the same surface: a copy in which no light applies at
+// the pixels whose `object` (per pixel, the scene object the render drew, -1 none) is not
+// the one the reference sees; `excluded` counts the pixels where a light applied. An empty
+// `object` (no record) keeps every pixel.
+Reference onSameSurfaces(const Reference& reference, const std::vector<int>& object,
+                         long& excluded);
+
 // `visibility` holds the renderer's visibility per pixel x light (0 shadowed .. 1 lit). Hard
 // metrics threshold it at 0.5; with `soft`, the reference is the soft one (thresholded at
 // 0.5 for the hard metrics).
