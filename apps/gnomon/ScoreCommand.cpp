@@ -176,9 +176,10 @@ int runScore(const ScoreArgs& args, bool verbose) {
             r.tint.cellsOutsideBand, 255.0 * r.tint.meanColourError, r.tint.cellsBothLit);
     }
     if (r.otherSurfacePixels > 0) {
-        std::printf("not scored: %ld pixels where the render drew another surface than the "
-                    "reference sees (or none)\n",
-                    r.otherSurfacePixels);
+        std::printf(
+            "not scored: %ld pixels where the render drew another surface than the "
+            "reference sees (or none)\n",
+            r.otherSurfacePixels);
     }
     std::printf("wrote %s/render.png, errors.png, %sscore.json\n", args.outDir.c_str(),
                 r.tintErrors.empty() ? "" : "tint-errors.png, ");
