@@ -62,10 +62,10 @@ struct ScoreResult {
     // another one, or none (a thin part seen edge-on that rasterisation misses, an alpha
     // mask read at another mip level). Their shadows are not the same surface's.
     long otherSurfacePixels = 0;
-    double traceSeconds = 0.0;   // ray tracing wall time
-    Image render;                // the frame scored
-    Image errors;                // the error map (see truth/Metrics.h)
-    Image tintErrors;            // --blend-shadows coloured: the transmitted-light error map
+    double traceSeconds = 0.0;  // ray tracing wall time
+    Image render;               // the frame scored
+    Image errors;               // the error map (see truth/Metrics.h)
+    Image tintErrors;           // --blend-shadows coloured: the transmitted-light error map
 };
 
 // score() in two halves, so that the ray tracing can run off the GL thread (gnomon view):
