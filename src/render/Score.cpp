@@ -83,10 +83,10 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
         truth::scoreVisibility(scene, same, visibility.visibility, band, result.softReference);
     result.lights = scores.lights;
     result.overall = scores.overall;
-    result.tint = truth::scoreTint(same, visibility.visibility, visibility.tint, band,
-                                   result.softReference);
-    result.errors = truth::errorMap(same, visibility.visibility, band, result.softReference,
-                                    result.render);
+    result.tint =
+        truth::scoreTint(same, visibility.visibility, visibility.tint, band, result.softReference);
+    result.errors =
+        truth::errorMap(same, visibility.visibility, band, result.softReference, result.render);
     if (options.shadow.blendShadows == BlendShadows::Coloured) {
         result.tintErrors = truth::tintErrorMap(same, visibility.visibility, visibility.tint,
                                                 result.softReference, result.render);

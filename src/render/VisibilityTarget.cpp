@@ -37,8 +37,7 @@ void VisibilityTarget::clear(int width, int height, int lights, bool withTint) {
         return t && t.width() == width && t.height() == height && t.layers() == layers;
     };
     if (!fits(mVisibility)) {
-        mVisibility =
-            gl::Texture::array2D("shadow visibility", GL_RGBA32F, width, height, layers);
+        mVisibility = gl::Texture::array2D("shadow visibility", GL_RGBA32F, width, height, layers);
     }
     const float unset[4] = {1.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(mVisibility.id(), 0, GL_RGBA, GL_FLOAT, unset);

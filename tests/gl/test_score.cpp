@@ -141,8 +141,7 @@ TEST(Score, OnlyTheSurfaceTheReferenceSeesIsScored) {
     const ScoreResult left = scoreOf(elsewhere);
     EXPECT_EQ(left.otherSurfacePixels, before.otherSurfacePixels + 100);
     EXPECT_EQ(left.overall.pixels, before.overall.pixels - 100);
-    EXPECT_LE(left.overall.leak * double(left.overall.pixels),
-              before.overall.leak * pixels + 1e-6);
+    EXPECT_LE(left.overall.leak * double(left.overall.pixels), before.overall.leak * pixels + 1e-6);
 }
 
 TEST(Score, BadOptionsAreErrors) {
