@@ -189,6 +189,7 @@ def main():
                                 capture_output=True, text=True).stdout.strip()
         page = ["# Broad check: every model, many views, default settings", "",
                 head, "", f"`scripts/broad-check.py --size {args.size}{' --flags ' + shlex.quote(args.flags) if args.flags else ''}"
+                f"{f' --lights {args.lights}' if args.lights != 'sun,point,spot' else ''}"
                 f"{f' --random {args.random} --seed {args.seed}' if args.random else ''} --out FILE`, at commit {commit}. "
                 + summary + ".", ""] + lines
         tmp = args.out + ".tmp"
