@@ -59,7 +59,8 @@ void VisibilityTarget::read(int width, int height, int lights, bool drawn,
         std::size_t(out.width) * std::size_t(out.height) * std::size_t(lights);
     out.visibility.assign(cells, 1.0f);
     out.texelWorld.assign(cells, 0.0f);
-    out.object.assign(std::size_t(out.width) * std::size_t(out.height), -1);
+    // Nothing drawn: no object either, so that a score keeps every pixel (and reads it lit).
+    out.object.assign(drawn ? std::size_t(out.width) * std::size_t(out.height) : 0, -1);
     out.tint.assign(mWithTint ? 3 * cells : 0, 1.0f);
     if (lights == 0 || !drawn) return;
     readLayers(mVisibility, GL_RGBA, 4, out.width, out.height, lights,

@@ -23,9 +23,9 @@ namespace {
 // shadow, as one facing away is. It gets under 0.02 % of the light, so no picture shows
 // which it is, and which side of it it lies on is decided by the rounding of its vertices
 // and of the light's direction (a wall under a sun whose azimuth is a multiple of 90
-// degrees: cos 90 degrees is 4e-8 in float). Counted as lit, such a wall, all of it within
-// one map texel of the light's view, weighed as if it showed a shadow (tutorial-room under a
-// sun at 180,30: 7 % false shadow).
+// degrees: cos 90 degrees is 4e-8 in float). Counted as lit, such a wall (all of it within
+// one texel of the light's map) was scored as if its shadow showed: tutorial-room under a
+// sun at 180,30 read 7 % false shadow.
 constexpr float kEdgeOnCosine = 1.75e-4f;  // sin 0.01 degrees
 
 struct DeviceDeleter {
