@@ -282,11 +282,19 @@ void Viewer::scorePanel() {
     ImGui::TextWrapped("away from edges: false shadow %.2f%%, leak %.2f%%",
                        100.0 * o.falseShadowOutsideBand, 100.0 * o.leakOutsideBand);
     if (mScore->tint.cells > 0) {
-        ImGui::TextWrapped("tinted light (coloured shadows): off by %.2f/255 on average",
-                           255.0 * mScore->tint.meanError);
+        ImGui::TextWrapped(
+            "tinted light (coloured shadows): off by %.2f/255 on average, its colour %.2f/255",
+            255.0 * mScore->tint.meanError, 255.0 * mScore->tint.meanColourError);
         tooltip(
             "the light blended casters let through against the reference's, over the "
-            "pixels they tint (gnomon score writes tint-errors.png)");
+            "pixels they tint (gnomon score writes tint-errors.png); its colour: where both "
+            "let light past the opaque casters");
+    }
+    if (mScore->otherSurfacePixels > 0) {
+        ImGui::TextWrapped("not scored: %ld pixels", mScore->otherSurfacePixels);
+        tooltip(
+            "where the render drew another surface than the reference sees, or none (a part "
+            "seen edge-on, an alpha mask at another mip level)");
     }
     ImGui::Checkbox("error overlay", &mOverlay);
     tooltip("red: false shadow (acne), blue: light leak; pale inside the aliasing band");
