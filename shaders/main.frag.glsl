@@ -7,7 +7,7 @@
 // SHADOWS_OFF skips every lookup and leaves lighting unchanged.
 // VISIBILITY_PASS (gnomon score): after the main pass, the visible surfaces are drawn again
 // (depth test LEQUAL, no writes) and each light's visibility and the world size of the map
-// texel it came from are stored per pixel, one image layer per light.
+// texel it came from are stored per pixel, one image layer per light, and the object drawn.
 // MATERIAL_PATH (textured, masked or blended materials): the base colour texture, masked
 // fragments discarded below their cutoff, blended ones written with their alpha.
 // FLOOR (gnomon bench's reference): the same lights and shadow lookups with one diffuse term
@@ -59,8 +59,10 @@ layout(location = 11) uniform vec4 uCascadeDepth;
 
 #ifdef VISIBILITY_PASS
 layout(early_fragment_tests) in;
-// Per light: visibility, the map texel's world size, and 1 + the scene object drawn here.
-layout(rgba32f, binding = 0) uniform writeonly image2DArray uVisibility;
+layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
+// Per pixel: 1 + the scene object whose shadows are recorded here (0: none), so that the
+// score compares them with the reference's on the same surface only.
+layout(r32f, binding = 2) uniform writeonly image2D uObjectRecord;
 #ifdef COLOURED_SHADOWS
 layout(rgba32f, binding = 1) uniform writeonly image2DArray uTintRecord;  // gTint per light
 #endif
@@ -128,7 +130,7 @@ void shade(LightData light, Surface s, vec3 vsToLight, float falloff, vec3 visib
 #ifdef VISIBILITY_PASS
 void recordVisibility(LightData light, float visibility) {
     imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)),
-               vec4(visibility, gTexelWorld, vIn.object + 1.0, 0.0));
+               vec4(visibility, gTexelWorld, 0.0, 0.0));
 #ifdef COLOURED_SHADOWS
     imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)), vec4(gTint, 1.0));
 #endif
@@ -317,6 +319,9 @@ void main() {
     if (vIn.alpha.y == 1.0 && alpha < vIn.alpha.z) discard;
     if (vIn.alpha.y != 2.0) alpha = 1.0;
     s.blended = vIn.alpha.y == 2.0;
+#endif
+#ifdef VISIBILITY_PASS
+    if (s.receives) imageStore(uObjectRecord, ivec2(gl_FragCoord.xy), vec4(vIn.object + 1.0));
 #endif
     s.vsToEye = normalize(-vIn.vsPosition);
 

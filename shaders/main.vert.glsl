@@ -30,7 +30,7 @@ out VertexOut {
     flat vec3 alpha;  // alpha factor, alpha mode (0 opaque, 1 mask, 2 blend), cutoff
 #endif
 #ifdef VISIBILITY_PASS
-    flat float object;  // the scene object's index, recorded beside each light's visibility
+    flat float object;  // the scene object's index, recorded beside the lights' visibility
 #endif
 } vOut;
 

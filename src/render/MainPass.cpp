@@ -361,7 +361,8 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         // The surfaces that won the depth test, again: each light's visibility per pixel,
         // untiled (the score reads every light's visibility everywhere).
         glBindImageTexture(0, visibility->visibility().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                           GL_RGBA32F);
+                           GL_RG32F);
+        glBindImageTexture(2, visibility->objects().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
         const gl::Texture* tint = in.transmittance ? visibility->tint() : nullptr;
         if (tint) glBindImageTexture(1, tint->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         glDepthFunc(GL_LEQUAL);
@@ -372,7 +373,8 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
         glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-        glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
+        glBindImageTexture(2, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
         if (tint) glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     }
     glBindSampler(0, 0);

@@ -37,10 +37,15 @@ void VisibilityTarget::clear(int width, int height, int lights, bool withTint) {
         return t && t.width() == width && t.height() == height && t.layers() == layers;
     };
     if (!fits(mVisibility)) {
-        mVisibility = gl::Texture::array2D("shadow visibility", GL_RGBA32F, width, height, layers);
+        mVisibility = gl::Texture::array2D("shadow visibility", GL_RG32F, width, height, layers);
     }
-    const float unset[4] = {1.0f, 0.0f, 0.0f, 0.0f};
-    glClearTexImage(mVisibility.id(), 0, GL_RGBA, GL_FLOAT, unset);
+    const float unset[2] = {1.0f, 0.0f};
+    glClearTexImage(mVisibility.id(), 0, GL_RG, GL_FLOAT, unset);
+    if (!mObjects || mObjects.width() != width || mObjects.height() != height) {
+        mObjects = gl::Texture::plain2D("shadow visibility objects", GL_R32F, width, height);
+    }
+    const float none = 0.0f;
+    glClearTexImage(mObjects.id(), 0, GL_RED, GL_FLOAT, &none);
     mWithTint = withTint;
     if (!withTint) return;
     if (!fits(mTint)) {
@@ -63,14 +68,13 @@ void VisibilityTarget::read(int width, int height, int lights, bool drawn,
     out.object.assign(drawn ? std::size_t(out.width) * std::size_t(out.height) : 0, -1);
     out.tint.assign(mWithTint ? 3 * cells : 0, 1.0f);
     if (lights == 0 || !drawn) return;
-    readLayers(mVisibility, GL_RGBA, 4, out.width, out.height, lights,
+    readLayers(mVisibility, GL_RG, 2, out.width, out.height, lights,
                [&](std::size_t cell, const float* v) {
                    out.visibility[cell] = v[0];
                    out.texelWorld[cell] = v[1];
-                   // Every light recorded at a pixel names the same object; 0 is none.
-                   int& object = out.object[cell / std::size_t(lights)];
-                   object = std::max(object, int(v[2]) - 1);
                });
+    readLayers(mObjects, GL_RED, 1, out.width, out.height, 1,
+               [&](std::size_t pixel, const float* v) { out.object[pixel] = int(v[0]) - 1; });
     if (!mWithTint) return;
     readLayers(mTint, GL_RGBA, 4, out.width, out.height, lights,
                [&](std::size_t cell, const float* v) { std::copy(v, v + 3, &out.tint[3 * cell]); });

@@ -1,6 +1,6 @@
-// What `gnomon score` reads of a frame: per light and pixel the shadow visibility, the
-// world size of the map texel it came from and the scene object drawn there (RGBA32F, a
-// layer per scene light), and with
+// What `gnomon score` reads of a frame: per light and pixel the shadow visibility and the
+// world size of the map texel it came from (RG32F, a layer per scene light), per pixel the
+// scene object whose shadows those are (R32F, 1 + its index, 0 none), and with
 // coloured shadows the transmittance the lookup found (RGBA32F, the same layers). The main
 // pass's visibility pass writes them as images.
 #pragma once
@@ -18,12 +18,13 @@ public:
     void clear(int width, int height, int lights, bool withTint);
     const gl::Texture& visibility() const { return mVisibility; }
     const gl::Texture* tint() const { return mWithTint ? &mTint : nullptr; }
+    const gl::Texture& objects() const { return mObjects; }
     // The layers as ShadowVisibility's interleaved, top-down values; with `drawn` false
     // (nothing was drawn: the shadow-map debug view) every pixel reads lit.
     void read(int width, int height, int lights, bool drawn, ShadowVisibility& out) const;
 
 private:
-    gl::Texture mVisibility, mTint;
+    gl::Texture mVisibility, mTint, mObjects;
     bool mWithTint = false;
 };
 
