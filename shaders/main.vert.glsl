@@ -10,12 +10,10 @@ layout(location = 2) in vec3 vertexColour;
 layout(location = 3) in vec2 msUv;
 #endif
 
-layout(location = 1) uniform mat4 uViewFromWorld;
-layout(location = 2) uniform mat4 uClipFromView;
-
-// The visibility pass redraws the main pass's surfaces with an equal-depth test: both
-// programs must compute the very same positions.
-invariant gl_Position;
+// The visibility pass redraws the main pass's surfaces with an equal-depth test, and the
+// main pass itself may start from the view depth pass's depth: all compute the very same
+// positions (view_clip.glsl).
+#include "view_clip.glsl"
 
 out VertexOut {
     vec3 wsPosition;
@@ -36,9 +34,9 @@ out VertexOut {
 
 void main() {
     ObjectData o = objects[aObject];
-    vec4 wsPosition = o.worldFromModel * vec4(msPosition, 1.0);
+    vec4 wsPosition, vsPosition;
+    gl_Position = viewClip(o, msPosition, wsPosition, vsPosition);
     vec3 wsNormal = normalize(mat3(o.worldFromModelNormal) * msNormal);
-    vec4 vsPosition = uViewFromWorld * wsPosition;
     vOut.wsPosition = wsPosition.xyz;
     vOut.wsNormal = wsNormal;
     vOut.vsPosition = vsPosition.xyz;
@@ -54,5 +52,4 @@ void main() {
 #ifdef VISIBILITY_PASS
     vOut.object = float(aObject);
 #endif
-    gl_Position = uClipFromView * vsPosition;
 }

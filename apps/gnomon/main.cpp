@@ -140,11 +140,12 @@ int runRender(const RenderArgs& args, bool verbose) {
         const gnomon::FrameStats stats = renderer.lastFrameStats();
         std::fprintf(stderr,
                      "gnomon: %d shadow map(s), %d shadow pass(es) drawing %llu triangles "
-                     "(%d caster draws culled), main pass %llu triangles in %d light tile(s), "
+                     "(%d caster draws culled), main pass %llu triangles in %d light tile(s)%s, "
                      "%.1f MiB of shadow maps\n",
                      stats.shadowMaps, stats.shadowPasses,
                      (unsigned long long)stats.shadowTriangles, stats.castersCulled,
                      (unsigned long long)stats.mainTriangles, std::max(1, stats.lightTiles),
+                     stats.mainFromViewDepth ? " from the view's depth" : "",
                      double(stats.shadowMapBytes) / (1024.0 * 1024.0));
         if (stats.momentPasses > 0) {
             std::fprintf(stderr, "gnomon: %d moment pass(es) for the filterable maps\n",

@@ -172,6 +172,10 @@ struct ShadingOptions {
     // Main pass in screen tiles, each looking up only the lights that can reach it (tiled
     // forward shading): the same image, fewer lookups where spots or ranged lights are.
     bool lightTiles = true;
+    // The main pass starts from the view depth pass's depth, where that pass is drawn for
+    // this view anyway, and shades only the surface nearest in each pixel: the same image,
+    // no shading of surfaces that a nearer one covers later.
+    bool depthPrepass = true;
 
     bool operator==(const ShadingOptions&) const = default;
 };

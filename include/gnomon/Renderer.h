@@ -52,7 +52,10 @@ struct FrameStats {
     std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass
     int castersCulled = 0;              // caster draws skipped as outside a light's volume
     int lightTiles = 0;                 // screen tiles of the main pass (0: drawn untiled)
-    std::vector<PassTiming> passes;     // with setPassTiming(true): each pass drawn, in order
+    // The main pass started from the view depth pass's depth (depth-prepass): each pixel
+    // shaded once.
+    bool mainFromViewDepth = false;
+    std::vector<PassTiming> passes;  // with setPassTiming(true): each pass drawn, in order
 };
 
 // How much of one shadow map of the last frame the view uses: the share of the map's area

@@ -314,6 +314,14 @@ void addShading(std::vector<OptionSpec>& s) {
          .kind = K::Switch,
          .max = 1,
          NUMBER(shading.lightTiles, bool)});
+    add({.name = "depth-prepass",
+         .group = "Shading",
+         .doc = "start the main pass from the view's depth pass where one is drawn for the "
+                "view anyway, so each pixel is shaded once (the same image; off: surfaces "
+                "later covered by nearer ones are shaded too)",
+         .kind = K::Switch,
+         .max = 1,
+         NUMBER(shading.depthPrepass, bool)});
 }
 
 // When options have an effect: those of the shadow technique only with shadows on, and a

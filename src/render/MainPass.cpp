@@ -309,7 +309,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
             setState(items[i]);
             scene.draw(items[i]);
         }
-        glDepthMask(GL_TRUE);
+        glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);
         glDisable(GL_BLEND);
     }
     glDisable(GL_CULL_FACE);
@@ -339,8 +339,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
 
     scene.bind();
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
+    // With the view's depth in place, a fragment is shaded only where it is the surface kept
+    // there (its depth equals the stored one, computed the same way: view_clip.glsl).
+    glDepthFunc(in.depthReady ? GL_LEQUAL : GL_LESS);
+    glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);
     glCullFace(GL_BACK);
     if (tiled.tiles().empty()) {
         drawItems(scene, options, u, false, floor);
@@ -377,6 +379,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glBindImageTexture(2, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
         if (tint) glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     }
+    // Between passes depth writes stay on: clears obey the mask (a pass that clears before
+    // it sets its state would keep the last frame's depth).
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
     glBindSampler(0, 0);
     glBindSampler(1, 0);
     if (in.transmittance) {

@@ -53,6 +53,9 @@ struct MainPassInputs {
     const gl::Texture* viewDepth = nullptr;
     // Coloured shadows' transmittance maps, when a blended caster tints a shadowed light.
     const TransmittancePass* transmittance = nullptr;
+    // The target's depth holds the view's opaque depth already (ViewDepthPass, copied): the
+    // pass tests for equal depth and writes none, so each pixel is shaded once.
+    bool depthReady = false;
 };
 
 class MainPass {

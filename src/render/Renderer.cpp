@@ -101,21 +101,29 @@ struct Renderer::Impl {
         }
         colour = gl::Texture::plain2D("output colour", format, width, height);
         colourView = gl::Texture::view2D("output colour as stored", colour, GL_RGBA8);
-        depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT24, width, height);
+        // The view depth pass's format, so its depth can be copied in (bindClearedTarget).
+        depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT32F, width, height);
         target = gl::Framebuffer("output");
         glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
         glNamedFramebufferTexture(target.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
         target.checkComplete();
     }
 
-    // The frame's target bound and cleared (black, far), the viewport on it.
-    void bindClearedTarget(int width, int height) {
+    // The frame's target bound and cleared (black, far), the viewport on it. `viewDepth`:
+    // the depth is the view depth pass's instead of far (MainPassInputs::depthReady).
+    void bindClearedTarget(int width, int height, bool withViewDepth = false) {
         glBindFramebuffer(GL_FRAMEBUFFER, target.id());
         glViewport(0, 0, width, height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         const float far = 1.0f;
         glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, black);
-        glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &far);
+        glDepthMask(GL_TRUE);  // clears and blits obey the mask
+        if (withViewDepth) {
+            glBlitNamedFramebuffer(viewDepth.target().id(), target.id(), 0, 0, width, height, 0, 0,
+                                   width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        } else {
+            glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &far);
+        }
     }
 
     // Bad input stops here, in words: the options, the scene, what the driver can hold.
@@ -213,8 +221,13 @@ struct Renderer::Impl {
         plan.finish(shadowPass);
 
         ensureTarget(options.width, options.height, options.shading.output);
-        bindClearedTarget(options.width, options.height);
         render::MainPassInputs in;
+        // The view depth pass, when drawn for this very view, spares the main pass its
+        // overdraw (not under the shadow-map debug view, which draws no scene).
+        in.depthReady = options.shading.depthPrepass && options.debugView != DebugView::ShadowMap &&
+                        viewDepth.holds(scene, s.camera, options.width, options.height);
+        bindClearedTarget(options.width, options.height, in.depthReady);
+        stats.mainFromViewDepth = in.depthReady;
         in.viewFromWorld = viewFromWorld;
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
         const glm::mat4 fitView = fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld;
@@ -425,10 +438,12 @@ double Renderer::measureMainFloor() {
     if (!m.lastMain) return -1.0;
     m.makeCurrent();
     const RenderOptions& o = m.lastMainOptions;
-    m.bindClearedTarget(o.width, o.height);
+    render::MainPassInputs in = *m.lastMain;
+    in.depthReady = in.depthReady && m.viewDepth.holds(m.scene, m.lastCamera, o.width, o.height);
+    m.bindClearedTarget(o.width, o.height, in.depthReady);
     glFinish();  // the clears are not the floor's
     const auto start = std::chrono::steady_clock::now();
-    m.mainPass.render(m.scene, *m.lastMain, o, nullptr, true);
+    m.mainPass.render(m.scene, in, o, nullptr, true);
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();

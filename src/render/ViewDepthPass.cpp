@@ -9,16 +9,18 @@ namespace gnomon::render {
 const gl::Program& ViewDepthPass::program(bool alphaTested) {
     gl::Program& p = mPrograms[alphaTested ? 1 : 0];
     if (!p) {
-        // The shadow pass's depth programs: only the matrix differs.
+        // The shadow pass's depth programs, positioned as the main pass positions them.
+        std::vector<std::string> defines{"VIEW_CAMERA"};
+        if (alphaTested) defines.push_back("ALPHA_TEST");
         p = gl::buildProgram(
             alphaTested ? "view depth (alpha-tested)" : "view depth",
             {{GL_VERTEX_SHADER, "depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "depth.frag.glsl"}},
-            alphaTested ? std::vector<std::string>{"ALPHA_TEST"} : std::vector<std::string>{});
+            defines);
     }
     return p;
 }
 
-void ViewDepthPass::draw(const GpuScene& scene, const glm::mat4& clipFromWorld) {
+void ViewDepthPass::draw(const GpuScene& scene) {
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
     const float one = 1.0f;
     glClearNamedFramebufferfv(mTarget.id(), GL_DEPTH, 0, &one);
@@ -42,7 +44,8 @@ void ViewDepthPass::draw(const GpuScene& scene, const glm::mat4& clipFromWorld) 
         [](const DrawItem& item) { return !item.doubleSided; },
         [&](bool alpha) {
             glUseProgram(program(alpha).id());
-            glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
+            glUniformMatrix4fv(1, 1, GL_FALSE, &mViewFromWorld[0][0]);
+            glUniformMatrix4fv(2, 1, GL_FALSE, &mClipFromView[0][0]);
         });
 }
 
@@ -84,15 +87,14 @@ const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Ca
                                                  int width, int height) {
     const float aspect = float(width) / float(height);
     const shadow::SampleGrid grid = shadow::sampleGrid(width, height, kGridLimit);
-    const glm::mat4 clipFromWorld =
-        shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
     const bool sameGrid = grid.size == mGrid.size && grid.block == mGrid.block;
-    if (mValid && sameGrid && mRevision == scene.revision() && mClipFromWorld == clipFromWorld) {
-        return mSamples;
-    }
+    if (sameGrid && holds(scene, camera, width, height)) return mSamples;
     if (!sameGrid || !mTarget) allocate(grid);
     mGrid = grid;
-    draw(scene, clipFromWorld);
+    // The main pass's own matrices (Renderer), so its depths and these are the same.
+    mViewFromWorld = shadow::viewFromWorld(camera);
+    mClipFromView = shadow::clipFromView(camera, aspect);
+    draw(scene);
     reduce();
     mRead.resize(std::size_t(grid.cells.x) * std::size_t(grid.cells.y));
     glGetTextureImage(mRanges.id(), 0, GL_RG, GL_FLOAT, GLsizei(mRead.size() * sizeof(glm::vec2)),
@@ -100,8 +102,14 @@ const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Ca
     shadow::viewSamples(mRead, grid, camera, aspect, mSamples);
     mValid = true;
     mRevision = scene.revision();
-    mClipFromWorld = clipFromWorld;
     return mSamples;
+}
+
+bool ViewDepthPass::holds(const GpuScene& scene, const Camera& camera, int width,
+                          int height) const {
+    return mValid && mRevision == scene.revision() && mGrid.size == glm::ivec2(width, height) &&
+           mViewFromWorld == shadow::viewFromWorld(camera) &&
+           mClipFromView == shadow::clipFromView(camera, float(width) / float(height));
 }
 
 }  // namespace gnomon::render

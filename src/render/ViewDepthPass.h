@@ -2,6 +2,8 @@
 // the view really sees (sample distribution shadow maps, Lauritzen, Salvi and Lefohn, I3D
 // 2011). Depth only, at the output's size: opaque and alpha-masked items as the main pass
 // draws them (same culling, masked texels cut); blended ones hide nothing and are skipped.
+// Its vertices are placed by the main pass's own expressions (shaders/view_clip.glsl), so
+// the main pass can start from this depth and shade each pixel once.
 // A second pass reduces it to a grid of at most kGridLimit cells a side, each the nearest
 // and farthest depth of its block of pixels (nothing between two samples is lost: a grazing
 // floor's farthest pixel before the horizon is its block's farthest depth). The grid is
@@ -30,15 +32,19 @@ public:
                                       int height);
     // Drop the kept samples: the next sample() draws.
     void invalidate() { mValid = false; }
-    // The view's depth at the output's size, as the last sample() drew it (contact shadows).
+    // Is the depth drawn for `camera`'s view of `scene` at width x height, as it is now?
+    bool holds(const GpuScene& scene, const Camera& camera, int width, int height) const;
+    // The view's depth at the output's size, as the last sample() drew it (contact shadows),
+    // and the framebuffer it is attached to (the main pass copies it to start from).
     const gl::Texture& depth() const { return mDepth; }
+    const gl::Framebuffer& target() const { return mTarget; }
     // The reduced depth the last sample() read back: per cell, nearest and farthest.
     shadow::DepthCells cells() const { return {&mRead, mGrid}; }
 
 private:
     const gl::Program& program(bool alphaTested);
     void allocate(const shadow::SampleGrid& grid);
-    void draw(const GpuScene& scene, const glm::mat4& clipFromWorld);
+    void draw(const GpuScene& scene);
     void reduce();
 
     gl::Program mPrograms[2], mReduce;
@@ -53,7 +59,7 @@ private:
     // What mSamples were taken from.
     bool mValid = false;
     std::uint64_t mRevision = 0;
-    glm::mat4 mClipFromWorld{0.0f};
+    glm::mat4 mViewFromWorld{0.0f}, mClipFromView{0.0f};
     shadow::SampleGrid mGrid{{0, 0}, 0, {0, 0}};
 };
 

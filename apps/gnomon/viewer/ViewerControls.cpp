@@ -305,7 +305,8 @@ void Viewer::filterControls() {
         options({"cascades", "fit-to", "stabilise", "cascade-lambda", "cascade-blend"});
     }
     if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"shadowed", "shadow-factor", "output-encoding", "dither", "light-tiles"});
+        options({"shadowed", "shadow-factor", "output-encoding", "dither", "light-tiles",
+                 "depth-prepass"});
         changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
         tooltip("the scene's ambient light colour, times each material's colour");
         ImGui::TextDisabled("shininess: per material, from the scene");
