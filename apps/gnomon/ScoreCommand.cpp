@@ -29,6 +29,11 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
                     "rays per pixel to the light's surface for the soft reference (filter pcss), "
                     "1..4096 (default " +
                         std::to_string(args.options.softSamples) + ")");
+    cmd->add_option("--contact-range", args.options.contactRange,
+                    "also score the leak at contacts: over the pixels whose occluder lies "
+                    "within this distance along the shadow ray, world units (default: "
+                    "--contact-length when contact shadows are on, else not scored)")
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--max-error", args.maxError,
                     "exit 3 when the overall misclassified fraction exceeds this, 0..1 "
                     "(default: never)");
@@ -174,6 +179,12 @@ int runScore(const ScoreArgs& args, bool verbose) {
             "where both pass light: %.2f/255 over %ld)\n",
             255.0 * r.tint.meanError, r.tint.cells, 255.0 * r.tint.meanErrorOutsideBand,
             r.tint.cellsOutsideBand, 255.0 * r.tint.meanColourError, r.tint.cellsBothLit);
+    }
+    if (r.contactRange > 0.0f) {
+        std::printf(
+            "at contacts (occluder within %g): %ld pixel x light pairs in shadow, %.3f%% of "
+            "them rendered lit\n",
+            double(r.contactRange), r.overall.contactPixels, 100.0 * r.overall.contactLeak);
     }
     if (r.otherSurfacePixels > 0) {
         std::printf(

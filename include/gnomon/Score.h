@@ -21,6 +21,10 @@ struct ScoreOptions {
     int softSamples = 64;     // rays to each light's surface per pixel for the soft reference
     float bandTexels = 2.0f;  // aliasing band: map texels either side of a reference boundary
     int threads = 0;          // ray-tracing threads, 0 = every core
+    // Contacts, in world units: the leak is also scored over the pixels whose occluder lies
+    // within this distance along the shadow ray (ShadowScore::contactLeak). 0: the options'
+    // contact-length when contact shadows are on, else not scored.
+    float contactRange = 0.0f;
 };
 
 // Fractions are of the pixels where a light's shadow can show (`pixels`): the light reaches
@@ -36,6 +40,10 @@ struct ShadowScore {
     double falseShadowOutsideBand = 0.0;  // the same, away from shadow boundaries
     double leakOutsideBand = 0.0;
     double meanAbsError = 0.0;  // mean |rendered visibility - reference visibility|
+    // With ScoreOptions::contactRange: the pixels the reference shadows by an occluder within
+    // that distance (contacts), and the share of them rendered lit (the leak at contacts).
+    long contactPixels = 0;
+    double contactLeak = 0.0;
 };
 
 // --blend-shadows coloured: the light the renderer lets through (visibility x transmittance,
@@ -62,6 +70,7 @@ struct ScoreResult {
     // another one, or none (a thin part seen edge-on that rasterisation misses, an alpha
     // mask read at another mip level). Their shadows are not the same surface's.
     long otherSurfacePixels = 0;
+    float contactRange = 0.0f;  // the distance ShadowScore::contactLeak used (0: not scored)
     double traceSeconds = 0.0;  // ray tracing wall time
     Image render;               // the frame scored
     Image errors;               // the error map (see truth/Metrics.h)

@@ -2,6 +2,7 @@
 #include "gnomon/Score.h"
 
 #include <chrono>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 
@@ -22,10 +23,19 @@ void checkScoreOptions(const RenderOptions& options, const ScoreOptions& scoreOp
         throw Error(ErrorKind::InvalidInput, "band must be in [0, 64] texels, got " +
                                                  std::to_string(scoreOptions.bandTexels));
     }
+    if (!(scoreOptions.contactRange >= 0.0f && std::isfinite(scoreOptions.contactRange))) {
+        throw Error(ErrorKind::InvalidInput, "contact-range must be a distance >= 0, got " +
+                                                 std::to_string(scoreOptions.contactRange));
+    }
     if (options.debugView != DebugView::None) {
         throw Error(ErrorKind::InvalidInput,
                     "score needs the scene as rendered: use --debug-view none");
     }
+}
+// The contacts' distance: the one asked for, else the contact shadows' march length.
+float contactRange(const RenderOptions& options, const ScoreOptions& scoreOptions) {
+    if (scoreOptions.contactRange > 0.0f) return scoreOptions.contactRange;
+    return options.shadow.enabled ? options.shadow.contactLength : 0.0f;
 }
 }  // namespace
 
@@ -46,6 +56,7 @@ truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
     truth::ReferenceOptions ro;
     ro.softSamples = options.shadow.filter == ShadowFilter::Pcss ? scoreOptions.softSamples : 0;
     ro.threads = scoreOptions.threads;
+    ro.contactRange = contactRange(options, scoreOptions);
     if (progress) {
         progress->rowsDone = 0;
         progress->rows = options.height;
@@ -72,6 +83,8 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
     ScoreResult result;
     result.render = std::move(frame.render);
     result.softReference = options.shadow.filter == ShadowFilter::Pcss;
+    result.contactRange =
+        reference.nearOccluder.empty() ? 0.0f : contactRange(options, scoreOptions);
     // One aliasing band for the numbers and the map, around the reference's own edges;
     // then only the pixels where the render drew the surface the reference sees are scored.
     const ShadowVisibility& visibility = frame.visibility;
@@ -114,17 +127,22 @@ ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& o
 }
 
 namespace {
-nlohmann::json toJson(const ShadowScore& s) {
-    return {{"light", s.light},
-            {"type", s.type},
-            {"pixels", s.pixels},
-            {"band_pixels", s.bandPixels},
-            {"misclassified", s.misclassified},
-            {"false_shadow", s.falseShadow},
-            {"leak", s.leak},
-            {"false_shadow_outside_band", s.falseShadowOutsideBand},
-            {"leak_outside_band", s.leakOutsideBand},
-            {"mean_abs_error", s.meanAbsError}};
+nlohmann::json toJson(const ShadowScore& s, bool contacts) {
+    nlohmann::json j = {{"light", s.light},
+                        {"type", s.type},
+                        {"pixels", s.pixels},
+                        {"band_pixels", s.bandPixels},
+                        {"misclassified", s.misclassified},
+                        {"false_shadow", s.falseShadow},
+                        {"leak", s.leak},
+                        {"false_shadow_outside_band", s.falseShadowOutsideBand},
+                        {"leak_outside_band", s.leakOutsideBand},
+                        {"mean_abs_error", s.meanAbsError}};
+    if (contacts) {
+        j["contact_pixels"] = s.contactPixels;
+        j["contact_leak"] = s.contactLeak;
+    }
+    return j;
 }
 }  // namespace
 
@@ -138,10 +156,12 @@ std::string toJson(const ScoreResult& r, const std::string& scene, const RenderO
     j["soft_reference"] = r.softReference;
     j["other_surface_pixels"] = r.otherSurfacePixels;
     j["trace_seconds"] = r.traceSeconds;
-    j["overall"] = toJson(r.overall);
+    const bool contacts = r.contactRange > 0.0f;
+    if (contacts) j["contact_range"] = r.contactRange;
+    j["overall"] = toJson(r.overall, contacts);
     j["lights"] = nlohmann::json::array();
     for (const ShadowScore& s : r.lights)
-        j["lights"].push_back(toJson(s));
+        j["lights"].push_back(toJson(s, contacts));
     if (o.shadow.blendShadows == BlendShadows::Coloured) {
         j["tint"] = {{"cells", r.tint.cells},
                      {"cells_outside_band", r.tint.cellsOutsideBand},

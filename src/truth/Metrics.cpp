@@ -153,8 +153,10 @@ Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector
                        const std::vector<std::uint8_t>& band, bool soft) {
     struct Counts {
         long pixels = 0, band = 0, falseShadow = 0, leak = 0, falseOut = 0, leakOut = 0;
+        long contact = 0, contactLeak = 0;
         double absError = 0.0;
     };
+    const bool contacts = !r.nearOccluder.empty();
     std::vector<Counts> perLight(std::size_t(r.lights));
     const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
     for (std::size_t p = 0; p < pixels; ++p) {
@@ -174,6 +176,10 @@ Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector
                 k.leakOut += !band[c];
             }
             k.absError += std::fabs(double(visibility[c]) - (soft ? r.soft[c] : r.hard[c]));
+            if (contacts && r.nearOccluder[c]) {
+                ++k.contact;
+                k.contactLeak += !shadowed;
+            }
         }
     }
     auto finish = [](const Counts& k, ShadowScore& s) {
@@ -186,6 +192,8 @@ Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector
         s.falseShadowOutsideBand = double(k.falseOut) / n;
         s.leakOutsideBand = double(k.leakOut) / n;
         s.meanAbsError = k.absError / n;
+        s.contactPixels = k.contact;
+        s.contactLeak = k.contact > 0 ? double(k.contactLeak) / double(k.contact) : 0.0;
     };
     Scores out;
     out.overall.type = "all";
@@ -205,6 +213,8 @@ Scores scoreVisibility(const Scene& scene, const Reference& r, const std::vector
         total.falseOut += k.falseOut;
         total.leakOut += k.leakOut;
         total.absError += k.absError;
+        total.contact += k.contact;
+        total.contactLeak += k.contactLeak;
     }
     finish(total, out.overall);
     return out;

@@ -164,7 +164,8 @@ void forEachRow(int height, const ReferenceOptions& o, const Row& row) {
 }
 
 // A reference with nothing hit yet: every cell lit.
-Reference emptyReference(int width, int height, int lights, int samples, bool coloured) {
+Reference emptyReference(int width, int height, int lights, int samples, bool coloured,
+                         bool contacts) {
     Reference ref;
     ref.width = width;
     ref.height = height;
@@ -178,6 +179,7 @@ Reference emptyReference(int width, int height, int lights, int samples, bool co
     ref.lightCosine.assign(cells, 1.0f);
     if (samples > 0) ref.soft.assign(cells, 1.0f);
     if (coloured) ref.tint.assign(cells, glm::vec3(1.0f));
+    if (contacts) ref.nearOccluder.assign(cells, 0);
     return ref;
 }
 
@@ -206,9 +208,10 @@ struct LightTracer {
     Reference& ref;
     RTCScene casters;
     BlendShadows blend;
-    int samples;     // soft-shadow rays per light (0: hard shadows only)
-    float tanAngle;  // directional lights' angular radius, as a tangent
-    float radius;    // other lights' emitter radius
+    int samples;         // soft-shadow rays per light (0: hard shadows only)
+    float contactRange;  // > 0: mark occluders this near (Reference::nearOccluder)
+    float tanAngle;      // directional lights' angular radius, as a tangent
+    float radius;        // other lights' emitter radius
     const std::vector<bool>& on;
 
     // `point` seen at `pixel` (normal n, facing the camera), rays leaving from `origin`;
@@ -257,6 +260,10 @@ struct LightTracer {
             ref.lightCosine[cell] = mat.unlit ? 1.0f : glm::dot(n, toLight);
             ref.hard[cell] = transmitted(casters, blend, origin, toLight, distance,
                                          ref.tint.empty() ? nullptr : &ref.tint[cell]);
+            if (contactRange > 0.0f && ref.hard[cell] < 0.5f) {
+                ref.nearOccluder[cell] = transmitted(casters, blend, origin, toLight,
+                                                     std::min(distance, contactRange)) < 0.5f;
+            }
             if (samples == 0) continue;
             float visible = 0.0f;
             glm::vec3 u, v;
@@ -311,8 +318,9 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     const EmbreeScene casters(buildScene(device.get(), scene, world, alpha, true));
 
     const int samples = std::max(referenceOptions.softSamples, 0);
+    const float contactRange = std::max(referenceOptions.contactRange, 0.0f);
     Reference ref = emptyReference(options.width, options.height, int(scene.lights.size()), samples,
-                                   blend == BlendShadows::Coloured);
+                                   blend == BlendShadows::Coloured, contactRange > 0.0f);
 
     const float aspect = float(options.width) / float(options.height);
     const glm::mat4 viewFromWorld = shadow::viewFromWorld(scene.camera);
@@ -335,7 +343,8 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             options.shadow.enabled && scene.lights[i].castsShadows && lightIsOn(scene, options, i);
     }
 
-    const LightTracer lightTracer{scene, ref, casters.get(), blend, samples, tanAngle, radius, on};
+    const LightTracer lightTracer{scene,        ref,      casters.get(), blend, samples,
+                                  contactRange, tanAngle, radius,        on};
     auto tracePixel = [&](int x, int y) {
         const float nx = (float(x) + 0.5f) / float(options.width) * 2.0f - 1.0f;
         const float ny = 1.0f - (float(y) + 0.5f) / float(options.height) * 2.0f;

@@ -19,7 +19,10 @@ namespace gnomon::truth {
 
 struct ReferenceOptions {
     int softSamples = 0;  // rays per pixel and light for the soft reference; 0: hard only
-    int threads = 0;      // 0: every core
+    // > 0: also mark the shadowed cells whose occluder lies within this distance of the
+    // surface along the shadow ray (Reference::nearOccluder): the contacts.
+    float contactRange = 0.0f;
+    int threads = 0;                            // 0: every core
     std::atomic<int>* rowsDone = nullptr;       // if set: counts rows traced (progress)
     const std::atomic<bool>* cancel = nullptr;  // if set and true: stop early, throw Error
 };
@@ -45,6 +48,9 @@ struct Reference {
     // surface faces away from the light (its attached shadow, where applies is 0).
     std::vector<float> lightCosine;
     std::vector<float> soft;  // fraction of the light's surface visible (softSamples > 0)
+    // ReferenceOptions::contactRange > 0 only (else empty): 1 where the hard ray is occluded
+    // within that distance of the surface (a contact shadow's reach), 0 elsewhere.
+    std::vector<std::uint8_t> nearOccluder;
 
     std::size_t at(int x, int y, int light) const {
         return (std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(lights) +

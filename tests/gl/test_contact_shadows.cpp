@@ -20,12 +20,19 @@ TEST(ContactShadows, HalveTheLeakAtDetachedContacts) {
     const Scene s = builtinScene("tutorial-room-thin");
     RenderOptions off = detached(s), on = detached(s);
     on.shadow.contactLength = 1.0f;
-    const ScoreResult without = score(sharedRenderer(), s, off);
-    const ScoreResult with = score(sharedRenderer(), s, on);
+    ScoreOptions contacts;
+    contacts.contactRange = 1.0f;  // the leak over the pixels shadowed within the march, too
+    const ScoreResult without = score(sharedRenderer(), s, off, contacts);
+    const ScoreResult with = score(sharedRenderer(), s, on, contacts);
     ASSERT_GT(without.overall.leak, 0.0005) << "the tolerance no longer detaches the shadows";
     EXPECT_LT(with.overall.leak, 0.5 * without.overall.leak)
         << "leak " << with.overall.leak << " with contact shadows, " << without.overall.leak
         << " without";
+    ASSERT_GT(without.overall.contactPixels, 100);
+    EXPECT_EQ(with.overall.contactPixels, without.overall.contactPixels);
+    EXPECT_LT(with.overall.contactLeak, 0.5 * without.overall.contactLeak)
+        << "leak at contacts " << with.overall.contactLeak << " with contact shadows, "
+        << without.overall.contactLeak << " without";
     EXPECT_LT(with.overall.falseShadow, without.overall.falseShadow + 0.0002)
         << "false shadow " << with.overall.falseShadow << " with, " << without.overall.falseShadow
         << " without";

@@ -77,6 +77,38 @@ TEST(Truth, HardShadowIsTheAnalyticOutline) {
     EXPECT_FLOAT_EQ(r.pixelWorld[0], 0.125f);
 }
 
+// With a contact range, the shadowed cells whose occluder lies within it along the shadow ray
+// are marked, and the score counts the leak over them alone. The plate is 1.99 x sqrt(2) =
+// 2.81 from the floor along the sun's 45-degree rays.
+TEST(Truth, OccludersWithinTheContactRangeAreMarked) {
+    const Scene s = plateOverFloor();
+    EXPECT_TRUE(truth::traceReference(s, s.options, {}).nearOccluder.empty());
+    truth::ReferenceOptions within;
+    within.contactRange = 3.0f;
+    const truth::Reference r = truth::traceReference(s, s.options, within);
+    ASSERT_EQ(r.nearOccluder.size(), r.hard.size());
+    long near = 0;
+    for (std::size_t c = 0; c < r.hard.size(); ++c) {
+        ASSERT_EQ(r.nearOccluder[c] != 0, r.applies[c] && r.hard[c] < 0.5f) << c;
+        near += r.nearOccluder[c];
+    }
+    EXPECT_GT(near, 200);
+    truth::ReferenceOptions short_;
+    short_.contactRange = 2.5f;
+    const truth::Reference farther = truth::traceReference(s, s.options, short_);
+    for (std::uint8_t n : farther.nearOccluder)
+        ASSERT_EQ(n, 0);
+
+    std::vector<float> visibility = r.hard;
+    auto column = [](float wx) { return int((wx + 4.0f) / 8.0f * kSize); };
+    visibility[r.at(column(1.0f), 32, 0)] = 1.0f;  // two leaks in the plate's shadow
+    visibility[r.at(column(1.0f), 33, 0)] = 1.0f;
+    const std::vector<std::uint8_t> band(r.hard.size(), 0);
+    const truth::Scores scores = truth::scoreVisibility(s, r, visibility, band, false);
+    EXPECT_EQ(scores.overall.contactPixels, near);
+    EXPECT_DOUBLE_EQ(scores.overall.contactLeak, 2.0 / double(near));
+}
+
 // Where the light reaches a surface, the reference keeps the cosine between its geometric
 // normal and the light; a surface facing away from the light (its attached shadow, where no
 // light applies) is marked with cosine 0, which the aliasing band reads as the terminator.

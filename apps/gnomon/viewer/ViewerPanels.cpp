@@ -290,6 +290,13 @@ void Viewer::scorePanel() {
             "pixels they tint (gnomon score writes tint-errors.png); its colour: where both "
             "let light past the opaque casters");
     }
+    if (mScore->contactRange > 0.0f) {
+        ImGui::TextWrapped("at contacts: %.2f%% of %ld shadowed pixels lit", 100.0 * o.contactLeak,
+                           o.contactPixels);
+        tooltip(
+            "the leak over the pixels whose occluder lies within the contact shadows' march "
+            "(gnomon score --contact-range)");
+    }
     if (mScore->otherSurfacePixels > 0) {
         ImGui::TextWrapped("not scored: %ld pixels", mScore->otherSurfacePixels);
         tooltip(
