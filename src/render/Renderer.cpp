@@ -109,8 +109,8 @@ struct Renderer::Impl {
         target.checkComplete();
     }
 
-    // The frame's target bound and cleared (black, far), the viewport on it. `viewDepth`:
-    // the depth is the view depth pass's instead of far (MainPassInputs::depthReady).
+    // The frame's target bound and cleared (black, far), the viewport on it. With
+    // `withViewDepth`, the depth is the view depth pass's instead (MainPassInputs::depthReady).
     void bindClearedTarget(int width, int height, bool withViewDepth = false) {
         glBindFramebuffer(GL_FRAMEBUFFER, target.id());
         glViewport(0, 0, width, height);

@@ -23,11 +23,11 @@ const gl::Program& ViewDepthPass::program(bool alphaTested) {
 void ViewDepthPass::draw(const GpuScene& scene) {
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
     const float one = 1.0f;
+    glDepthMask(GL_TRUE);  // the clear obeys it
     glClearNamedFramebufferfv(mTarget.id(), GL_DEPTH, 0, &one);
     glViewport(0, 0, mGrid.size.x, mGrid.size.y);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
     glCullFace(GL_BACK);
