@@ -103,7 +103,11 @@ def main():
     lines += [
         "",
         "Percentages are of the pixels where a light's shadow can show (the light reaches a",
-        "receiving surface that faces it), summed over lights:",
+        "receiving surface that faces it, by more than 0.01 degrees: a surface edge-on to the light",
+        "gets none of it, and the rounding of its vertices would decide which side it is on) and the",
+        "render drew that same surface (where rasterisation drew another one or none, the visibility",
+        "read is not that surface's: `gnomon score` leaves such pixels out and counts them), summed",
+        "over lights:",
         "- **misclassified**: false shadow plus leak;",
         "- **false shadow**: the reference is lit and gnomon drew shadow (acne, over-wide",
         "  filters);",
