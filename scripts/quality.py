@@ -103,8 +103,9 @@ def main():
     lines += [
         "",
         "Percentages are of the pixels where a light's shadow can show (the light reaches a",
-        "receiving surface that faces it, by more than 0.01 degrees: a surface edge-on to the light",
-        "gets none of it, and the rounding of its vertices would decide which side it is on) and the",
+        "receiving surface that faces it, by more than 0.06 degrees: a surface edge-on to the light",
+        "gets under 0.1 % of it, which no picture shows, and the rounding of its vertices would",
+        "decide which side it is on) and the",
         "render drew that same surface (where rasterisation drew another one or none, the visibility",
         "read is not that surface's: `gnomon score` leaves such pixels out and counts them), summed",
         "over lights:",

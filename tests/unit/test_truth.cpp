@@ -126,20 +126,24 @@ TEST(Truth, SurfacesFacingAwayFromTheLightAreMarked) {
     }
 }
 
-// A light that only grazes a surface (under 0.01 degrees) leaves it edge-on, in its own
-// attached shadow, whichever side the rounding of the light's direction puts it on (cos 90
-// degrees is -4.4e-8 in float): here 1e-7 above the floor's plane. A light 0.1 degrees
-// above it does light the floor.
+// A light that only grazes a surface (under 0.06 degrees, where the lookups call a plane
+// edge-on) leaves it edge-on, in its own attached shadow, whichever side the rounding of the
+// light's direction puts it on (cos 90 degrees is -4.4e-8 in float): here 1e-7 above the
+// floor's plane, and 0.05 degrees above it. A light 0.1 degrees above it does light the
+// floor.
 TEST(Truth, SurfacesEdgeOnToTheLightAreMarked) {
     Scene s = plateOverFloor();
-    s.lights[0].direction = -glm::vec3(1.0f, 1e-7f, 0.0f);
-    const truth::Reference grazed = truth::traceReference(s, s.options, {});
-    const std::size_t floorPixel = grazed.at(kSize - 2, kSize / 2, 0);
-    EXPECT_FALSE(grazed.applies[floorPixel]);
-    EXPECT_EQ(grazed.lightCosine[floorPixel], 0.0f);
+    for (const float grazing : {1e-7f, std::sin(glm::radians(0.05f))}) {
+        s.lights[0].direction = -glm::vec3(std::sqrt(1.0f - grazing * grazing), grazing, 0.0f);
+        const truth::Reference grazed = truth::traceReference(s, s.options, {});
+        const std::size_t pixel = grazed.at(kSize - 2, kSize / 2, 0);
+        EXPECT_FALSE(grazed.applies[pixel]) << grazing;
+        EXPECT_EQ(grazed.lightCosine[pixel], 0.0f) << grazing;
+    }
     const float tenth = glm::radians(0.1f);
     s.lights[0].direction = -glm::vec3(std::cos(tenth), std::sin(tenth), 0.0f);
     const truth::Reference low = truth::traceReference(s, s.options, {});
+    const std::size_t floorPixel = low.at(kSize - 2, kSize / 2, 0);
     EXPECT_TRUE(low.applies[floorPixel]);
     EXPECT_NEAR(low.lightCosine[floorPixel], std::sin(tenth), 1e-6f);
 }
