@@ -20,16 +20,16 @@ namespace gnomon::truth {
 namespace {
 
 // A surface the light meets at under 0.06 degrees counts as edge-on: in its own attached
-// shadow, as one facing away is. It gets under 0.1 % of the light (under half an 8-bit step
-// at full intensity), so no picture shows which it is; the light's map holds it in no texel
-// of its own, and which side of it the light lies on is decided by the rounding of its
-// vertices and of the light's direction (a wall under a sun whose azimuth is a multiple of
-// 90 degrees: cos 90 degrees is 4e-8 in float). The same angle where the lookups call a
-// plane edge-on (shaders/receiver_plane.glsl) and move off it: counted as lit or shadowed,
-// such faces were scored on what a picture cannot show (tutorial-room under a sun at
-// 180,30: 7 % false shadow with no cut; a face of the Fox's neck 0.05 degrees from edge-on,
-// shadowed by the neck beside it, 2.9 % of a view's leak away from edges with a cut at
-// 0.01 degrees).
+// shadow, as one facing away is. A flat face there gets under 0.1 % of the light (under half
+// an 8-bit step at full intensity), so no picture shows which it is; the light's map holds
+// it in no texel of its own, and which side of it the light lies on is decided by the
+// rounding of its vertices and of the light's direction (a wall under a sun whose azimuth is
+// a multiple of 90 degrees: cos 90 degrees is 4e-8 in float). The same angle where the
+// lookups call a plane edge-on (shaders/receiver_plane.glsl) and move off it: counted as lit
+// or shadowed, such faces were scored on what a picture cannot show (tutorial-room under a
+// sun at 180,30: 7 % false shadow with no cut; a face of the Fox's neck 0.05 degrees from
+// edge-on, shadowed by the neck beside it, 2.9 % of a view's leak away from edges with a
+// cut at 0.01 degrees).
 constexpr float kEdgeOnCosine = 1e-3f;  // sin 0.057 degrees
 
 struct DeviceDeleter {
