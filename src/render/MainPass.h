@@ -54,7 +54,8 @@ struct MainPassInputs {
     // Coloured shadows' transmittance maps, when a blended caster tints a shadowed light.
     const TransmittancePass* transmittance = nullptr;
     // The target's depth holds the view's opaque depth already (ViewDepthPass, copied): the
-    // pass tests for equal depth and writes none, so each pixel is shaded once.
+    // pass tests LEQUAL, which only the surface kept there passes (nothing lies nearer), and
+    // writes none, so each pixel is shaded once.
     bool depthReady = false;
 };
 
