@@ -72,7 +72,7 @@ Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& sta
         {"receiver-plane", {"on", "off"}},
         {"normal-offset", {"0", "0.5", "1", "2"}},
         {"bias-depth-aware", {"0.5", "1", "2", "4"}},
-        {"bias-slope", {"0", "1.5", "3"}},
+        {"bias-slope", {"0", "0.7", "1.5", "3"}},
         {"bias-constant", {"0", "0.00005", "0.0002"}},
     };
     if (result.sizedLights.empty()) space.insert(space.begin() + 2, {"map-size", kMapSizes});
