@@ -107,7 +107,7 @@ struct ShadowOptions {
     // on 90 of the broad check's 240 views. 0 lets smooth meshes shadow themselves near
     // their terminators (suzanne-grazing 0.14 % of the view away from edges).
     float biasSlope = 0.7f;
-    float biasUnits = 2.0f;       // glPolygonOffset units in the depth pass, >= 0
+    float biasUnits = 2.0f;  // glPolygonOffset units in the depth pass, >= 0
     // Receiver-plane depth: each tap compares against the depth the receiver's own plane
     // has at the texel it reads (Isidoro 2006; Dou et al. 2014), instead of one depth for
     // every tap. Off: one reference depth per lookup (the textbooks').
