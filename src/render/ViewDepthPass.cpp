@@ -87,9 +87,9 @@ const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Ca
                                                  int width, int height) {
     const float aspect = float(width) / float(height);
     const shadow::SampleGrid grid = shadow::sampleGrid(width, height, kGridLimit);
-    const bool sameGrid = grid.size == mGrid.size && grid.block == mGrid.block;
-    if (sameGrid && holds(scene, camera, width, height)) return mSamples;
-    if (!sameGrid || !mTarget) allocate(grid);
+    // The grid follows from the size alone, which holds() compares.
+    if (holds(scene, camera, width, height)) return mSamples;
+    if (grid.size != mGrid.size || !mTarget) allocate(grid);
     mGrid = grid;
     // The main pass's own matrices (Renderer), so its depths and these are the same.
     mViewFromWorld = shadow::viewFromWorld(camera);
