@@ -2,6 +2,7 @@
 // every command shares.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 
@@ -81,8 +82,11 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
         c.centre = *v;
     }
     if (given("--camera-fov")) {
-        if (!(cameraFov >= 1.0f && cameraFov <= 179.0f))
-            bad("--camera-fov", "must be in 1..179 degrees, got " + std::to_string(cameraFov));
+        if (!(cameraFov >= 1.0f && cameraFov <= 179.0f)) {
+            char given[32];  // as typed, not std::to_string's six decimals
+            std::snprintf(given, sizeof given, "%g", double(cameraFov));
+            bad("--camera-fov", std::string("must be in 1..179 degrees, got ") + given);
+        }
         c.fovyDegrees = cameraFov;
     }
     if (given("--camera-eye") || given("--camera-target")) {
@@ -102,6 +106,9 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
         l.direction =
             -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
         scene.lights = {l};
+        // The model's added sun is gone with the rest: its warning would only mislead.
+        std::erase_if(scene.warnings,
+                      [](const std::string& w) { return w.ends_with(kDefaultSunWarning); });
     }
     // No revision bump: the camera and the lights are read every frame.
 }

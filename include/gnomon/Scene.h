@@ -208,6 +208,10 @@ struct Scene {
     std::vector<std::string> validateLightsAndCamera() const;
 };
 
+// The warning a model loader gives when it adds a sun to a model without lights; a caller
+// that replaces the lights (`--sun`, a scene file's own) drops it with them.
+inline constexpr const char* kDefaultSunWarning = "no lights: a default sun was added";
+
 struct SceneInfo {
     std::string name;
     std::string description;

@@ -59,7 +59,7 @@ void addDefaultSun(Scene& scene) {
     sun.direction = defaultSunDirection(scene.camera);
     sun.intensity = 1.0f;
     scene.lights.push_back(sun);
-    scene.warnings.push_back("no lights: a default sun was added");
+    scene.warnings.push_back(kDefaultSunWarning);
 }
 
 // A key light over the camera's right shoulder, as a photographer places one: from behind

@@ -171,7 +171,6 @@ void placeCamera(Camera& c, const glm::mat4& t) {
 }
 
 // The warnings model loaders give when they add what the including file replaces.
-const char* const kDefaultSunWarning = "no lights: a default sun was added";
 const char* const kFramedCameraWarning = "no camera: one framing the scene was added";
 
 // What the includes bring that the file may replace: lights, camera, options and ambient (the

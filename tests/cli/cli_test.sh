@@ -161,6 +161,9 @@ assimp)
     skip_without_gl
     expect 0 "warning: no lights: a default sun was added"
     [[ -s "$work/o.png" ]] || fail "no o.png"
+    run render --scene "$models/two_parts.obj" --size 64x64 --out "$work/o.png" --sun 30,60
+    expect 0 ""
+    grep -q "default sun" "$work/stderr" && fail "--sun replaced the added sun, yet its warning stayed"
     run render --scene "$models/textured.obj" --size 64x64 --out "$work/t.png"
     expect 0 "no camera"
     [[ -s "$work/t.png" ]] || fail "no t.png"
@@ -293,7 +296,8 @@ scene_flags)
     run render --scene tutorial-room --out "$work/d.png" --camera-eye 1,2
     expect 2 "--camera-eye: expected X,Y,Z"
     run render --scene tutorial-room --out "$work/d.png" --camera-fov 0
-    expect 2 "--camera-fov: must be in 1..179 degrees"
+    expect 2 "--camera-fov: must be in 1..179 degrees, got 0"
+    grep -q "got 0\.0" "$work/stderr" && fail "--camera-fov: the number is not shown as given"
     run render --scene tutorial-room --out "$work/d.png" --sun 10,-5
     expect 2 "--sun: expected AZIMUTH,ELEVATION"
     [[ ! -e "$work/d.png" ]] || fail "a refused render left d.png"
