@@ -16,7 +16,9 @@ Views per model, each with and without `--ground`:
   transforms, so they are the file's, not gnomon's;
 - random (with --random N): N more views per model, each a camera 1.2 to 3 radii out at a
   random bearing and height (5 degrees below the centre to 60 above), aimed within 0.3 radii
-  of the centre, under a random sun (6 to 85 degrees high); --seed picks another set.
+  of the centre, under one random light of the kinds --lights names, in turn: a sun (6 to
+  85 degrees high), a point light or a spot (20 to 45 degree cone, aimed within 0.3 radii of
+  the centre), both 1.2 to 2.5 radii out and 15 to 75 degrees above; --seed picks another set.
 Scene files and score outputs go to a temporary folder; only --out writes a file.
 """
 import argparse
@@ -88,8 +90,11 @@ def bounds(path):
     return [(lo[k] + hi[k]) / 2 for k in range(3)], math.dist(lo, hi) / 2
 
 
-def random_views(model, name, count, rng):
-    """`count` random cameras around `model` under random suns, as gnomon flags."""
+def random_views(model, name, count, rng, kinds, work):
+    """`count` random cameras around `model`, each under one random light, as (label, scene,
+    flags). The lights take turns through `kinds`: a sun given by flags, or a point or spot
+    light placed 1.2 to 2.5 radii out, 15 to 75 degrees above the centre, written with the
+    model into a scene file."""
     c, r = bounds(model)
     for i in range(count):
         bearing, height = rng.uniform(0, 2 * math.pi), math.radians(rng.uniform(-5, 60))
@@ -97,10 +102,29 @@ def random_views(model, name, count, rng):
         eye = [c[0] + d * math.cos(height) * math.sin(bearing), c[1] + d * math.sin(height),
                c[2] + d * math.cos(height) * math.cos(bearing)]
         target = [c[k] + rng.uniform(-0.3, 0.3) * r for k in range(3)]
-        sun = f"{rng.uniform(0, 360):.1f},{rng.uniform(6, 85):.1f}"
         flags = ["--camera-eye", ",".join(f"{v:.5g}" for v in eye),
-                 "--camera-target", ",".join(f"{v:.5g}" for v in target), "--sun", sun]
-        yield f"{name} random {i} sun {sun}", model, flags
+                 "--camera-target", ",".join(f"{v:.5g}" for v in target)]
+        kind = kinds[i % len(kinds)]
+        if kind == "sun":
+            sun = f"{rng.uniform(0, 360):.1f},{rng.uniform(6, 85):.1f}"
+            yield f"{name} random {i} sun {sun}", model, flags + ["--sun", sun]
+            continue
+        bearing, height = rng.uniform(0, 2 * math.pi), math.radians(rng.uniform(15, 75))
+        d = rng.uniform(1.2, 2.5) * r
+        position = [c[0] + d * math.cos(height) * math.sin(bearing), c[1] + d * math.sin(height),
+                    c[2] + d * math.cos(height) * math.cos(bearing)]
+        light = {"type": kind, "position": [round(v, 5) for v in position]}
+        label = f"{name} random {i} {kind} at {','.join(f'{v:.3g}' for v in position)}"
+        if kind == "spot":
+            aim = [c[k] + rng.uniform(-0.3, 0.3) * r for k in range(3)]
+            outer = rng.uniform(20, 45)
+            light.update({"direction": [round(aim[k] - position[k], 5) for k in range(3)],
+                          "outer-cone": round(outer, 1), "inner-cone": round(0.8 * outer, 1)})
+            label += f" cone {outer:.0f}"
+        path = os.path.join(work, f"{name}-random-{i}.json")
+        with open(path, "w") as f:
+            json.dump({"gnomon-scene": 1, "include": [{"scene": model}], "lights": [light]}, f)
+        yield label, path, flags
 
 
 def views(model, kinds, work, random_count=0, rng=None):
@@ -110,7 +134,8 @@ def views(model, kinds, work, random_count=0, rng=None):
         for sun in SUNS:
             yield f"{name} sun {sun[1] if sun else 'default'}", model, sun
     if random_count:
-        yield from random_views(model, name, random_count, rng)
+        yield from random_views(model, name, random_count, rng,
+                                [k for k in ("sun", "point", "spot") if k in kinds], work)
     if not {"point", "spot"} & set(kinds):
         return
     c, r = bounds(model)
@@ -140,7 +165,7 @@ def main():
     parser.add_argument("--flags", default="",
                         help="gnomon score flags added to every view (a candidate default)")
     parser.add_argument("--random", type=int, default=0,
-                        help="also this many random cameras and suns per model")
+                        help="also this many random cameras and lights per model")
     parser.add_argument("--seed", type=int, default=1, help="which random views")
     args = parser.parse_args()
     rng = random.Random(args.seed)
