@@ -197,9 +197,18 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     toPoint += offset;
     a = abs(toPoint);
     major = max(a.x, max(a.y, a.z));
-    float ndc = (far + near) / (far - near) - 2.0 * far * near / ((far - near) * major);
-    float stored = 0.5 * ndc + 0.5;
-    float reference = stored - depthTolerance(light, uDepthAware.z);
+    float farTerm = (far + near) / (far - near), nearTerm = 2.0 * far * near / ((far - near) * major);
+    float stored = 0.5 * (farTerm - nearTerm) + 0.5;
+    // Float rounding the stored depth's step does not cover: stored depth is a difference of
+    // two terms, each rounded to 2^-24 of itself by the rasteriser and by this code in their
+    // own orders, and the point itself is rounded to 2^-24 of its world coordinates, a share
+    // of its distance from the light that grows as the light nears it. Either passes one
+    // step of a float map on receivers near the nearest caster's distance (a box's top face
+    // under a point light 0.1 to 0.3 units above it: up to 2 % of the view falsely shadowed
+    // with one step, the whole face inside the cube's downward face flipping at once).
+    float wsScale = length(wsPosition) + length(light.wsPosition.xyz);
+    float rounding = exp2(-24.0) * (farTerm + nearTerm * (2.0 + wsScale / major));
+    float reference = stored - depthTolerance(light, max(uDepthAware.z, rounding));
     float layer = light.colour.w;
 #if defined(COLOURED_SHADOWS)
     gTint = cubeTint(toPoint, layer, reference);
@@ -293,6 +302,22 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
 #undef CUBE_REFERENCE
 }
 
+// How far the rasteriser's stored depth and this code's reference for the same point may
+// disagree through float rounding alone, in stored depth: each computes z / w from the map's
+// matrix and the point's world coordinates, every product rounded to 2^-24 of itself, so the
+// bound is 2^-24 times the sum of the products' sizes over w, twice (both sides). It passes
+// one step of a float map where the terms outgrow what they leave (a spot or a cube face
+// looking straight at the nearest caster, its near plane just before it: a box's top under
+// a spot 0.2 above it, 14 % of the view falsely shadowed with one step), or where the world
+// coordinates outgrow the map's depth range (a small model far from the origin).
+float mapRounding(LightData light, vec3 p, float w, float z) {
+    mat4 m = light.textureFromWorld;
+    vec4 a = abs(vec4(p, 1.0));
+    float zTerms = dot(abs(vec4(m[0].z, m[1].z, m[2].z, m[3].z)), a);
+    float wTerms = dot(abs(vec4(m[0].w, m[1].w, m[2].w, m[3].w)), a);
+    return exp2(-23.0) * (zTerms + abs(z) * wTerms) / abs(w);
+}
+
 // One single-frustum map: orthographic or perspective, a light's own or one cascade's.
 float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
     float layer = light.colour.w;
@@ -321,7 +346,8 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
         return 1.0;
     }
 #endif
-    float reference = coord.z - depthTolerance(light, uDepthAware.y);
+    float rounding = mapRounding(light, wsPosition + offset, shadowCoord.w, coord.z);
+    float reference = coord.z - depthTolerance(light, max(uDepthAware.y, rounding));
     // The light's map covers [origin, origin + uvScale] of the layer; keep every tap inside.
     vec2 origin = light.wsPosition.xy;
     vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);

@@ -8,6 +8,7 @@
 
 #include "GlTest.h"
 #include "render/ScoreDetail.h"
+#include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
 namespace {
@@ -37,6 +38,55 @@ TEST(Score, DefaultsAreRightAwayFromEdges) {
         EXPECT_LT(r.overall.leakOutsideBand, 0.0005);
         EXPECT_LT(r.overall.misclassified, 0.01);
         EXPECT_EQ(r.errors.width, 256);
+    }
+}
+
+// A unit box on a ground, lit from just above its top face, seen from above and in front.
+Scene boxUnderLight(const Light& light) {
+    Scene s;
+    s.name = "box under a close light";
+    Material m;
+    m.baseColour = glm::vec3(0.8f, 0.2f, 0.2f);
+    s.materials.push_back(m);
+    s.meshes.push_back(mesh::box("box", glm::vec3(0.0f), glm::vec3(1.0f)));
+    s.objects.push_back({"box", 0, 0, glm::mat4(1.0f), {}, true, true});
+    addGround(s);
+    s.lights.push_back(light);
+    s.camera.eye = {0.43f, 1.07f, 2.05f};
+    s.camera.centre = {-0.19f, 0.12f, 0.23f};
+    s.camera.near = 0.05f;
+    s.camera.far = 20.0f;
+    return s;
+}
+
+// A float map's stored depth and the lookup's reference differ by rounding that can pass one
+// step of its spacing where the face a spot or a cube face looks straight at lies just beyond
+// the near plane (fitted to the nearest caster: that face). With one step the whole top face
+// inside the light's downward face read as shadowed (1 to 14 % of the view); the tolerance
+// now follows the rounding of the terms and coordinates the depths are made of.
+TEST(Score, FloatRoundingNearTheLightLeavesTheFaceUnderItLit) {
+    std::vector<Light> lights;
+    for (float height : {0.6f, 0.8f, 1.03f}) {
+        Light point;
+        point.type = LightType::Point;
+        point.position = {-0.39f, height, -0.37f};
+        lights.push_back(point);
+    }
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0.1f, 0.7f, 0.2f};
+    spot.direction = {0.0f, -1.0f, 0.0f};
+    spot.outerConeDegrees = 60.0f;
+    spot.innerConeDegrees = 50.0f;
+    lights.push_back(spot);
+    for (const Light& light : lights) {
+        SCOPED_TRACE(std::string(toString(light.type)) + " at height " +
+                     std::to_string(light.position.y));
+        const Scene s = boxUnderLight(light);
+        const ScoreResult r = score(sharedRenderer(), s, small(s));
+        ASSERT_GT(r.overall.pixels, 10000);
+        EXPECT_LT(r.overall.falseShadowOutsideBand, 0.0005);
+        EXPECT_LT(r.overall.misclassified, 0.005);
     }
 }
 
