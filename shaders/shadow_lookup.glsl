@@ -204,7 +204,7 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     // own orders, and the point itself is rounded to 2^-24 of its world coordinates, a share
     // of its distance from the light that grows as the light nears it. Either passes one
     // step of a float map on receivers near the nearest caster's distance (a box's top face
-    // under a point light 0.1 to 0.3 units above it: up to 2 % of the view falsely shadowed
+    // under a point light 0.1 to 0.5 units above it: up to 6 % of the view falsely shadowed
     // with one step, the whole face inside the cube's downward face flipping at once).
     float wsScale = length(wsPosition) + length(light.wsPosition.xyz);
     float rounding = exp2(-24.0) * (farTerm + nearTerm * (2.0 + wsScale / major));

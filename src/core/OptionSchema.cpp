@@ -159,7 +159,7 @@ void addTolerances(std::vector<OptionSpec>& s) {
     add({.name = "bias-depth-aware",
          .group = "Tolerances",
          .doc = "plus this many steps of the stored depth's spacing for the map's format (float "
-                "storage: one ulp of 0.5)",
+                "storage: one ulp of 0.5, or the lookup's own float rounding where larger)",
          .unit = "steps",
          .kind = K::Real,
          .max = 1000,

@@ -46,7 +46,8 @@ float storedDepthSpacing(DepthFormat format, float stored);
 float toleranceStep(DepthFormat format);
 
 // The tolerance of a lookup in stored-depth units: constant + depthAware x toleranceStep
-// (what shaders/shadow_lookup.glsl's depthTolerance computes).
+// (what shaders/shadow_lookup.glsl's depthTolerance computes where the lookup's own float
+// rounding, its mapRounding, is below that step).
 float depthAwareTolerance(DepthFormat format, float constant, float depthAware);
 
 // The course text's error graph: the view-space distance between adjacent stored depths at
