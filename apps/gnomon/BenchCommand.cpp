@@ -305,8 +305,7 @@ int runBench(const BenchArgs& args, bool verbose) {
                     "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
     }
     Scene base = loadWithProgress(args.scene);
-    args.flags.editScene(base);  // first: --sun drops the added sun's warning
-    printWarnings(base);
+    args.flags.editSceneAndWarn(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     const std::vector<std::string> values = sweepValues(args);
     OutputSet files(args.outDir, "--out-dir");

@@ -83,9 +83,9 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
     }
     if (given("--camera-fov")) {
         if (!(cameraFov >= 1.0f && cameraFov <= 179.0f)) {
-            char given[32];  // as typed, not std::to_string's six decimals
-            std::snprintf(given, sizeof given, "%g", double(cameraFov));
-            bad("--camera-fov", std::string("must be in 1..179 degrees, got ") + given);
+            char typed[32];  // as typed, not std::to_string's six decimals
+            std::snprintf(typed, sizeof typed, "%g", double(cameraFov));
+            bad("--camera-fov", std::string("must be in 1..179 degrees, got ") + typed);
         }
         c.fovyDegrees = cameraFov;
     }

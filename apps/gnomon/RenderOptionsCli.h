@@ -37,6 +37,12 @@ struct RenderFlags {
     // Scene edits the flags ask for (--ground, --camera-*, --sun); throws gnomon::Error for
     // bad values.
     void editScene(Scene& scene) const;
+    // editScene, then the scene's warnings on stderr: after the edits, since --sun drops the
+    // warning about the sun a loader added.
+    void editSceneAndWarn(Scene& scene) const {
+        editScene(scene);
+        printWarnings(scene);
+    }
     // The same without --ground (the viewer loads the ground with its scene).
     void placeCameraAndSun(Scene& scene) const;
     // Applies the given flags over `options`; throws gnomon::Error for bad values.

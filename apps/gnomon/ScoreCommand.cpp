@@ -144,8 +144,7 @@ int runScore(const ScoreArgs& args, bool verbose) {
                                                  std::to_string(args.maxError));
     }
     Scene scene = loadWithProgress(args.scene);
-    args.flags.editScene(scene);  // first: --sun drops the added sun's warning
-    printWarnings(scene);
+    args.flags.editSceneAndWarn(scene);
     const RenderOptions options = args.flags.resolve(scene);
     ContextOptions context;
     context.verbose = verbose;

@@ -145,8 +145,7 @@ int runTune(const TuneArgs& args, bool verbose) {
     if (!(args.options.timeLimitSeconds >= 0.0 && args.options.timeLimitSeconds < 1e7))
         throw Error(ErrorKind::InvalidInput, "--time-limit must be in [0, 1e7) seconds");
     Scene scene = loadWithProgress(args.scene);
-    args.flags.editScene(scene);  // first: --sun drops the added sun's warning
-    printWarnings(scene);
+    args.flags.editSceneAndWarn(scene);
     const RenderOptions start = args.flags.resolve(scene);
     TuneOptions options = args.options;
     if (!args.views.empty()) options.extraViews = makeScenePath(args.views, scene, 0).cameras;

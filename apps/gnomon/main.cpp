@@ -99,8 +99,7 @@ int runRender(const RenderArgs& args, bool verbose) {
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart)
             .count();
-    args.flags.editScene(scene);  // first: --sun drops the added sun's warning
-    gnomon::cli::printWarnings(scene);
+    args.flags.editSceneAndWarn(scene);
     if (verbose) {
         std::size_t triangles = 0;
         for (const gnomon::Object& o : scene.objects)
