@@ -45,22 +45,6 @@ std::optional<glm::vec3> numbers(const std::string& text, int n) {
     return v;
 }
 
-// A camera placed by flags keeps no near and far planes from the one it replaced (a framing
-// camera's, sized for a view from outside, would cut away a model seen from within): the far
-// plane just beyond the scene's farthest corner, the near one 1/2000 of that.
-void fitDepthRange(const Scene& scene, Camera& c) {
-    glm::vec3 lo, hi;
-    sceneBounds(scene, lo, hi);
-    float far = 0.0f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
-                          corner & 4 ? hi.z : lo.z);
-        far = std::max(far, glm::length(p - c.eye));
-    }
-    if (!(far > 0.0f)) return;
-    c.far = 1.05f * far;
-    c.near = c.far / 2000.0f;
-}
 }  // namespace
 
 void RenderFlags::editScene(Scene& scene) const {
@@ -92,7 +76,10 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
     if (given("--camera-eye") || given("--camera-target")) {
         if (!(glm::length(c.centre - c.eye) > 0.0f))
             bad("--camera-eye", "the eye and the target are the same point");
-        fitDepthRange(scene, c);
+        // A camera placed by flags keeps no near and far planes from the one it replaced (a
+        // framing camera's, sized for a view from outside, would cut away a model seen from
+        // within).
+        fitCameraDepth(scene, c);
     }
     if (given("--sun")) {
         const auto v = numbers(sun, 2);

@@ -232,6 +232,13 @@ RenderOptions presetOptions(const Scene& scene, Preset preset);
 // The world box of every object at rest (time 0) into lo and hi; both 0 for an empty scene.
 void sceneBounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi);
 
+// Sets the camera's near and far planes from the scene's extent seen from its eye: far just
+// beyond the farthest corner of sceneBounds(), near 1/2000 of that. For cameras placed
+// without planes of their own (the CLI's --camera-eye, a scene file's camera without
+// near/far), so a model in millimetres or in kilometres is neither cut away nor clipped
+// whole. Leaves the camera as it was for an empty scene.
+void fitCameraDepth(const Scene& scene, Camera& camera);
+
 // The scenes gnomon ships, in a stable order.
 std::vector<SceneInfo> builtinScenes();
 // A built-in scene by name; throws gnomon::Error listing the known names.

@@ -199,6 +199,20 @@ void sceneBounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
     hi = box.empty() ? glm::vec3(0.0f) : box.max;
 }
 
+void fitCameraDepth(const Scene& scene, Camera& camera) {
+    glm::vec3 lo, hi;
+    sceneBounds(scene, lo, hi);
+    float far = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                          corner & 4 ? hi.z : lo.z);
+        far = std::max(far, glm::length(p - camera.eye));
+    }
+    if (!(far > 0.0f) || !std::isfinite(far)) return;
+    camera.far = 1.05f * far;
+    camera.near = camera.far / 2000.0f;
+}
+
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
     if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
     return scene.lights[index].enabled;

@@ -368,8 +368,14 @@ void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
         out.lights = std::move(included.lights);
     }
 
+    // A camera of the file's own without near or far gets them from the scene's extent (below,
+    // once the ground is in): the defaults 1 and 100 would cut away a model in millimetres
+    // whole, or clip a city. A plane given is kept.
+    bool givenNear = true, givenFar = true;
     if (const Json* cj = root.find("camera")) {
         out.camera = readCamera(r, *cj, root.at("camera"));
+        givenNear = cj->contains("near");
+        givenFar = cj->contains("far");
     } else if (included.camera) {
         out.camera = *included.camera;
     } else if (!out.objects.empty()) {
@@ -386,6 +392,12 @@ void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
     // After the camera is framed: the ground is not part of what it frames.
     if (const Json* gj = root.find("ground"); gj && r.boolean(*gj, root.at("ground"))) {
         addGround(out);
+    }
+    if (!givenNear || !givenFar) {
+        Camera fitted = out.camera;
+        fitCameraDepth(out, fitted);
+        if (!givenNear) out.camera.near = fitted.near;
+        if (!givenFar) out.camera.far = fitted.far;
     }
 
     out.options = included.options.value_or(RenderOptions{});

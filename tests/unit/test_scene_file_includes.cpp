@@ -164,5 +164,36 @@ TEST(SceneFile, MeshShapeWithFlatListsAndGeneratedNormals) {
     EXPECT_FALSE(s.objects[0].receivesShadows);
 }
 
+// A camera without near and far takes them from the scene's extent, so a model in millimetres
+// is not cut away whole by the defaults (1, 100) and one in kilometres is not clipped; given
+// planes are kept as written.
+TEST(SceneFile, CameraWithoutPlanesFitsThemToTheScene) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "tiny.json";
+    for (const float scale : {0.001f, 1000.0f}) {
+        const std::string s = std::to_string(scale);
+        writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": )" + s +
+                         R"(}], "lights": [], "camera": {"eye": [0, )" + s + ", " +
+                         std::to_string(3 * scale) + "]}}");
+        const Camera c = loadSceneFile(p.string()).camera;
+        const float farthestCorner = glm::length(glm::vec3(0.5f, 1.5f, 3.5f)) * scale;
+        EXPECT_GT(c.far, farthestCorner) << scale;
+        EXPECT_LT(c.far, 1.1f * farthestCorner) << scale;
+        EXPECT_LT(c.near, 2.5f * scale) << scale;  // in front of the box's face
+        EXPECT_GT(c.near, 0.0f) << scale;
+    }
+    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": 0.001}],
+                     "lights": [], "camera": {"eye": [0, 0, 0.003], "near": 0.5, "far": 7}})");
+    const Camera kept = loadSceneFile(p.string()).camera;
+    EXPECT_EQ(kept.near, 0.5f);
+    EXPECT_EQ(kept.far, 7.0f);
+    // One plane given: the other is fitted.
+    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": 0.001}],
+                     "lights": [], "camera": {"eye": [0, 0, 0.003], "far": 7}})");
+    const Camera farOnly = loadSceneFile(p.string()).camera;
+    EXPECT_EQ(farOnly.far, 7.0f);
+    EXPECT_LT(farOnly.near, 0.0025f);
+}
+
 }  // namespace
 }  // namespace gnomon
