@@ -55,14 +55,14 @@ GLint glWrap(TextureWrap w) {
 
 }  // namespace
 
-void GpuScene::uploadGeometry(const Scene& scene, float casterDetail) {
+void GpuScene::uploadGeometry(const Scene& scene) {
     std::vector<GpuVertex> vertices;
     std::vector<std::uint32_t> indices;
     mMeshRanges.clear();
-    mStandInRanges.clear();
+    std::vector<std::pair<std::size_t, GLsizei>> full;
     for (const Mesh& m : scene.meshes) {
         mMeshRanges.emplace_back(indices.size() * sizeof(std::uint32_t), GLint(vertices.size()));
-        mStandInRanges.emplace_back(mMeshRanges.back().first, GLsizei(m.indices.size()));
+        full.emplace_back(mMeshRanges.back().first, GLsizei(m.indices.size()));
         for (size_t i = 0; i < m.positions.size(); ++i) {
             vertices.push_back({m.positions[i], m.normals[i],
                                 m.colours.empty() ? glm::vec3(1.0f) : m.colours[i],
@@ -70,18 +70,19 @@ void GpuScene::uploadGeometry(const Scene& scene, float casterDetail) {
         }
         indices.insert(indices.end(), m.indices.begin(), m.indices.end());
     }
-    // Stand-in casters after all full meshes, sharing their vertices (same base vertex).
-    if (casterDetail < 1.0f) {
-        for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-            const std::vector<std::uint32_t> standIn =
-                shadow::standInIndices(scene.meshes[m], casterDetail);
-            // Meshes too small to simplify keep drawing their own range.
-            if (standIn.size() == scene.meshes[m].indices.size()) continue;
-            mStandInRanges[m] = {indices.size() * sizeof(std::uint32_t), GLsizei(standIn.size())};
-            indices.insert(indices.end(), standIn.begin(), standIn.end());
+    // Every stand-in made so far after all full meshes, sharing their vertices (same base
+    // vertex); meshes too small to simplify keep drawing their own range.
+    mStandInRanges.clear();
+    mStandInRanges[1.0f] = full;
+    for (const auto& [detail, meshes] : mStandIns) {
+        std::vector<std::pair<std::size_t, GLsizei>>& ranges = mStandInRanges[detail];
+        ranges = full;
+        for (std::size_t m = 0; m < meshes.size(); ++m) {
+            if (meshes[m].empty()) continue;
+            ranges[m] = {indices.size() * sizeof(std::uint32_t), GLsizei(meshes[m].size())};
+            indices.insert(indices.end(), meshes[m].begin(), meshes[m].end());
         }
     }
-    mCasterDetail = casterDetail;
     mVertices =
         gl::Buffer("scene vertices", vertices.size() * sizeof(GpuVertex), vertices.data(), 0);
     mIndices =
@@ -103,6 +104,7 @@ void GpuScene::uploadGeometry(const Scene& scene, float casterDetail) {
     mObjectData.clear();        // forces the object upload below
     mObjectIds = gl::Buffer();  // and the object indices' binding to the new vertex array
     mHaveGeometry = true;
+    ++mGeometryUploads;
 }
 
 void GpuScene::uploadTextures(const Scene& scene) {
@@ -128,13 +130,14 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         mHaveGeometry && mHaveTextures && scene.revision.value() == mSyncedRevision;
     const bool sameDetail = casterDetail == mCasterDetail;
     if (sameContent && sameDetail && seconds == mSyncedSeconds) return false;
-    bool changed = false;
-    if (!sameContent || !sameDetail) {
+    bool changed = !sameDetail;
+    mCasterDetail = casterDetail;
+    if (!sameContent) {
         const std::uint64_t hash = hashGeometry(scene);
-        if (!mHaveGeometry || hash != mGeometryHash || !sameDetail) {
-            uploadGeometry(scene, casterDetail);
+        if (!mHaveGeometry || hash != mGeometryHash) {
+            mStandIns.clear();  // made for other meshes
+            mStandInRanges.clear();
             mGeometryHash = hash;
-            changed = true;
         }
         const std::uint64_t textureHash = hashTextures(scene);
         if (!mHaveTextures || textureHash != mTextureHash) {
@@ -144,6 +147,24 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
             changed = true;
         }
     }
+    // A detail not made yet for this geometry is made once and kept beside the others, so
+    // going back to one (tune's trials alternate with the starting settings, the viewer's
+    // slider) switches index ranges without simplifying or uploading again.
+    const bool newStandIn = casterDetail < 1.0f && !mStandIns.contains(casterDetail);
+    if (newStandIn) {
+        if (mStandIns.size() >= kKeptStandIns) mStandIns.clear();
+        std::vector<std::vector<std::uint32_t>>& made = mStandIns[casterDetail];
+        for (const Mesh& m : scene.meshes) {
+            made.push_back(shadow::standInIndices(m, casterDetail));
+            if (made.back().size() == m.indices.size()) made.back().clear();  // its own range
+        }
+    }
+    if (mStandInRanges.empty() || newStandIn) {
+        uploadGeometry(scene);
+        changed = true;
+    }
+    const std::vector<std::pair<std::size_t, GLsizei>>& standIns =
+        mStandInRanges.at(casterDetail < 1.0f ? casterDetail : 1.0f);
 
     // Object records: rebuilt on the CPU (cheap), uploaded only when they differ.
     const size_t n = scene.objects.size();
@@ -199,8 +220,8 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
             mat.alphaMode,
             mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
             mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};
-        mItems[i].standInFirstIndexByte = mStandInRanges[o.mesh].first;
-        mItems[i].standInIndexCount = mStandInRanges[o.mesh].second;
+        mItems[i].standInFirstIndexByte = standIns[o.mesh].first;
+        mItems[i].standInIndexCount = standIns[o.mesh].second;
     }
     // Opaque first, then masked, then blended; by texture within each (binds once each).
     std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <vector>
 
 #include "core/Aabb.h"
@@ -99,6 +100,9 @@ public:
     }
     // Changes whenever geometry or object data changed.
     std::uint64_t revision() const { return mRevision; }
+    // How many times vertices and indices went to the GPU (a new geometry, a new stand-in
+    // detail): what tests check the caching by.
+    std::uint64_t geometryUploads() const { return mGeometryUploads; }
     // Content hash of all vertex and index data, stand-in casters included.
     std::uint64_t geometryHash() const {
         std::uint32_t detail = 0;
@@ -107,7 +111,7 @@ public:
     }
 
 private:
-    void uploadGeometry(const Scene& scene, float casterDetail);
+    void uploadGeometry(const Scene& scene);
     void uploadTextures(const Scene& scene);
     bool uploadDrawCommands();
 
@@ -134,8 +138,14 @@ private:
     std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
     std::vector<DrawItem> mItems;
     std::vector<std::pair<std::size_t, GLint>> mMeshRanges;       // first index byte, base vertex
-    std::vector<std::pair<std::size_t, GLsizei>> mStandInRanges;  // first index byte, count
-    float mCasterDetail = 1.0f;  // what the stand-ins were made for
+    // Stand-in casters by detail: the index lists made for the current geometry (an empty
+    // list: the mesh's own), at most kKeptStandIns of them, and where each mesh's lies in the
+    // index buffer per detail (1: the full meshes), first index byte and count.
+    static constexpr std::size_t kKeptStandIns = 4;
+    std::map<float, std::vector<std::vector<std::uint32_t>>> mStandIns;
+    std::map<float, std::vector<std::pair<std::size_t, GLsizei>>> mStandInRanges;
+    float mCasterDetail = 1.0f;  // the detail drawn
+    std::uint64_t mGeometryUploads = 0;
     std::vector<Aabb> mMeshBounds;
     std::vector<char> mMeshClosed;  // isClosedSurface per mesh, at upload
     Aabb mBounds, mCasterBounds;

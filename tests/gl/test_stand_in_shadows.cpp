@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "GlTest.h"
+#include "render/GpuScene.h"
 #include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
@@ -75,6 +76,38 @@ TEST(StandInCasters, TenthOfTheTrianglesCastsTheSameShadow) {
     }
     ASSERT_GT(darkA, 100);
     EXPECT_LT(std::abs(darkA - darkB), darkA / 20) << darkA << " dark pixels against " << darkB;
+}
+
+// A stand-in is made once per detail and kept: going back to a detail (tune's trials alternate
+// with the starting settings; the viewer's slider) switches index ranges, with no new
+// simplification or upload. A new geometry drops them.
+TEST(StandInCasters, GoingBackToADetailReusesItsStandIn) {
+    Scene s = sphereOverFloor();
+    sharedRenderer().render(s, s.options);  // a context is current from here on
+    render::GpuScene gpu;
+    auto triangles = [&] {
+        GLsizei count = 0;
+        for (const render::DrawItem& item : gpu.items())
+            count += item.standInIndexCount / 3;
+        return count;
+    };
+    gpu.sync(s, 0.0, 1.0f);
+    const GLsizei full = triangles();
+    gpu.sync(s, 0.0, 0.1f);
+    const GLsizei tenth = triangles();
+    EXPECT_LE(tenth * 8, full);
+    const std::uint64_t uploads = gpu.geometryUploads();
+    EXPECT_TRUE(gpu.sync(s, 0.0, 1.0f)) << "another detail is a change";
+    EXPECT_EQ(triangles(), full);
+    EXPECT_TRUE(gpu.sync(s, 0.0, 0.1f));
+    EXPECT_EQ(triangles(), tenth);
+    EXPECT_EQ(gpu.geometryUploads(), uploads);
+    // The sphere made coarser: its stand-ins are made again, for the new mesh.
+    s.meshes[1] = mesh::sphere("sphere", {0.0f, 1.5f, 0.0f}, 1.0f, 64, 32);
+    s.revision.bump();
+    EXPECT_TRUE(gpu.sync(s, 0.0, 0.1f));
+    EXPECT_GT(gpu.geometryUploads(), uploads);
+    EXPECT_LT(triangles(), tenth);
 }
 
 }  // namespace
