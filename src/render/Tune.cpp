@@ -33,6 +33,19 @@ bool hasFittedSun(const Scene& s) {
 
 const std::vector<std::string> kMapSizes = {"512", "1024", "2048", "4096"};
 
+// Triangles the shadow casters draw at full detail. From about this many, a shadow pass on
+// llvmpipe costs more in triangles (~0.1 us each: the Dragon's 871k take 98 ms at 1024²) than
+// in texels (a 1024² map's fill is 1-2 ms), so stand-in casters (--caster-detail) free time a
+// larger map can use; below it they save little and only add trials.
+constexpr std::size_t kStandInTriangles = 20000;
+std::size_t casterTriangles(const Scene& s) {
+    std::size_t triangles = 0;
+    for (const Object& o : s.objects)
+        if (o.castsShadows && o.mesh < s.meshes.size())
+            triangles += s.meshes[o.mesh].indices.size() / 3;
+    return triangles;
+}
+
 // Lights whose map sizes are searched one by one: every shadowed light that is on (the
 // scene's switches, or --light-only's) when there are two to kMaxSizedApart of them and the
 // options leave each its own size (map-size 0) with shadows on, so a scene's sun can take the
@@ -77,6 +90,8 @@ Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& sta
     };
     if (result.sizedLights.empty()) space.insert(space.begin() + 2, {"map-size", kMapSizes});
     if (hasFittedSun(scene)) space.push_back({"cascades", {"auto", "1", "2", "3", "4"}});
+    if (casterTriangles(scene) >= kStandInTriangles)
+        space.push_back({"caster-detail", {"1", "0.3", "0.1"}});
     start.clear();
     for (search::Parameter& p : space) {
         const OptionSpec& spec = *findOption(p.name);

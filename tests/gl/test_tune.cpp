@@ -57,6 +57,47 @@ TEST(Tune, FindsTheKnownRemedyForAcne) {
     const nlohmann::json j = nlohmann::json::parse(toJson(r, "tutorial-room"));
     EXPECT_EQ(j["trials"].size(), r.trials.size());
     EXPECT_EQ(j["best"].get<int>(), r.best);
+    // The room's few triangles cost its shadow pass nothing: no stand-ins are tried.
+    for (const TuneTrial& t : r.trials)
+        EXPECT_EQ(t.flags.find("--caster-detail"), std::string::npos) << t.flags;
+}
+
+// A caster of 48 000 triangles over the room: its shadow pass costs triangles more than
+// texels, so the search tries stand-ins, whose saved time a larger map can use.
+TEST(Tune, TriesStandInsWhereCastersAreDense) {
+    Scene s = builtinScene("tutorial-room");
+    Mesh plate;
+    plate.name = "dense plate";
+    const int n = 155;  // quads per side: 2 * 155² > 48 000 triangles
+    for (int z = 0; z <= n; ++z) {
+        for (int x = 0; x <= n; ++x) {
+            plate.positions.push_back(
+                {-2.0f + 4.0f * float(x) / n, 2.0f, -2.0f + 4.0f * float(z) / n});
+            plate.normals.push_back({0.0f, 1.0f, 0.0f});
+        }
+    }
+    for (int z = 0; z < n; ++z) {
+        for (int x = 0; x < n; ++x) {
+            const auto i = std::uint32_t(z * (n + 1) + x), below = i + std::uint32_t(n + 1);
+            plate.indices.insert(plate.indices.end(), {i, below, i + 1, i + 1, below, below + 1});
+        }
+    }
+    s.meshes.push_back(std::move(plate));
+    Object o;
+    o.name = "dense plate";
+    o.mesh = std::uint32_t(s.meshes.size() - 1);
+    o.material = s.objects.front().material;
+    s.objects.push_back(o);
+    TuneOptions options = quickTune();
+    options.maxSweeps = 1;
+    const TuneResult r = tune(sharedRenderer(), s, smallStart(s, 32), options);
+    bool tried = false;
+    for (const TuneTrial& t : r.trials) {
+        const bool standIn = t.options.shadow.casterDetail < 1.0f;
+        EXPECT_EQ(standIn, t.flags.find("--caster-detail") != std::string::npos) << t.flags;
+        tried |= standIn;
+    }
+    EXPECT_TRUE(tried);
 }
 
 // Two shadowed lights, one with a 64² map (its shadows a blur of blocks): the search sizes
