@@ -137,7 +137,7 @@ private:
     gl::VertexArray mVao;
     std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
     std::vector<DrawItem> mItems;
-    std::vector<std::pair<std::size_t, GLint>> mMeshRanges;       // first index byte, base vertex
+    std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
     // Stand-in casters by detail: the index lists made for the current geometry (an empty
     // list: the mesh's own), at most kKeptStandIns of them, and where each mesh's lies in the
     // index buffer per detail (1: the full meshes), first index byte and count.
