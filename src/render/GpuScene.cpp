@@ -107,6 +107,20 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     ++mGeometryUploads;
 }
 
+// A detail not made yet for this geometry is made once and kept beside the others, so going
+// back to one (tune's trials alternate with the starting settings, the viewer's slider)
+// switches index ranges without simplifying or uploading again.
+bool GpuScene::makeStandIns(const Scene& scene, float casterDetail) {
+    if (!(casterDetail < 1.0f) || mStandIns.contains(casterDetail)) return false;
+    if (mStandIns.size() >= kKeptStandIns) mStandIns.clear();
+    std::vector<std::vector<std::uint32_t>>& made = mStandIns[casterDetail];
+    for (const Mesh& m : scene.meshes) {
+        made.push_back(shadow::standInIndices(m, casterDetail));
+        if (made.back().size() == m.indices.size()) made.back().clear();  // its own range
+    }
+    return true;
+}
+
 void GpuScene::uploadTextures(const Scene& scene) {
     mTextures.clear();
     if (!mWhite) {
@@ -147,19 +161,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
             changed = true;
         }
     }
-    // A detail not made yet for this geometry is made once and kept beside the others, so
-    // going back to one (tune's trials alternate with the starting settings, the viewer's
-    // slider) switches index ranges without simplifying or uploading again.
-    const bool newStandIn = casterDetail < 1.0f && !mStandIns.contains(casterDetail);
-    if (newStandIn) {
-        if (mStandIns.size() >= kKeptStandIns) mStandIns.clear();
-        std::vector<std::vector<std::uint32_t>>& made = mStandIns[casterDetail];
-        for (const Mesh& m : scene.meshes) {
-            made.push_back(shadow::standInIndices(m, casterDetail));
-            if (made.back().size() == m.indices.size()) made.back().clear();  // its own range
-        }
-    }
-    if (mStandInRanges.empty() || newStandIn) {
+    if (makeStandIns(scene, casterDetail) || mStandInRanges.empty()) {
         uploadGeometry(scene);
         changed = true;
     }

@@ -112,6 +112,8 @@ public:
 
 private:
     void uploadGeometry(const Scene& scene);
+    // Makes the stand-ins for `casterDetail` unless kept already; true when it made them.
+    bool makeStandIns(const Scene& scene, float casterDetail);
     void uploadTextures(const Scene& scene);
     bool uploadDrawCommands();
 
