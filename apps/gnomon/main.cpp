@@ -101,9 +101,7 @@ int runRender(const RenderArgs& args, bool verbose) {
             .count();
     args.flags.editSceneAndWarn(scene);
     if (verbose) {
-        std::size_t triangles = 0;
-        for (const gnomon::Object& o : scene.objects)
-            triangles += scene.meshes[o.mesh].indices.size() / 3;
+        const std::size_t triangles = gnomon::triangleCount(scene);
         std::fprintf(
             stderr, "gnomon: loaded '%s' in %.0f ms: %zu triangles, %zu objects, %zu lights\n",
             scene.name.c_str(), loadMs, triangles, scene.objects.size(), scene.lights.size());

@@ -232,6 +232,10 @@ RenderOptions presetOptions(const Scene& scene, Preset preset);
 // The world box of every object at rest (time 0) into lo and hi; both 0 for an empty scene.
 void sceneBounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi);
 
+// Triangles the scene's objects draw (each object its mesh's), or only those of the objects
+// that cast shadows: what a shadow pass draws at full detail.
+std::size_t triangleCount(const Scene& scene, bool castersOnly = false);
+
 // Sets the camera's near and far planes from the scene's extent seen from its eye: far just
 // beyond the farthest corner of sceneBounds(), near 1/2000 of that. For cameras placed
 // without planes of their own (the CLI's --camera-eye, a scene file's camera without

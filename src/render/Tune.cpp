@@ -38,13 +38,6 @@ const std::vector<std::string> kMapSizes = {"512", "1024", "2048", "4096"};
 // in texels (a 1024² map's fill is 1-2 ms), so stand-in casters (--caster-detail) free time a
 // larger map can use; below it they save little and only add trials.
 constexpr std::size_t kStandInTriangles = 20000;
-std::size_t casterTriangles(const Scene& s) {
-    std::size_t triangles = 0;
-    for (const Object& o : s.objects)
-        if (o.castsShadows && o.mesh < s.meshes.size())
-            triangles += s.meshes[o.mesh].indices.size() / 3;
-    return triangles;
-}
 
 // Lights whose map sizes are searched one by one: every shadowed light that is on (the
 // scene's switches, or --light-only's) when there are two to kMaxSizedApart of them and the
@@ -90,7 +83,7 @@ Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& sta
     };
     if (result.sizedLights.empty()) space.insert(space.begin() + 2, {"map-size", kMapSizes});
     if (hasFittedSun(scene)) space.push_back({"cascades", {"auto", "1", "2", "3", "4"}});
-    if (casterTriangles(scene) >= kStandInTriangles)
+    if (triangleCount(scene, /*castersOnly=*/true) >= kStandInTriangles)
         space.push_back({"caster-detail", {"1", "0.3", "0.1"}});
     start.clear();
     for (search::Parameter& p : space) {

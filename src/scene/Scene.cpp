@@ -199,6 +199,14 @@ void sceneBounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
     hi = box.empty() ? glm::vec3(0.0f) : box.max;
 }
 
+std::size_t triangleCount(const Scene& scene, bool castersOnly) {
+    std::size_t triangles = 0;
+    for (const Object& o : scene.objects)
+        if ((o.castsShadows || !castersOnly) && o.mesh < scene.meshes.size())
+            triangles += scene.meshes[o.mesh].indices.size() / 3;
+    return triangles;
+}
+
 void fitCameraDepth(const Scene& scene, Camera& camera) {
     glm::vec3 lo, hi;
     sceneBounds(scene, lo, hi);
