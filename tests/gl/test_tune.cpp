@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "GlTest.h"
+#include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
 namespace {
@@ -62,32 +63,18 @@ TEST(Tune, FindsTheKnownRemedyForAcne) {
         EXPECT_EQ(t.flags.find("--caster-detail"), std::string::npos) << t.flags;
 }
 
-// A caster of 48 000 triangles over the room: its shadow pass costs triangles more than
+// A caster of about 48 000 triangles over the room: its shadow pass costs triangles more than
 // texels, so the search tries stand-ins, whose saved time a larger map can use.
 TEST(Tune, TriesStandInsWhereCastersAreDense) {
     Scene s = builtinScene("tutorial-room");
-    Mesh plate;
-    plate.name = "dense plate";
-    const int n = 155;  // quads per side: 2 * 155² > 48 000 triangles
-    for (int z = 0; z <= n; ++z) {
-        for (int x = 0; x <= n; ++x) {
-            plate.positions.push_back(
-                {-2.0f + 4.0f * float(x) / n, 2.0f, -2.0f + 4.0f * float(z) / n});
-            plate.normals.push_back({0.0f, 1.0f, 0.0f});
-        }
-    }
-    for (int z = 0; z < n; ++z) {
-        for (int x = 0; x < n; ++x) {
-            const auto i = std::uint32_t(z * (n + 1) + x), below = i + std::uint32_t(n + 1);
-            plate.indices.insert(plate.indices.end(), {i, below, i + 1, i + 1, below, below + 1});
-        }
-    }
-    s.meshes.push_back(std::move(plate));
+    // 220 x 110 segments: about 48 000 triangles.
+    s.meshes.push_back(mesh::sphere("dense ball", {0.0f, 2.0f, 0.0f}, 1.0f, 220, 110));
     Object o;
-    o.name = "dense plate";
+    o.name = "dense ball";
     o.mesh = std::uint32_t(s.meshes.size() - 1);
     o.material = s.objects.front().material;
     s.objects.push_back(o);
+    ASSERT_GE(triangleCount(s, /*castersOnly=*/true), 40000u);
     TuneOptions options = quickTune();
     options.maxSweeps = 1;
     const TuneResult r = tune(sharedRenderer(), s, smallStart(s, 32), options);
