@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -16,6 +17,8 @@
 #include "gnomon/Scene.h"
 
 namespace gnomon::truth {
+
+class ShadowRays;
 
 struct ReferenceOptions {
     int softSamples = 0;  // rays per pixel and light for the soft reference; 0: hard only
@@ -32,6 +35,8 @@ struct Reference {
     int width = 0, height = 0, lights = 0;
     std::vector<int> object;        // object index the camera sees, -1: nothing
     std::vector<float> pixelWorld;  // world size of the pixel's footprint at the surface
+    // Where a receiving surface is seen: its point and geometric normal (towards the camera).
+    std::vector<glm::vec3> surfacePoint, surfaceNormal;
     // 1 where the light's shadow can show: the light is on and casts shadows, the object
     // receives them, and the light reaches the surface (in front of it, inside a spot's
     // cone, on the lit side of an area light's plane).
@@ -51,6 +56,9 @@ struct Reference {
     // ReferenceOptions::contactRange > 0 only (else empty): 1 where the hard ray is occluded
     // within that distance of the surface (a contact shadow's reach), 0 elsewhere.
     std::vector<std::uint8_t> nearOccluder;
+    // The scene as traced, for more shadow rays later (truth/ShadowRays.h): valid while the
+    // Scene it was traced from lives.
+    std::shared_ptr<const ShadowRays> rays;
 
     std::size_t at(int x, int y, int light) const {
         return (std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(lights) +

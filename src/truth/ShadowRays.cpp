@@ -1,0 +1,236 @@
+#include "truth/ShadowRays.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "gnomon/Error.h"
+#include "scene/SceneUtil.h"
+
+namespace gnomon::truth {
+
+namespace {
+
+void checkDevice(RTCDevice device, const char* what) {
+    const RTCError e = rtcGetDeviceError(device);
+    if (e != RTC_ERROR_NONE) {
+        throw Error(ErrorKind::InvalidInput, std::string("ground truth: Embree failed to ") + what +
+                                                 " (error " + std::to_string(int(e)) + ")");
+    }
+}
+
+RTCScene buildScene(RTCDevice device, const Scene& scene,
+                    const std::vector<std::vector<glm::vec3>>& positions,
+                    const std::vector<AlphaSurface>& alpha, bool castersOnly) {
+    RTCScene s = rtcNewScene(device);
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const Object& obj = scene.objects[o];
+        if (castersOnly && !obj.castsShadows) continue;
+        const Mesh& mesh = scene.meshes[obj.mesh];
+        const std::size_t triangles = mesh.indices.size() / 3;
+        if (triangles == 0 || mesh.positions.empty()) continue;
+        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                              mesh.positions.size()));
+        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles));
+        if (!v || !idx) {
+            rtcReleaseGeometry(g);
+            rtcReleaseScene(s);
+            checkDevice(device, "allocate geometry");
+            throw Error(ErrorKind::InvalidInput, "ground truth: out of memory for geometry");
+        }
+        const std::vector<glm::vec3>& p = positions[o];
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            v[3 * i] = p[i].x;
+            v[3 * i + 1] = p[i].y;
+            v[3 * i + 2] = p[i].z;
+        }
+        std::copy(mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(3 * triangles), idx);
+        if (alpha[o].material) {  // masked or blended: every hit asks its alpha
+            rtcSetGeometryUserData(g, const_cast<AlphaSurface*>(&alpha[o]));
+            rtcSetGeometryIntersectFilterFunction(g, &alphaFilter);
+            rtcSetGeometryOccludedFilterFunction(g, &alphaFilter);
+        }
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(s, g, unsigned(o));
+        rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(s);
+    checkDevice(device, "build the scene's BVH");
+    return s;
+}
+
+// Two unit vectors perpendicular to `w` and to each other.
+void tangents(const glm::vec3& w, glm::vec3& u, glm::vec3& v) {
+    const glm::vec3 a = std::fabs(w.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    u = glm::normalize(glm::cross(w, a));
+    v = glm::cross(w, u);
+}
+
+}  // namespace
+
+ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options)
+    : mLights(scene.lights), mBlend(options.shadow.blendShadows) {
+    Aabb bounds;
+    for (const Object& obj : scene.objects) {
+        const Mesh& mesh = scene.meshes[obj.mesh];
+        const glm::mat4 m = obj.worldFromModelAt(options.time);
+        std::vector<glm::vec3> p(mesh.positions.size());
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            p[i] = glm::vec3(m * glm::vec4(mesh.positions[i], 1.0f));
+            bounds.extend(p[i]);
+        }
+        mPositions.push_back(std::move(p));
+    }
+    mScale = bounds.empty() ? 1.0f : std::max(bounds.radius(), 1e-6f);
+    mAlpha.resize(scene.objects.size());
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const Material& m = scene.materials[scene.objects[o].material];
+        if (m.alphaMode == AlphaMode::Opaque) continue;
+        mAlpha[o] = {
+            &scene.meshes[scene.objects[o].mesh], &m,
+            m.baseColourTexture >= 0 ? &scene.textures[std::size_t(m.baseColourTexture)] : nullptr};
+    }
+    mOn.resize(scene.lights.size());
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        mOn[i] =
+            options.shadow.enabled && scene.lights[i].castsShadows && lightIsOn(scene, options, i);
+    }
+    mDevice = rtcNewDevice(nullptr);
+    if (!mDevice) throw Error(ErrorKind::InvalidInput, "ground truth: Embree found no device");
+    try {
+        mAll = buildScene(mDevice, scene, mPositions, mAlpha, false);
+        mCasters = buildScene(mDevice, scene, mPositions, mAlpha, true);
+    } catch (...) {
+        if (mAll) rtcReleaseScene(mAll);
+        rtcReleaseDevice(mDevice);
+        throw;
+    }
+}
+
+ShadowRays::~ShadowRays() {
+    rtcReleaseScene(mCasters);
+    rtcReleaseScene(mAll);
+    rtcReleaseDevice(mDevice);
+}
+
+void ShadowRays::check(const char* what) const {
+    checkDevice(mDevice, what);
+}
+
+glm::vec3 ShadowRays::rayOrigin(const glm::vec3& point, const glm::vec3& n) const {
+    return point + n * (2e-5f * mScale + 1e-6f * glm::length(point));
+}
+
+glm::vec3 ShadowRays::directionOf(const Light& light) {
+    return glm::length(light.direction) > 0.0f ? glm::normalize(light.direction)
+                                               : glm::vec3(0, -1, 0);
+}
+
+bool ShadowRays::towardsLight(std::size_t l, const glm::vec3& point, const glm::vec3& origin,
+                              glm::vec3& toLight, float& distance) const {
+    if (!mOn[l]) return false;
+    const Light& light = mLights[l];
+    const glm::vec3 ld = directionOf(light);
+    distance = std::numeric_limits<float>::infinity();
+    switch (light.type) {
+        case LightType::Directional:
+            toLight = -ld;
+            return true;
+        case LightType::Area:
+            toLight = -ld;
+            distance = glm::dot(point - light.position, ld);
+            return distance > 0.0f;  // in front of the light's plane
+        case LightType::Spot:
+        case LightType::Point:
+            break;
+    }
+    const glm::vec3 d = light.position - origin;
+    distance = glm::length(d);
+    if (!(distance > 0.0f)) return false;
+    if (light.range > 0.0f && distance >= light.range) return false;  // unlit
+    toLight = d / distance;
+    return light.type != LightType::Spot ||
+           glm::dot(-toLight, ld) > std::cos(glm::radians(light.outerConeDegrees));
+}
+
+float ShadowRays::transmitted(const glm::vec3& origin, const glm::vec3& dir, float far,
+                              glm::vec3* tint) const {
+    AlphaContext context;
+    rtcInitIntersectContext(&context.base);
+    context.blend = mBlend;
+    RTCRay ray{};
+    ray.org_x = origin.x;
+    ray.org_y = origin.y;
+    ray.org_z = origin.z;
+    ray.dir_x = dir.x;
+    ray.dir_y = dir.y;
+    ray.dir_z = dir.z;
+    ray.tnear = 0.0f;
+    ray.tfar = far;
+    ray.mask = 0xffffffffu;
+    rtcOccluded1(mCasters, &context.base, &ray);
+    if (tint) *tint = context.tint;
+    return ray.tfar < 0.0f ? 0.0f : context.transmission;  // Embree sets tfar to -inf on a hit
+}
+
+int ShadowRays::side(std::size_t l, const glm::vec3& point, const glm::vec3& n) const {
+    const glm::vec3 origin = rayOrigin(point, n);
+    glm::vec3 toLight;
+    float distance = 0.0f;
+    if (!towardsLight(l, point, origin, toLight, distance)) return -1;
+    if (!(glm::dot(n, toLight) > kEdgeOnCosine)) return 0;
+    return transmitted(origin, toLight, distance) < 0.5f ? 0 : 1;
+}
+
+bool ShadowRays::otherSideWithin(std::size_t l, const glm::vec3& point, const glm::vec3& n,
+                                 float radius, int here) const {
+    glm::vec3 u, v;
+    tangents(n, u, v);
+    const float behind = 1e-3f * radius;
+    for (int i = 0; i < 16; ++i) {
+        const float r = i < 8 ? radius : 0.5f * radius;
+        const float a = float(i) * 0.785398163f + (i < 8 ? 0.0f : 0.392699082f);
+        const glm::vec3 q = point + r * (std::cos(a) * u + std::sin(a) * v);
+        // The surface nearest q along the normal, within the radius on either side: the
+        // receiver curved or bent away from its plane. None: q lies off its edge.
+        float nearest = std::numeric_limits<float>::infinity();
+        glm::vec3 onSurface(0.0f), hitNormal(0.0f);
+        for (const float dir : {-1.0f, 1.0f}) {
+            // Each ray starts a little behind q, so a surface through q itself is found.
+            const glm::vec3 start = q - n * (dir * behind);
+            RTCRayHit rh{};
+            rh.ray.org_x = start.x;
+            rh.ray.org_y = start.y;
+            rh.ray.org_z = start.z;
+            rh.ray.dir_x = dir * n.x;
+            rh.ray.dir_y = dir * n.y;
+            rh.ray.dir_z = dir * n.z;
+            rh.ray.tnear = 0.0f;
+            rh.ray.tfar = std::min(radius, nearest) + behind;
+            rh.ray.mask = 0xffffffffu;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            AlphaContext context;
+            rtcInitIntersectContext(&context.base);
+            context.viewRay = true;
+            rtcIntersect1(mAll, &context.base, &rh);
+            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+            nearest = std::max(rh.ray.tfar - behind, 0.0f);
+            onSurface = start + n * (dir * rh.ray.tfar);
+            hitNormal = glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+        }
+        const float length = glm::length(hitNormal);
+        if (!(length > 0.0f)) continue;
+        glm::vec3 m = hitNormal / length;
+        if (glm::dot(m, n) < 0.0f) m = -m;    // the side the centre's normal is on
+        if (glm::dot(m, n) < 0.5f) continue;  // another surface across this one, not it
+        const int there = side(l, onSurface, m);
+        if (there >= 0 && there != here) return true;
+    }
+    return false;
+}
+
+}  // namespace gnomon::truth

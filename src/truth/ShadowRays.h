@@ -1,0 +1,90 @@
+// The scene's triangles in Embree 3 and its lights, for the reference's rays: what the
+// camera sees (every object) and what shadows it (the casters), with masked and blended
+// surfaces answering through truth/AlphaRays.h. traceReference builds one and keeps it with
+// the Reference, so that the score can trace more shadow rays where it needs to look along a
+// surface (Metrics.h: extendBandAlongSurfaces). It points into the Scene it was built from
+// (meshes, materials, textures): use it only while that Scene lives.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include "gnomon/Options.h"
+#include "gnomon/Scene.h"
+#include "truth/AlphaRays.h"
+
+namespace gnomon::truth {
+
+class ShadowRays {
+public:
+    // Throws gnomon::Error (InvalidInput) when Embree has no device or rejects the scene.
+    ShadowRays(const Scene& scene, const RenderOptions& options);
+    ~ShadowRays();
+    ShadowRays(const ShadowRays&) = delete;
+    ShadowRays& operator=(const ShadowRays&) = delete;
+
+    RTCScene all() const { return mAll; }
+    RTCScene casters() const { return mCasters; }
+    // Throws gnomon::Error when Embree reports a failure since the last call.
+    void check(const char* what) const;
+
+    // Object o's positions in world space (as the renderer places them at options.time).
+    const std::vector<glm::vec3>& positions(std::size_t o) const { return mPositions[o]; }
+    // The scene's size, for ray offsets.
+    float scale() const { return mScale; }
+    // Where a ray leaving `point` (seen with normal `n`) starts: off the surface by a margin
+    // that grows with the scene and with the distance from the origin (float rounding).
+    glm::vec3 rayOrigin(const glm::vec3& point, const glm::vec3& n) const;
+
+    // Light l's direction from `origin` and the distance to it (infinite for a sun); false
+    // where the light does not reach that far (off, behind an area light's plane, beyond
+    // its range, outside a spot's cone): there is no shadow of it to show.
+    bool towardsLight(std::size_t l, const glm::vec3& point, const glm::vec3& origin,
+                      glm::vec3& toLight, float& distance) const;
+    // The share of light arriving along a ray: 0 when something opaque is in the way, the
+    // product of dithered blended surfaces' 1 - alpha otherwise; `tint` (if set) gets the
+    // product of coloured blended surfaces' transmittance.
+    float transmitted(const glm::vec3& origin, const glm::vec3& dir, float far,
+                      glm::vec3* tint = nullptr) const;
+
+    // Light l's hard shadow at a surface point of normal `n`: 1 lit, 0 shadowed or facing
+    // away (its attached shadow), -1 where the light does not reach (towardsLight).
+    int side(std::size_t l, const glm::vec3& point, const glm::vec3& n) const;
+    // True when light l's hard shadow is not `here` somewhere on the surface around `point`
+    // within `radius` of it: probed at 16 points on two circles in the surface's plane, each
+    // moved onto the surface it lies nearest (within the radius) along the normal. A
+    // boundary there can be out of the camera's sight (under the caster, behind a fold).
+    bool otherSideWithin(std::size_t l, const glm::vec3& point, const glm::vec3& n, float radius,
+                         int here) const;
+
+    // A light's direction, normalised (straight down where it has none).
+    static glm::vec3 directionOf(const Light& light);
+
+    // A surface the light meets at under 0.06 degrees counts as edge-on: in its own attached
+    // shadow, as one facing away is. A flat face there gets under 0.1 % of the light (under half
+    // an 8-bit step at full intensity), so no picture shows which it is; the light's map holds
+    // it in no texel of its own, and which side of it the light lies on is decided by the
+    // rounding of its vertices and of the light's direction (a wall under a sun whose azimuth is
+    // a multiple of 90 degrees: cos 90 degrees is 4e-8 in float). The same angle where the
+    // lookups call a plane edge-on (shaders/receiver_plane.glsl) and move off it: counted as lit
+    // or shadowed, such faces were scored on what a picture cannot show (tutorial-room under a
+    // sun at 180,30: 7 % false shadow with no cut; a face of the Fox's neck 0.05 degrees from
+    // edge-on, shadowed by the neck beside it, 2.9 % of a view's leak away from edges with a
+    // cut at 0.01 degrees).
+    static constexpr float kEdgeOnCosine = 1e-3f;  // sin 0.057 degrees
+
+private:
+    RTCDevice mDevice = nullptr;
+    RTCScene mAll = nullptr, mCasters = nullptr;
+    std::vector<std::vector<glm::vec3>> mPositions;
+    std::vector<AlphaSurface> mAlpha;  // per object: masked and blended ones only
+    std::vector<Light> mLights;
+    std::vector<bool> mOn;  // per light: on and casting shadows
+    BlendShadows mBlend;
+    float mScale = 1.0f;
+};
+
+}  // namespace gnomon::truth
