@@ -88,8 +88,12 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
     // One aliasing band for the numbers and the map, around the reference's own edges;
     // then only the pixels where the render drew the surface the reference sees are scored.
     const ShadowVisibility& visibility = frame.visibility;
-    const std::vector<std::uint8_t> band = truth::aliasingBand(
+    std::vector<std::uint8_t> band = truth::aliasingBand(
         reference, visibility.texelWorld, scoreOptions.bandTexels, result.softReference);
+    if (!result.softReference) {
+        truth::extendBandAlongSurfaces(scene, reference, visibility.visibility,
+                                       visibility.texelWorld, scoreOptions.bandTexels, band);
+    }
     const truth::Reference same =
         truth::onSameSurfaces(reference, visibility.object, result.otherSurfacePixels);
     const truth::Scores scores =

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "truth/ShadowRays.h"
+
 namespace gnomon::truth {
 
 namespace {
@@ -62,7 +64,42 @@ int edgeSide(const Reference& r, std::size_t cell, bool soft) {
     return facesAway ? 0 : -1;
 }
 
+// The band's reach at cell c (pixel p), in world units along the surface: bandTexels map
+// texels, and never less than the pixel. The map samples the light's image plane: an edge it
+// places within k texels there lies within k / cos(theta) texels along a receiver tilted by
+// theta (a wall under a high sun, the ground under a low one), wherever the error came from
+// (sampling, or a tolerance that grows with the receiver's slope).
+float bandReach(const Reference& r, const std::vector<float>& texelWorld, float bandTexels,
+                std::size_t p, std::size_t c) {
+    const float cosine = r.lightCosine.empty() ? 1.0f : r.lightCosine[c];
+    const float stretch = 1.0f / std::max(cosine, 1.0f / kBandMaxStretch);
+    return std::max(r.pixelWorld[p], bandTexels * texelWorld[c] * stretch);
+}
+
 }  // namespace
+
+void extendBandAlongSurfaces(const Scene& scene, const Reference& r,
+                             const std::vector<float>& visibility,
+                             const std::vector<float>& texelWorld, float bandTexels,
+                             std::vector<std::uint8_t>& band) {
+    if (!r.rays || r.surfacePoint.empty()) return;
+    const std::size_t pixels = std::size_t(r.width) * std::size_t(r.height);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const int o = r.object[p];
+        if (o < 0 || scene.materials[scene.objects[std::size_t(o)].material].unlit) continue;
+        for (int l = 0; l < r.lights; ++l) {
+            const std::size_t c = p * std::size_t(r.lights) + std::size_t(l);
+            if (!r.applies[c] || band[c]) continue;
+            const bool refLit = r.hard[c] >= 0.5f;
+            if (refLit == (visibility[c] >= 0.5f)) continue;  // right: nothing to excuse
+            const float reach = bandReach(r, texelWorld, bandTexels, p, c);
+            if (r.rays->otherSideWithin(std::size_t(l), r.surfacePoint[p], r.surfaceNormal[p],
+                                        reach, refLit ? 1 : 0)) {
+                band[c] = 1;
+            }
+        }
+    }
+}
 
 std::vector<std::uint8_t> aliasingBand(const Reference& r, const std::vector<float>& texelWorld,
                                        float bandTexels, bool soft) {
@@ -93,14 +130,9 @@ std::vector<std::uint8_t> aliasingBand(const Reference& r, const std::vector<flo
         for (std::size_t p = 0; p < pixels; ++p) {
             const std::size_t c = p * std::size_t(r.lights) + std::size_t(l);
             if (!r.applies[c]) continue;
-            const float ratio = r.pixelWorld[p] > 0.0f ? texelWorld[c] / r.pixelWorld[p] : 0.0f;
-            // The map samples the light's image plane: an edge it places within k texels
-            // there lies within k / cos(theta) texels along a receiver tilted by theta (a
-            // wall under a high sun, the ground under a low one), wherever the error came
-            // from (sampling, or a tolerance that grows with the receiver's slope).
-            const float cosine = r.lightCosine.empty() ? 1.0f : r.lightCosine[c];
-            const float stretch = 1.0f / std::max(cosine, 1.0f / kBandMaxStretch);
-            const float radius = std::max(1.0f, bandTexels * ratio * stretch);
+            const float radius = r.pixelWorld[p] > 0.0f
+                                     ? bandReach(r, texelWorld, bandTexels, p, c) / r.pixelWorld[p]
+                                     : 1.0f;
             band[c] = d2[p] <= radius * radius;
         }
     }

@@ -26,6 +26,18 @@ std::vector<std::uint8_t> aliasingBand(const Reference& reference,
                                        const std::vector<float>& texelWorld, float bandTexels,
                                        bool soft);
 
+// The band as its definition reads, along the surface: aliasingBand measures distances on
+// screen, so it misses a boundary the camera does not see (under the caster that makes it,
+// behind a fold, past a silhouette). Each cell the render got wrong outside `band` is probed
+// with more shadow rays on its surface around it, as far as the band reaches there
+// (ShadowRays::otherSideWithin), and put in the band where the reference's shadow changes
+// within that reach. Hard shadows only (`reference.rays` set: traceReference's; `visibility`
+// and `texelWorld` as for scoreVisibility and aliasingBand).
+void extendBandAlongSurfaces(const Scene& scene, const Reference& reference,
+                             const std::vector<float>& visibility,
+                             const std::vector<float>& texelWorld, float bandTexels,
+                             std::vector<std::uint8_t>& band);
+
 // `reference` where the render drew the same surface: a copy in which no light applies at
 // the pixels whose `object` (per pixel, the scene object the render drew, -1 none) is not
 // the one the reference sees; `excluded` counts the pixels where a light applied. An empty

@@ -5,6 +5,7 @@
 // casters transmit their colour under coloured shadows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -344,6 +345,42 @@ TEST(Metrics, AliasingBandFollowsTheTerminator) {
     EXPECT_EQ(bandAt(0.0f), (std::vector<int>{0, 0, 0, 0, 0, 1, 1, 1}));
     // No surface there (cosine left at its default): no edge, no band.
     EXPECT_EQ(bandAt(1.0f), (std::vector<int>{0, 0, 0, 0, 0, 0, 0, 0}));
+}
+
+// The band along the surface: with every floor pixel of the plate scene wrong and no band
+// from the screen, the floor's pixels within the band's reach (2 texels of 0.1 stretched by
+// 1 / cos 45 degrees: 0.28) of a reference shadow boundary join the band, and no others. The
+// boundary at x = -0.01 lies under the plate, out of the camera's sight; it is found too.
+TEST(Metrics, BandExtendsToBoundariesAlongTheSurface) {
+    const Scene s = plateOverFloor();
+    const truth::Reference r = truth::traceReference(s, s.options, {});
+    ASSERT_TRUE(r.rays);
+    std::vector<float> visibility(r.hard.size());
+    for (std::size_t c = 0; c < r.hard.size(); ++c)
+        visibility[c] = 1.0f - r.hard[c];
+    const std::vector<float> texel(r.hard.size(), 0.1f);
+    std::vector<std::uint8_t> band(r.hard.size(), 0);
+    truth::extendBandAlongSurfaces(s, r, visibility, texel, 2.0f, band);
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec2 p = worldOf(x, y);
+            const std::size_t pixel = std::size_t(y) * kSize + std::size_t(x);
+            if (r.object[pixel] != 0 || std::fabs(p.y) > 0.6f) continue;  // the floor, |z| < 0.6
+            const float toEdge = std::min(std::fabs(p.x + 0.01f), std::fabs(p.x - 2.01f));
+            if (toEdge < 0.25f) {
+                EXPECT_TRUE(band[r.at(x, y, 0)]) << x << ", " << y;
+            } else if (toEdge > 0.32f) {
+                EXPECT_FALSE(band[r.at(x, y, 0)]) << x << ", " << y;
+            }
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 400);
+    // Right where the render is right: nothing to excuse, nothing added.
+    std::vector<std::uint8_t> none(r.hard.size(), 0);
+    truth::extendBandAlongSurfaces(s, r, r.hard, texel, 2.0f, none);
+    EXPECT_EQ(std::count(none.begin(), none.end(), 1), 0);
 }
 
 // The transmitted light's error counts every pair either side tints; its colour alone only
