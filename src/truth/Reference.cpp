@@ -195,15 +195,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
         // Single-sided surfaces seen from behind are culled by the main pass: look past them.
         for (int attempt = 0; attempt < 64; ++attempt) {
             RTCRayHit rh{};
-            rh.ray.org_x = from.x;
-            rh.ray.org_y = from.y;
-            rh.ray.org_z = from.z;
-            rh.ray.dir_x = dir.x;
-            rh.ray.dir_y = dir.y;
-            rh.ray.dir_z = dir.z;
-            rh.ray.tnear = tnear;
-            rh.ray.tfar = tfar;
-            rh.ray.mask = 0xffffffffu;
+            rh.ray = rayAlong(from, dir, tnear, tfar);
             rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
             rtcIntersect1(rays->all(), &context.base, &rh);
             if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return;

@@ -162,16 +162,7 @@ float ShadowRays::transmitted(const glm::vec3& origin, const glm::vec3& dir, flo
     AlphaContext context;
     rtcInitIntersectContext(&context.base);
     context.blend = mBlend;
-    RTCRay ray{};
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
-    ray.dir_x = dir.x;
-    ray.dir_y = dir.y;
-    ray.dir_z = dir.z;
-    ray.tnear = 0.0f;
-    ray.tfar = far;
-    ray.mask = 0xffffffffu;
+    RTCRay ray = rayAlong(origin, dir, 0.0f, far);
     rtcOccluded1(mCasters, &context.base, &ray);
     if (tint) *tint = context.tint;
     return ray.tfar < 0.0f ? 0.0f : context.transmission;  // Embree sets tfar to -inf on a hit
@@ -203,15 +194,7 @@ bool ShadowRays::otherSideWithin(std::size_t l, const glm::vec3& point, const gl
             // Each ray starts a little behind q, so a surface through q itself is found.
             const glm::vec3 start = q - n * (dir * behind);
             RTCRayHit rh{};
-            rh.ray.org_x = start.x;
-            rh.ray.org_y = start.y;
-            rh.ray.org_z = start.z;
-            rh.ray.dir_x = dir * n.x;
-            rh.ray.dir_y = dir * n.y;
-            rh.ray.dir_z = dir * n.z;
-            rh.ray.tnear = 0.0f;
-            rh.ray.tfar = std::min(radius, nearest) + behind;
-            rh.ray.mask = 0xffffffffu;
+            rh.ray = rayAlong(start, dir * n, 0.0f, std::min(radius, nearest) + behind);
             rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
             AlphaContext context;
             rtcInitIntersectContext(&context.base);

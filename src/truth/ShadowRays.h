@@ -18,6 +18,21 @@
 
 namespace gnomon::truth {
 
+// An Embree ray from `origin` along `dir` over [tnear, tfar], every geometry mask.
+inline RTCRay rayAlong(const glm::vec3& origin, const glm::vec3& dir, float tnear, float tfar) {
+    RTCRay ray{};
+    ray.org_x = origin.x;
+    ray.org_y = origin.y;
+    ray.org_z = origin.z;
+    ray.dir_x = dir.x;
+    ray.dir_y = dir.y;
+    ray.dir_z = dir.z;
+    ray.tnear = tnear;
+    ray.tfar = tfar;
+    ray.mask = 0xffffffffu;
+    return ray;
+}
+
 class ShadowRays {
 public:
     // Throws gnomon::Error (InvalidInput) when Embree has no device or rejects the scene.
