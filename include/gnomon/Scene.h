@@ -243,6 +243,13 @@ std::size_t triangleCount(const Scene& scene, bool castersOnly = false);
 // whole. Leaves the camera as it was for an empty scene.
 void fitCameraDepth(const Scene& scene, Camera& camera);
 
+// The same for a manual or course shadow camera, which sits at `light`'s position: far just
+// beyond the farthest corner of sceneBounds() from it, near just short of the bounds (1/2000
+// of far when the light is inside them), since a perspective map's depth resolution follows
+// near / far. For scene files whose shadow-camera leaves the planes out: the defaults 1 and
+// 100 would store no depth of a model in millimetres and cut one in kilometres.
+void fitShadowCameraDepth(const Scene& scene, const Light& light, ShadowCamera& camera);
+
 // The scenes gnomon ships, in a stable order.
 std::vector<SceneInfo> builtinScenes();
 // A built-in scene by name; throws gnomon::Error listing the known names.

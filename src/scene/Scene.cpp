@@ -30,6 +30,17 @@ namespace {
 bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+
+// The distance from `from` to the farthest corner of the box [lo, hi].
+float farthestCorner(const glm::vec3& lo, const glm::vec3& hi, const glm::vec3& from) {
+    float far = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                          corner & 4 ? hi.z : lo.z);
+        far = std::max(far, glm::length(p - from));
+    }
+    return far;
+}
 }  // namespace
 
 std::vector<std::string> Scene::validate() const {
@@ -210,15 +221,21 @@ std::size_t triangleCount(const Scene& scene, bool castersOnly) {
 void fitCameraDepth(const Scene& scene, Camera& camera) {
     glm::vec3 lo, hi;
     sceneBounds(scene, lo, hi);
-    float far = 0.0f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
-                          corner & 4 ? hi.z : lo.z);
-        far = std::max(far, glm::length(p - camera.eye));
-    }
+    const float far = farthestCorner(lo, hi, camera.eye);
     if (!(far > 0.0f) || !std::isfinite(far)) return;
     camera.far = 1.05f * far;
     camera.near = camera.far / 2000.0f;
+}
+
+void fitShadowCameraDepth(const Scene& scene, const Light& light, ShadowCamera& camera) {
+    glm::vec3 lo, hi;
+    sceneBounds(scene, lo, hi);
+    const float far = farthestCorner(lo, hi, light.position);
+    if (!(far > 0.0f) || !std::isfinite(far)) return;
+    camera.far = 1.05f * far;
+    // The nearest the light comes to the bounds: nothing nearer casts.
+    const float nearest = glm::length(glm::clamp(light.position, lo, hi) - light.position);
+    camera.near = std::max(0.95f * nearest, camera.far / 2000.0f);
 }
 
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {

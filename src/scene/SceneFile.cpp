@@ -399,6 +399,18 @@ void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
         if (!givenNear) out.camera.near = fitted.near;
         if (!givenFar) out.camera.far = fitted.far;
     }
+    // The same for the file's own manual and course shadow cameras, which sit at their light.
+    for (std::size_t i = 0; lj && i < lj->size(); ++i) {
+        Light& light = out.lights[i];  // readLight took (*lj)[i] as an object
+        if (!(*lj)[i].contains("shadow-camera") ||
+            light.shadowCamera.policy == ShadowCameraPolicy::Fit)
+            continue;
+        const Json& given = (*lj)[i].at("shadow-camera");
+        ShadowCamera fitted = light.shadowCamera;
+        fitShadowCameraDepth(out, light, fitted);
+        if (!given.contains("near")) light.shadowCamera.near = fitted.near;
+        if (!given.contains("far")) light.shadowCamera.far = fitted.far;
+    }
 
     out.options = included.options.value_or(RenderOptions{});
     if (const Json* oj = root.find("options"))

@@ -82,6 +82,21 @@ TEST(Shadows, PerspectiveCourseCameras) {
     expectShadowsMatchGeometry(scene, scene.options);
 }
 
+// A scene file in millimetres with a manual shadow camera that gives no planes: they are
+// fitted to the scene seen from the light, so the box's shadow falls where the geometry
+// says (with the defaults near 1 and far 100, the whole scene lay before the near plane and
+// nothing was shadowed).
+TEST(Shadows, ManualShadowCameraWithoutPlanesInMillimetres) {
+    const Scene scene = parseSceneFile(R"({"gnomon-scene": 1, "ground": true,
+        "objects": [{"shape": "box", "size": 0.001, "centre": [0, 0.0005, 0]}],
+        "lights": [{"type": "spot", "position": [-0.0015, 0.003, -0.001], "direction": [0.5, -1, 0.35],
+                    "outer-cone": 50, "inner-cone": 40,
+                    "shadow-camera": {"policy": "manual", "target": [0, 0, 0], "fovy": 100}}],
+        "camera": {"eye": [0.003, 0.003, 0.004], "centre": [0, 0, 0]}})",
+                                       "millimetres.json");
+    expectShadowsMatchGeometry(scene, scene.options);
+}
+
 // at least 16 shadowed lights in one main pass, each with its own map.
 TEST(Shadows, SixteenSpotLightsEachCastTheirShadow) {
     Scene scene;

@@ -195,5 +195,36 @@ TEST(SceneFile, CameraWithoutPlanesFitsThemToTheScene) {
     EXPECT_LT(farOnly.near, 0.0025f);
 }
 
+// Manual and course shadow cameras sit at their light: without near or far, the planes come
+// from the scene's extent seen from there (the defaults 1 and 100 would hold nothing of a
+// model in millimetres); planes given are kept, and fitted cameras are not touched.
+TEST(SceneFile, ShadowCameraWithoutPlanesFitsThemToTheScene) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "tiny.json";
+    for (const float scale : {0.001f, 1000.0f}) {
+        const std::string s = std::to_string(scale);
+        writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": )" + s +
+                         R"(}], "lights": [{"type": "spot", "position": [0, )" +
+                         std::to_string(3 * scale) + R"(, 0], "direction": [0, -1, 0],
+                         "shadow-camera": {"policy": "manual", "target": [0, 0, 0],
+                                           "fovy": 60}}]})");
+        const ShadowCamera c = loadSceneFile(p.string()).lights.at(0).shadowCamera;
+        // The box's farthest corner from the light (0, 3, 0) x scale, and its top face.
+        const float farthest = glm::length(glm::vec3(0.5f, 3.5f, 0.5f)) * scale;
+        EXPECT_GT(c.far, farthest) << scale;
+        EXPECT_LT(c.far, 1.1f * farthest) << scale;
+        EXPECT_LT(c.near, 2.5f * scale) << scale;  // in front of the top face
+        EXPECT_GT(c.near, 2.0f * scale) << scale;  // and not far short of it
+    }
+    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": 0.001}],
+                     "lights": [{"type": "point", "position": [0, 0.003, 0],
+                                 "shadow-camera": {"policy": "course", "far": 7}},
+                                {"type": "point", "position": [0, 0.003, 0]}]})");
+    const Scene kept = loadSceneFile(p.string());
+    EXPECT_EQ(kept.lights[0].shadowCamera.far, 7.0f);
+    EXPECT_LT(kept.lights[0].shadowCamera.near, 0.0025f);
+    EXPECT_EQ(kept.lights[1].shadowCamera, ShadowCamera{}) << "a fitted camera keeps its defaults";
+}
+
 }  // namespace
 }  // namespace gnomon
