@@ -10,7 +10,7 @@
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
 // Depth-aware tolerance: x steps of the stored depth's spacing; y, z that step for the 2D
-// maps' and the cubes' formats (shadow::depthAwareTolerance says which step, and why float
+// maps' and the cubes' formats (shadow::toleranceStep says which step, and why float
 // maps take one ulp of 0.5 at every depth).
 layout(location = 7) uniform vec3 uDepthAware;
 

@@ -97,10 +97,6 @@ float toleranceStep(DepthFormat format) {
     return storedDepthSpacing(format, 0.5f);
 }
 
-float depthAwareTolerance(DepthFormat format, float constant, float depthAware) {
-    return constant + depthAware * toleranceStep(format);
-}
-
 float worldDepthResolution(float z, float near, float far, int bits) {
     // stored(z) = ((f + n) / (f - n) - 2 f n / ((f - n) z)) / 2 + 1/2, so
     // d stored / d z = f n / ((f - n) z^2); one step of 1 / (2^bits - 1) spans its inverse.

@@ -43,12 +43,9 @@ float storedDepthSpacing(DepthFormat format, float stored);
 // (f + n) / (f - n) - 2fn / ((f - n) z)), so near 0 it is off by their rounding, not by its
 // own finer spacing: a point light's cube fitted tight to a floor right under it stores
 // depths near 1e-3, and with the stored depth's own ulp it shadowed all of that floor.
+// A lookup's tolerance is constant + depthAware x this step (shaders/shadow_lookup.glsl's
+// depthTolerance, where the lookup's own float rounding, its mapRounding, is below it).
 float toleranceStep(DepthFormat format);
-
-// The tolerance of a lookup in stored-depth units: constant + depthAware x toleranceStep
-// (what shaders/shadow_lookup.glsl's depthTolerance computes where the lookup's own float
-// rounding, its mapRounding, is below that step).
-float depthAwareTolerance(DepthFormat format, float constant, float depthAware);
 
 // The course text's error graph: the view-space distance between adjacent stored depths at
 // view distance `z` for a perspective camera (near, far) storing `bits` bits, i.e. how far

@@ -113,12 +113,9 @@ TEST(DepthAware, SpacingMatchesNaiveStepping) {
 TEST(DepthAware, ToleranceCoversEachFormatsRoundTrip) {
     for (DepthFormat f : {DepthFormat::R8, DepthFormat::Rgba8Packed256, DepthFormat::Rgba8Packed255,
                           DepthFormat::Depth16, DepthFormat::Depth24}) {
-        EXPECT_GE(shadow::depthAwareTolerance(f, 0.0f, 1.0f),
-                  shadow::depthRoundTripBound(f) * 0.999f)
-            << toString(f);
+        EXPECT_GE(shadow::toleranceStep(f), shadow::depthRoundTripBound(f) * 0.999f) << toString(f);
     }
-    EXPECT_FLOAT_EQ(shadow::depthAwareTolerance(DepthFormat::Depth16, 0.001f, 2.0f),
-                    0.001f + 2.0f / 65535.0f);
+    EXPECT_FLOAT_EQ(shadow::toleranceStep(DepthFormat::Depth16), 1.0f / 65535.0f);
     // depth32f: one ulp of 0.5 (2^-24) whatever the depth, not the finer ulp of a depth
     // near 0 that the perspective's terms near 1 cannot reach.
     EXPECT_FLOAT_EQ(shadow::toleranceStep(DepthFormat::Depth32F), std::ldexp(1.0f, -24));
