@@ -166,64 +166,53 @@ TEST(SceneFile, MeshShapeWithFlatListsAndGeneratedNormals) {
 
 // A camera without near and far takes them from the scene's extent, so a model in millimetres
 // is not cut away whole by the defaults (1, 100) and one in kilometres is not clipped; given
-// planes are kept as written.
+// planes are kept as written. The same for manual and course shadow cameras.
 TEST(SceneFile, CameraWithoutPlanesFitsThemToTheScene) {
     ScopedTempDir dir;
     const fs::path p = dir.path() / "tiny.json";
     for (const float scale : {0.001f, 1000.0f}) {
-        const std::string s = std::to_string(scale);
+        // A box of the scale's size, the camera 3 sizes ahead of it and a spot 3 sizes above
+        // it with a manual shadow camera: neither gives planes.
+        const std::string s = std::to_string(scale), three = std::to_string(3 * scale);
         writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": )" + s +
-                         R"(}], "lights": [], "camera": {"eye": [0, )" + s + ", " +
-                         std::to_string(3 * scale) + "]}}");
-        const Camera c = loadSceneFile(p.string()).camera;
+                         R"(}], "lights": [{"type": "spot", "position": [0, )" + three +
+                         R"(, 0], "direction": [0, -1, 0], "shadow-camera": {"policy": "manual",
+                         "target": [0, 0, 0], "fovy": 60}}], "camera": {"eye": [0, )" +
+                         s + ", " + three + "]}}");
+        const Scene loaded = loadSceneFile(p.string());
+        const Camera& c = loaded.camera;
         const float farthestCorner = glm::length(glm::vec3(0.5f, 1.5f, 3.5f)) * scale;
         EXPECT_GT(c.far, farthestCorner) << scale;
         EXPECT_LT(c.far, 1.1f * farthestCorner) << scale;
         EXPECT_LT(c.near, 2.5f * scale) << scale;  // in front of the box's face
         EXPECT_GT(c.near, 0.0f) << scale;
+        // Manual and course shadow cameras sit at their light: their planes come from the
+        // scene's extent seen from there (the defaults 1 and 100 would hold nothing of the
+        // millimetre box), far beyond its farthest corner, near short of its top face.
+        const ShadowCamera& sc = loaded.lights.at(0).shadowCamera;
+        const float farthestFromLight = glm::length(glm::vec3(0.5f, 3.5f, 0.5f)) * scale;
+        EXPECT_GT(sc.far, farthestFromLight) << scale;
+        EXPECT_LT(sc.far, 1.1f * farthestFromLight) << scale;
+        EXPECT_LT(sc.near, 2.5f * scale) << scale;
+        EXPECT_GT(sc.near, 2.0f * scale) << scale;  // and not far short of it
     }
     writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": 0.001}],
                      "lights": [], "camera": {"eye": [0, 0, 0.003], "near": 0.5, "far": 7}})");
     const Camera kept = loadSceneFile(p.string()).camera;
     EXPECT_EQ(kept.near, 0.5f);
     EXPECT_EQ(kept.far, 7.0f);
-    // One plane given: the other is fitted.
-    writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": 0.001}],
-                     "lights": [], "camera": {"eye": [0, 0, 0.003], "far": 7}})");
-    const Camera farOnly = loadSceneFile(p.string()).camera;
-    EXPECT_EQ(farOnly.far, 7.0f);
-    EXPECT_LT(farOnly.near, 0.0025f);
-}
-
-// Manual and course shadow cameras sit at their light: without near or far, the planes come
-// from the scene's extent seen from there (the defaults 1 and 100 would hold nothing of a
-// model in millimetres); planes given are kept, and fitted cameras are not touched.
-TEST(SceneFile, ShadowCameraWithoutPlanesFitsThemToTheScene) {
-    ScopedTempDir dir;
-    const fs::path p = dir.path() / "tiny.json";
-    for (const float scale : {0.001f, 1000.0f}) {
-        const std::string s = std::to_string(scale);
-        writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": )" + s +
-                         R"(}], "lights": [{"type": "spot", "position": [0, )" +
-                         std::to_string(3 * scale) + R"(, 0], "direction": [0, -1, 0],
-                         "shadow-camera": {"policy": "manual", "target": [0, 0, 0],
-                                           "fovy": 60}}]})");
-        const ShadowCamera c = loadSceneFile(p.string()).lights.at(0).shadowCamera;
-        // The box's farthest corner from the light (0, 3, 0) x scale, and its top face.
-        const float farthest = glm::length(glm::vec3(0.5f, 3.5f, 0.5f)) * scale;
-        EXPECT_GT(c.far, farthest) << scale;
-        EXPECT_LT(c.far, 1.1f * farthest) << scale;
-        EXPECT_LT(c.near, 2.5f * scale) << scale;  // in front of the top face
-        EXPECT_GT(c.near, 2.0f * scale) << scale;  // and not far short of it
-    }
+    // One plane given: the other is fitted. A fitted shadow camera keeps its defaults.
     writeText(p, R"({"gnomon-scene": 1, "objects": [{"shape": "box", "size": 0.001}],
                      "lights": [{"type": "point", "position": [0, 0.003, 0],
                                  "shadow-camera": {"policy": "course", "far": 7}},
-                                {"type": "point", "position": [0, 0.003, 0]}]})");
-    const Scene kept = loadSceneFile(p.string());
-    EXPECT_EQ(kept.lights[0].shadowCamera.far, 7.0f);
-    EXPECT_LT(kept.lights[0].shadowCamera.near, 0.0025f);
-    EXPECT_EQ(kept.lights[1].shadowCamera, ShadowCamera{}) << "a fitted camera keeps its defaults";
+                                {"type": "point", "position": [0, 0.003, 0]}],
+                     "camera": {"eye": [0, 0, 0.003], "far": 7}})");
+    const Scene farOnly = loadSceneFile(p.string());
+    EXPECT_EQ(farOnly.camera.far, 7.0f);
+    EXPECT_LT(farOnly.camera.near, 0.0025f);
+    EXPECT_EQ(farOnly.lights[0].shadowCamera.far, 7.0f);
+    EXPECT_LT(farOnly.lights[0].shadowCamera.near, 0.0025f);
+    EXPECT_EQ(farOnly.lights[1].shadowCamera, ShadowCamera{});
 }
 
 }  // namespace
