@@ -229,8 +229,10 @@ struct Renderer::Impl {
         bindClearedTarget(options.width, options.height, in.depthReady);
         stats.mainFromViewDepth = in.depthReady;
         in.viewFromWorld = viewFromWorld;
+        in.viewFromRelative = scene.relative(viewFromWorld);
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
-        const glm::mat4 fitView = fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld;
+        const glm::mat4 fitView =
+            scene.relative(fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld);
         in.cascadeDepth = -glm::vec4(fitView[0][2], fitView[1][2], fitView[2][2], fitView[3][2]);
         in.ambient = s.ambient;
         in.lights = &plan.records();

@@ -238,6 +238,15 @@ void fitShadowCameraDepth(const Scene& scene, const Light& light, ShadowCamera& 
     camera.near = std::max(0.95f * nearest, camera.far / 2000.0f);
 }
 
+glm::vec3 coordinateOrigin(const Aabb& worldBox) {
+    if (worldBox.empty()) return glm::vec3(0.0f);
+    const glm::vec3 c = worldBox.centre();
+    const float r = std::max(worldBox.radius(), 1e-30f);
+    if (!(glm::length(c) > 4.0f * r) || !std::isfinite(glm::length(c))) return glm::vec3(0.0f);
+    const float grid = std::exp2(std::ceil(std::log2(r)));
+    return glm::round(c / grid) * grid;
+}
+
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
     if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
     return scene.lights[index].enabled;

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include <embree3/rtcore.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "gnomon/Error.h"
 #include "scene/SceneUtil.h"
@@ -135,7 +136,7 @@ struct LightTracer {
                 // A disc of `radius`: around the light facing the point (spot, point), or
                 // in the area light's plane around the point's foot.
                 const glm::vec3 centre =
-                    light.type == LightType::Area ? point - ld * distance : light.position;
+                    light.type == LightType::Area ? point - ld * distance : rays.light(l).position;
                 basis(light.type == LightType::Area ? ld : toLight, u, v);
                 for (int i = 0; i < samples; ++i) {
                     const glm::vec2 s = discSample(i, samples, turn) * radius;
@@ -166,10 +167,13 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                                    blend == BlendShadows::Coloured, contactRange > 0.0f);
 
     const float aspect = float(options.width) / float(options.height);
-    const glm::mat4 viewFromWorld = shadow::viewFromWorld(scene.camera);
-    const glm::mat4 worldFromClip =
-        glm::inverse(shadow::clipFromView(scene.camera, aspect) * viewFromWorld);
-    const glm::vec3 eye = scene.camera.eye;
+    // View rays in the rays' coordinates (ShadowRays::origin), as the renderer's are.
+    const glm::dvec3 origin(rays->origin());
+    const glm::mat4 viewFromRelative = glm::mat4(glm::dmat4(shadow::viewFromWorld(scene.camera)) *
+                                                 glm::translate(glm::dmat4(1.0), origin));
+    const glm::mat4 relativeFromClip =
+        glm::inverse(shadow::clipFromView(scene.camera, aspect) * viewFromRelative);
+    const glm::vec3 eye = glm::vec3(glm::dvec3(scene.camera.eye) - origin);
     const glm::vec3 forward = glm::normalize(scene.camera.centre - scene.camera.eye);
     const bool ortho = scene.camera.projection == Projection::Orthographic;
     const float pixelAtUnit = ortho
@@ -183,8 +187,8 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     auto tracePixel = [&](int x, int y) {
         const float nx = (float(x) + 0.5f) / float(options.width) * 2.0f - 1.0f;
         const float ny = 1.0f - (float(y) + 0.5f) / float(options.height) * 2.0f;
-        const glm::vec4 a = worldFromClip * glm::vec4(nx, ny, -1.0f, 1.0f);
-        const glm::vec4 b = worldFromClip * glm::vec4(nx, ny, 1.0f, 1.0f);
+        const glm::vec4 a = relativeFromClip * glm::vec4(nx, ny, -1.0f, 1.0f);
+        const glm::vec4 b = relativeFromClip * glm::vec4(nx, ny, 1.0f, 1.0f);
         const glm::vec3 from = glm::vec3(a) / a.w, to = glm::vec3(b) / b.w;
         const glm::vec3 dir = glm::normalize(to - from);
         float tnear = 0.0f;

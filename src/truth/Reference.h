@@ -35,7 +35,8 @@ struct Reference {
     int width = 0, height = 0, lights = 0;
     std::vector<int> object;        // object index the camera sees, -1: nothing
     std::vector<float> pixelWorld;  // world size of the pixel's footprint at the surface
-    // Where a receiving surface is seen: its point and geometric normal (towards the camera).
+    // Where a receiving surface is seen: its point (relative to rays->origin()) and geometric
+    // normal (towards the camera).
     std::vector<glm::vec3> surfacePoint, surfaceNormal;
     // 1 where the light's shadow can show: the light is on and casts shadows, the object
     // receives them, and the light reaches the surface (in front of it, inside a spot's

@@ -46,8 +46,14 @@ public:
     // Throws gnomon::Error when Embree reports a failure since the last call.
     void check(const char* what) const;
 
-    // Object o's positions in world space (as the renderer places them at options.time).
+    // Every point, position and light here is relative to this one (coordinateOrigin of the
+    // scene's bounds), as the renderer's are: rays started off a surface 10 000 units out
+    // otherwise start a float's step (0.001) or more away from it.
+    const glm::vec3& origin() const { return mOrigin; }
+    // Object o's positions relative to origin() (as the renderer places them at options.time).
     const std::vector<glm::vec3>& positions(std::size_t o) const { return mPositions[o]; }
+    // Light l, placed relative to origin().
+    const Light& light(std::size_t l) const { return mLights[l]; }
     // The scene's size, for ray offsets.
     float scale() const { return mScale; }
     // Where a ray leaving `point` (seen with normal `n`) starts: off the surface by a margin
@@ -100,6 +106,7 @@ private:
     std::vector<bool> mOn;  // per light: on and casting shadows
     BlendShadows mBlend;
     float mScale = 1.0f;
+    glm::vec3 mOrigin{0.0f};
 };
 
 }  // namespace gnomon::truth

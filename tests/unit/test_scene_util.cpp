@@ -1,6 +1,7 @@
 // scene/SceneUtil.h, what shadow fitting reads from a scene: mesh bounds in model space,
 // world bounds at a time (animated objects move them; castersOnly drops non-casters), and
 // which lights are on (RenderOptions::lightOnly overrides the scene's switches).
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -74,6 +75,26 @@ TEST(SceneUtil, WorldBoundsOfTutorialRoom) {
     const Aabb b = worldBounds(s, meshBounds(s), 0.0, false);
     test::expectVec(b.min, {-10.5f, -0.5f, -10.5f});
     test::expectVec(b.max, {10.5f, 6.0f, 10.5f});
+}
+
+// Coordinates are taken relative to the origin for a scene around it (the numbers of scenes
+// built there unchanged), and near the scene's centre when it lies far out, on a grid of
+// about its size that small motions do not leave.
+TEST(SceneUtil, CoordinateOriginStaysAtZeroNearItAndFollowsAFarScene) {
+    EXPECT_EQ(coordinateOrigin(Aabb()), glm::vec3(0.0f));
+    EXPECT_EQ(coordinateOrigin(Aabb{{-3, 0, -3}, {3, 2, 3}}), glm::vec3(0.0f));
+    EXPECT_EQ(coordinateOrigin(Aabb{{3, 0, 3}, {7, 2, 7}}), glm::vec3(0.0f));  // 2.4 radii out
+    const Aabb far{{9999, 0, -10001}, {10001, 2, -9999}};
+    const glm::vec3 o = coordinateOrigin(far);
+    EXPECT_LT(glm::length(o - far.centre()), far.radius());
+    // The radius is 1.7: a grid of 2. Moved by a tenth of its size, it keeps the same origin.
+    const Aabb moved{far.min + glm::vec3(0.17f, 0, 0), far.max + glm::vec3(0.17f, 0, 0)};
+    EXPECT_EQ(coordinateOrigin(moved), o);
+    const float grid = 2.0f;
+    EXPECT_EQ(o / grid, glm::round(o / grid)) << "on the grid";
+    // Not finite: no origin to take.
+    const float inf = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(coordinateOrigin(Aabb{{inf, 0, 0}, {inf, 1, 1}}), glm::vec3(0.0f));
 }
 
 TEST(SceneUtil, LightIsOnFollowsSceneSwitchesUnlessLightOnly) {
