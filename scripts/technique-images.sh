@@ -33,3 +33,13 @@ if [[ -f $stripes ]]; then
     done
 fi
 echo "$out/coloured*.png"
+# Far from the origin: Suzanne on a ground 100 000 units out, and its error map.
+suzanne=../shared/scenes/Suzanne/Suzanne.gltf
+if [[ -f $suzanne ]]; then
+    printf '{"gnomon-scene": 1, "include": [{"scene": "%s", "transform": {"translate": [100000, 0, -100000]}}], "ground": true}\n' \
+        "$(realpath "$suzanne")" >"$work/far.json"
+    "$gnomon" score --size 256x256 --scene "$work/far.json" --out-dir "$work/far" >/dev/null 2>&1
+    cp "$work/far/render.png" "$out/far-origin.png"
+    cp "$work/far/errors.png" "$out/far-origin-errors.png"
+    echo "$out/far-origin*.png"
+fi
