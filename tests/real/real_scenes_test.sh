@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Shadow quality on real scenes: eleven hard views of scripts/quality-real.py (inside Sponza
+# Shadow quality on real scenes: twelve hard views of scripts/quality-real.py (inside Sponza
 # under a sun and under a spot, a low sun, a spot light, point lights, faces edge-on or
-# nearly edge-on to a sun, blended panels throwing coloured light; its VIEWS are the one
+# nearly edge-on to a sun, blended panels throwing coloured light, a model 100 000 units from
+# the world's origin; its VIEWS are the one
 # definition, written out with --write-scene and --view-flags) scored against the ray-traced reference at 192x192. Fails when a view's
 # overall misclassified fraction reaches 1 %, its false shadow outside the aliasing band
 # 0.05 %, or its leak outside the band 0.1 %: those are errors a viewer sees (acne,
@@ -14,7 +15,7 @@
 set -uo pipefail
 gnomon=$1; scenes=$2; work=$3
 views=(sponza-atrium sponza-gallery sponza-capitals-spot lantern-low-sun dragon-spot lamp-stem
-       toycar-lamp instancing-side-sun alphablend-sun suzanne-edge-on suzanne-ear)
+       toycar-lamp instancing-side-sun alphablend-sun suzanne-edge-on suzanne-ear suzanne-far)
 size=192x192
 quality_real=$(dirname "$0")/../../scripts/quality-real.py
 rm -rf "$work" && mkdir -p "$work"
