@@ -250,6 +250,12 @@ void fitCameraDepth(const Scene& scene, Camera& camera);
 // 100 would store no depth of a model in millimetres and cut one in kilometres.
 void fitShadowCameraDepth(const Scene& scene, const Light& light, ShadowCamera& camera);
 
+// Can the scene's camera see any of its objects in an image of `aspect` (width / height)?
+// False when their world bounds lie wholly beyond one side of the camera's view volume
+// (behind it, past its far plane, off to a side): the picture would hold the background
+// only. True whenever some part may show, and for a scene without objects.
+bool cameraSeesScene(const Scene& scene, float aspect);
+
 // The scenes gnomon ships, in a stable order.
 std::vector<SceneInfo> builtinScenes();
 // A built-in scene by name; throws gnomon::Error listing the known names.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "shadow/ShadowMath.h"
+
 namespace gnomon::shadow {
 
 namespace {
@@ -106,3 +108,31 @@ bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ign
 }
 
 }  // namespace gnomon::shadow
+
+namespace gnomon {
+
+// Declared in gnomon/Scene.h: the scene's box against the camera's volume, in clip space.
+bool cameraSeesScene(const Scene& scene, float aspect) {
+    glm::vec3 lo, hi;
+    sceneBounds(scene, lo, hi);
+    if (scene.objects.empty() || lo == hi) return true;
+    const glm::mat4 clipFromWorld =
+        shadow::clipFromView(scene.camera, aspect) * shadow::viewFromWorld(scene.camera);
+    glm::vec4 corners[8];
+    for (int c = 0; c < 8; ++c)
+        corners[c] = clipFromWorld *
+                     glm::vec4(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z, 1.0f);
+    // The view volume is -w <= x, y, z <= w: the box is unseen when every corner lies beyond
+    // the same one of those six planes.
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const float side : {-1.0f, 1.0f}) {
+            bool allBeyond = true;
+            for (const glm::vec4& p : corners)
+                allBeyond = allBeyond && side * p[axis] > p.w;
+            if (allBeyond) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace gnomon

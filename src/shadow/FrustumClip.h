@@ -1,6 +1,7 @@
 // Boxes against frusta, exactly: what part of an object's box a camera's volume holds. The
 // fitted light cameras (shadow/ShadowMath) use it to clip receivers to the view and casters
-// to a light's volume; the shadow pass to skip casters outside a map. Pure math, no GL.
+// to a light's volume; the shadow pass to skip casters outside a map; the CLI to say when a
+// camera sees none of the scene (gnomon::cameraSeesScene). Pure math, no GL.
 #pragma once
 
 #include <array>

@@ -301,6 +301,13 @@ scene_flags)
     run render --scene tutorial-room --out "$work/d.png" --sun 10,-5
     expect 2 "--sun: expected AZIMUTH,ELEVATION"
     [[ ! -e "$work/d.png" ]] || fail "a refused render left d.png"
+    # A camera turned away from the scene renders, and says that it shows none of it.
+    run render --scene tutorial-room --size 32x32 --out "$work/e.png" --camera-eye 0,5,30 \
+        --camera-target 0,5,60
+    expect 0 "sees none of the scene: the image holds the background only"
+    [[ -e "$work/e.png" ]] || fail "the turned-away render wrote nothing"
+    run render --scene tutorial-room --size 32x32 --out "$work/f.png" --camera-eye 6,4,8
+    grep -q "sees none" "$work/stderr" && fail "warned of a camera that sees the room"
     ;;
 pointless_flags)
     # A flag the other options make pointless is said once, and the render still runs.

@@ -153,6 +153,24 @@ TEST(Renderer, BrokenSceneIsRejectedWithItsLocation) {
     }
 }
 
+// The CLI warns of a camera that shows none of the scene; the test behind it is conservative:
+// false only where the scene's bounds lie wholly beyond one side of the view volume.
+TEST(Renderer, CameraSeesSceneUnlessTheBoundsLieBeyondOneSide) {
+    Scene s = builtinScene("tutorial-room");
+    EXPECT_TRUE(cameraSeesScene(s, 1.0f));
+    s.camera.eye = {0.0f, 5.0f, 30.0f};  // outside the room, turned away from it
+    s.camera.centre = {0.0f, 5.0f, 60.0f};
+    EXPECT_FALSE(cameraSeesScene(s, 1.0f));
+    s.camera.centre = {0.0f, 5.0f, 0.0f};  // turned back towards it
+    EXPECT_TRUE(cameraSeesScene(s, 1.0f));
+    s.camera.far = 1.0f;  // but it all lies past the far plane
+    EXPECT_FALSE(cameraSeesScene(s, 1.0f));
+    s.camera.far = 100.0f;
+    s.camera.centre = {300.0f, 5.0f, 30.0f};  // off to the side: it lies past the left plane
+    EXPECT_FALSE(cameraSeesScene(s, 1.0f));
+    EXPECT_TRUE(cameraSeesScene(Scene{}, 1.0f)) << "nothing to see is not a camera's fault";
+}
+
 TEST(Renderer, ShadowsOffRendersNoShadowPass) {
     const Scene s = builtinScene("course-cubes");
     RenderOptions o = small(s);
