@@ -5,8 +5,6 @@
 #include <string_view>
 #include <tuple>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "scene/MeshTopology.h"
 #include "scene/SceneUtil.h"
 #include "shadow/StandIn.h"
@@ -171,8 +169,6 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         mStandInRanges.at(casterDetail < 1.0f ? casterDetail : 1.0f);
 
     // Object records: rebuilt on the CPU (cheap), uploaded only when they differ.
-    mOrigin = coordinateOrigin(worldBounds(scene, mMeshBounds, seconds, false));
-    const glm::dmat4 relativeFromWorld = glm::translate(glm::dmat4(1.0), -glm::dvec3(mOrigin));
     const size_t n = scene.objects.size();
     const bool resized = mObjectData.size() != n;
     mObjectData.resize(n);
@@ -191,9 +187,9 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         mHasBlendedCasters =
             mHasBlendedCasters || (mat.alphaMode == AlphaMode::Blend && o.castsShadows);
         GpaObject g;
-        const glm::mat4 worldFromModel = o.worldFromModelAt(seconds);
-        g.worldFromModel = glm::mat4(relativeFromWorld * glm::dmat4(worldFromModel));
-        g.worldFromModelNormal = glm::mat4(glm::transpose(glm::inverse(glm::mat3(worldFromModel))));
+        g.worldFromModel = o.worldFromModelAt(seconds);
+        g.worldFromModelNormal =
+            glm::mat4(glm::transpose(glm::inverse(glm::mat3(g.worldFromModel))));
         g.baseColour = glm::vec4(mat.baseColour, mat.alpha);
         g.material = {mat.specular, mat.shininess, mat.unlit ? 1.0f : 0.0f,
                       mat.doubleSided ? 1.0f : 0.0f};
@@ -206,7 +202,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
             mObjectData[i] = g;
             dataChanged = true;
         }
-        const Aabb box = mMeshBounds[o.mesh].transformed(worldFromModel);
+        const Aabb box = mMeshBounds[o.mesh].transformed(g.worldFromModel);
         mBounds.extend(box);
         if (o.castsShadows) mCasterBounds.extend(box);
         const Mesh& mesh = scene.meshes[o.mesh];
@@ -248,10 +244,6 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     mSyncedRevision = scene.revision.value();
     mSyncedSeconds = seconds;
     return changed;
-}
-
-glm::mat4 GpuScene::relative(const glm::mat4& xFromWorld) const {
-    return glm::mat4(glm::dmat4(xFromWorld) * glm::translate(glm::dmat4(1.0), glm::dvec3(mOrigin)));
 }
 
 // The object-index attribute (sized to the objects) and the draw commands in item order,

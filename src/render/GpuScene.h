@@ -89,17 +89,6 @@ public:
     }
     // World bounds of all objects (or casters only) at the synced time.
     const Aabb& bounds() const { return mBounds; }
-    // The GPU's positions are taken relative to this point, not to the world's origin
-    // (coordinateOrigin, scene/SceneUtil.h): far from it, positions interpolated across a
-    // triangle and multiplied by a light's matrix striped a model with acne (Suzanne 10 000
-    // units out: 4.8 % of the view misclassified, against 0.08 % at the origin). Every
-    // matrix the GPU applies to the objects' positions goes through relative() (the CPU
-    // keeps world coordinates).
-    const glm::vec3& origin() const { return mOrigin; }
-    // `xFromWorld` for positions relative to origin() (x_from_world * translate(origin),
-    // in double precision), and a world point relative to it.
-    glm::mat4 relative(const glm::mat4& xFromWorld) const;
-    glm::vec3 relative(const glm::vec3& worldPoint) const { return worldPoint - mOrigin; }
     const Aabb& casterBounds() const { return mCasterBounds; }
     // Does any object have an unlit material (shadows darken it whatever the light's falloff)?
     bool hasUnlit() const { return mHasUnlit; }
@@ -133,7 +122,6 @@ private:
     std::vector<gl::Texture> mTextures;  // Scene::textures order
     gl::Texture mWhite;
     bool mHaveGeometry = false;
-    glm::vec3 mOrigin{0.0f};
     void setInstanceDivisor(GLsizei instances) const;
 
     // glMultiDrawElementsIndirect's record.

@@ -28,10 +28,9 @@ bool casts(const Scene& s, const RenderOptions& options, std::size_t i) {
     return options.shadow.enabled && s.lights[i].castsShadows && lightIsOn(s, options, i);
 }
 
-// The map-related fields of a light record for a single-frustum or cube frame, in the
-// GPU's coordinates (`scene`'s relative ones).
+// The map-related fields of a light record for a single-frustum or cube frame.
 void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const Light& light,
-                      const ShadowOptions& options, const GpuScene& scene) {
+                      const ShadowOptions& options) {
     g.shadow.y = frame.texelWorldSize;
     g.wsPosition.w = frame.near;
     g.shadowBias.w = frame.far;
@@ -50,7 +49,7 @@ void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const 
                  : frame.kind == shadow::FrameKind::Orthographic ? 1.0f
                                                                  : 0.0f;
     if (frame.kind != shadow::FrameKind::Cube) {
-        g.textureFromWorld = shadow::textureFromClip() * scene.relative(frame.clipFromWorld());
+        g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
     }
 }
 }  // namespace
@@ -144,16 +143,16 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
                            : 1;
         }
         if (cascadable && cascades > 1 && !(samples && samples->empty())) {
-            planCascades(s, options, i, direction, mapSize, cascades, aspect, scene, g);
+            planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds(), g);
         } else if (shadowing) {
             Held* h = held(i);
             const shadow::LightCameraFrame frame = shadow::lightCameraFrame(
                 light, mFitCamera, mFit, mapSize, h ? &h->maps[0] : nullptr);
             if (frame.valid) {
-                fillShadowRecord(g, frame, light, options.shadow, scene);
+                fillShadowRecord(g, frame, light, options.shadow);
                 g.soft.w = float(i);
                 if (frame.kind == shadow::FrameKind::Cube) {
-                    g.wsPosition = glm::vec4(scene.relative(light.position), frame.near);
+                    g.wsPosition = glm::vec4(light.position, frame.near);
                 }
                 mShadowed.push_back({int(i), mapSize, frame,
                                      light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
@@ -218,8 +217,7 @@ void LightPlan::orderLights(std::size_t sceneLights) {
 // camera's near plane to where the scene ends, each a stabilised sphere around its slice.
 void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
                              const glm::vec3& direction, int mapSize, int count, float aspect,
-                             const GpuScene& scene, GpuLight& g) {
-    const Aabb& sceneBounds = scene.bounds();
+                             const Aabb& sceneBounds, GpuLight& g) {
     const Camera& cam = mFitCamera;
     const shadow::ViewSamples* samples = mFit.samples;
     float near = cam.near, far = cam.far;
@@ -279,7 +277,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
                                          options.shadow.stabilise);
         }
         GpuLight c = g;
-        fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow, scene);
+        fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
         c.soft.w = float(lightIndex);
         c.attenuation.x = to;
         c.wsPosition = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);

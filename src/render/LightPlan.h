@@ -50,7 +50,7 @@ private:
     void orderLights(std::size_t sceneLights);
     void planCascades(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
                       const glm::vec3& direction, int mapSize, int count, float aspect,
-                      const GpuScene& scene, GpuLight& g);
+                      const Aabb& sceneBounds, GpuLight& g);
 
     static constexpr int kMaxCascades = 4;
     // What a following frame keeps of the previous one, per scene light: its single map's

@@ -236,7 +236,7 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
 
 void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     glUseProgram(p.id());
-    glUniformMatrix4fv(1, 1, GL_FALSE, &u.in->viewFromRelative[0][0]);
+    glUniformMatrix4fv(1, 1, GL_FALSE, &u.in->viewFromWorld[0][0]);
     glUniformMatrix4fv(2, 1, GL_FALSE, &u.in->clipFromView[0][0]);
     glUniform3fv(3, 1, &u.in->ambient[0]);
     glUniform1f(4, u.shadowFactor);
@@ -326,7 +326,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
                                        : options.shadow.depthFormat;
     FrameUniforms u;
     u.in = &in;
-    u.worldFromView = glm::inverse(in.viewFromRelative);
+    u.worldFromView = glm::inverse(in.viewFromWorld);
     u.viewZFromDepth = viewZFromDepth(in.clipFromView);
     u.shadowFactor = options.shading.shadowFactor;
     u.depthAware =

@@ -34,11 +34,9 @@ class VisibilityTarget;
 
 struct MainPassInputs {
     glm::mat4 viewFromWorld{1.0f};
-    // The same for the GPU's positions, relative to GpuScene::origin().
-    glm::mat4 viewFromRelative{1.0f};
     glm::mat4 clipFromView{1.0f};
-    // With cascades: the view depth that picks one, as a row on the GPU's (relative)
-    // positions (the depth along the camera the cascades were fitted to; see main.frag.glsl).
+    // With cascades: the view depth that picks one, as a row on world positions (the depth
+    // along the camera the cascades were fitted to; see main.frag.glsl).
     glm::vec4 cascadeDepth{0.0f};
     glm::vec3 ambient{0.0f};
     const std::vector<GpuLight>* lights = nullptr;  // the scene's lights, then cascade records

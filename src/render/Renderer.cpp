@@ -16,6 +16,7 @@
 #include "render/MainPass.h"
 #include "render/MomentPass.h"
 #include "render/PassClock.h"
+#include "render/RelativeScene.h"
 #include "render/ShadowPass.h"
 #include "render/TiledLights.h"
 #include "render/TransmittancePass.h"
@@ -59,7 +60,9 @@ struct Renderer::Impl {
     gl::Framebuffer panelTarget;
     render::ViewDepthPass viewDepth;
     render::LightPlan plan;
-    Camera lastCamera;  // the last frame's view and size, for mapUsage()
+    render::RelativeScene relative;  // the scene near the origin (RelativeScene.h)
+    Camera relativeFit;              // the fit camera moved as the scene is
+    Camera lastCamera;               // the last frame's view and size, for mapUsage()
     int lastWidth = 1, lastHeight = 1;
     std::uint64_t validRevision = 0;  // the last Scene::revision whose content was valid
     // The last main pass drawn, for measureMainFloor() (lights: plan's records).
@@ -150,10 +153,18 @@ struct Renderer::Impl {
 
     // The frame in `target`, not read back.
     // `fitCamera` (null: the scene's): the camera the shadow maps follow (Renderer.h).
-    void draw(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility,
+    void draw(const Scene& world, const RenderOptions& options, ShadowVisibility* visibility,
               const Camera* fitCamera = nullptr) {
-        check(s, options);
+        check(world, options);
         makeCurrent();
+        // Everything from here on works in coordinates near the scene (RelativeScene.h).
+        const Scene& s = relative.of(world, options.time);
+        if (fitCamera) relativeFit = relative.moved(*fitCamera);
+        drawRelative(s, options, visibility, fitCamera ? &relativeFit : nullptr);
+    }
+
+    void drawRelative(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility,
+                      const Camera* fitCamera) {
         scene.sync(s, options.time, options.shadow.casterDetail);
 
         const float aspect = float(options.width) / float(options.height);
@@ -229,10 +240,8 @@ struct Renderer::Impl {
         bindClearedTarget(options.width, options.height, in.depthReady);
         stats.mainFromViewDepth = in.depthReady;
         in.viewFromWorld = viewFromWorld;
-        in.viewFromRelative = scene.relative(viewFromWorld);
         in.clipFromView = shadow::clipFromView(s.camera, aspect);
-        const glm::mat4 fitView =
-            scene.relative(fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld);
+        const glm::mat4 fitView = fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld;
         in.cascadeDepth = -glm::vec4(fitView[0][2], fitView[1][2], fitView[2][2], fitView[3][2]);
         in.ambient = s.ambient;
         in.lights = &plan.records();

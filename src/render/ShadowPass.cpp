@@ -243,8 +243,7 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
     glUseProgram(program(kPlain, false).id());
-    const glm::mat4 clipFromRelative = scene.relative(clipFromWorld);
-    glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromRelative[0][0]);
+    glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
     scene.bind();
     std::uint32_t runStart = 0, runLength = 0;
     const std::vector<DrawItem>& items = scene.items();
@@ -382,11 +381,10 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
             options.blendShadows};
         if (cube) {
             for (int face = 0; face < 6; ++face) {
-                want.clipFromWorld[size_t(face)] =
-                    scene.relative(light.frame.faceClipFromWorld(face));
+                want.clipFromWorld[size_t(face)] = light.frame.faceClipFromWorld(face);
             }
         } else {
-            want.clipFromWorld[0] = scene.relative(light.frame.clipFromWorld());
+            want.clipFromWorld[0] = light.frame.clipFromWorld();
         }
         LayerState& have = cube ? mCubeLayers[size_t(light.layer)] : mLayers[index2D++];
         if (have == want) continue;  // nothing changed: keep the map

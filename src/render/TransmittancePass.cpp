@@ -97,8 +97,8 @@ void TransmittancePass::drawLight(const GpuScene& scene, const ShadowedLight& li
         glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
         glDisable(GL_SCISSOR_TEST);
         if (mVisible.empty()) continue;
-        const glm::mat4 m = scene.relative(cube ? light.frame.faceClipFromWorld(face)
-                                                : light.frame.clipFromWorld());
+        const glm::mat4 m =
+            cube ? light.frame.faceClipFromWorld(face) : light.frame.clipFromWorld();
         drawDepthRuns(
             scene, mVisible, 1, /*standIns=*/false, [](const DrawItem&) { return true; },
             [](const DrawItem&) { return false; },

@@ -38,15 +38,13 @@ void ViewDepthPass::draw(const GpuScene& scene) {
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         if (items[i].indexCount > 0 && items[i].alphaMode != AlphaMode::Blend) mItems.push_back(i);
     }
-    // The main pass's matrix for the GPU's positions (GpuScene::origin), bit for bit.
-    const glm::mat4 viewFromRelative = scene.relative(mViewFromWorld);
     drawDepthRuns(
         scene, mItems, 1, /*standIns=*/false,
         [](const DrawItem& item) { return item.alphaMode == AlphaMode::Mask; },
         [](const DrawItem& item) { return !item.doubleSided; },
         [&](bool alpha) {
             glUseProgram(program(alpha).id());
-            glUniformMatrix4fv(1, 1, GL_FALSE, &viewFromRelative[0][0]);
+            glUniformMatrix4fv(1, 1, GL_FALSE, &mViewFromWorld[0][0]);
             glUniformMatrix4fv(2, 1, GL_FALSE, &mClipFromView[0][0]);
         });
 }

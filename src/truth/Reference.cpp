@@ -167,14 +167,15 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                                    blend == BlendShadows::Coloured, contactRange > 0.0f);
 
     const float aspect = float(options.width) / float(options.height);
-    // View rays in the rays' coordinates (ShadowRays::origin), as the renderer's are.
-    const glm::dvec3 origin(rays->origin());
-    const glm::mat4 viewFromRelative = glm::mat4(glm::dmat4(shadow::viewFromWorld(scene.camera)) *
-                                                 glm::translate(glm::dmat4(1.0), origin));
+    // View rays in the rays' coordinates (ShadowRays::origin), from the camera moved there as
+    // the renderer moves it (render/RelativeScene.h): the same view to the last bit.
+    Camera camera = scene.camera;
+    camera.eye = glm::vec3(glm::dvec3(camera.eye) - glm::dvec3(rays->origin()));
+    camera.centre = glm::vec3(glm::dvec3(camera.centre) - glm::dvec3(rays->origin()));
     const glm::mat4 relativeFromClip =
-        glm::inverse(shadow::clipFromView(scene.camera, aspect) * viewFromRelative);
-    const glm::vec3 eye = glm::vec3(glm::dvec3(scene.camera.eye) - origin);
-    const glm::vec3 forward = glm::normalize(scene.camera.centre - scene.camera.eye);
+        glm::inverse(shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera));
+    const glm::vec3 eye = camera.eye;
+    const glm::vec3 forward = glm::normalize(camera.centre - camera.eye);
     const bool ortho = scene.camera.projection == Projection::Orthographic;
     const float pixelAtUnit = ortho
                                   ? (scene.camera.top - scene.camera.bottom) / float(options.height)
