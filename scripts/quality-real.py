@@ -194,6 +194,36 @@ VIEWS = [
 ]
 
 
+def moved(view, offset):
+    """`view` with its model, camera, lights and camera flags moved by `offset` (--offset:
+    the same view of the model placed far from the world's origin)."""
+    if not any(offset):
+        return view
+    shift = lambda p: [a + b for a, b in zip(p, offset)]
+    v = dict(view)
+    transform = view.get("transform", [])
+    v["transform"] = [{"translate": list(offset)}] + (
+        transform if isinstance(transform, list) else [transform])
+    if "camera" in view:
+        v["camera"] = dict(view["camera"])
+        for key in ("eye", "centre"):
+            if key in v["camera"]:
+                v["camera"][key] = shift(v["camera"][key])
+    if "lights" in view:
+        v["lights"] = []
+        for light in view["lights"]:
+            light = dict(light)
+            if "position" in light:
+                light["position"] = shift(light["position"])
+            v["lights"].append(light)
+    flags = list(view.get("flags", []))
+    for i in range(len(flags) - 1):
+        if flags[i] in ("--camera-eye", "--camera-target"):
+            flags[i + 1] = ",".join(f"{c:.9g}" for c in shift(float(x) for x in flags[i + 1].split(",")))
+    v["flags"] = flags
+    return v
+
+
 def model_path(view, scenes):
     return view["model"] if os.path.isabs(view["model"]) else os.path.join(scenes, view["model"])
 
@@ -271,14 +301,16 @@ def table(rows, link=False):
     return lines
 
 
-def document(rows, views, size, flags):
+def document(rows, views, size, flags, offset):
     lines = [
         "# Shadow quality on real scenes",
         "",
         "Produced by `scripts/quality-real.py --out docs/quality-real.md` (do not edit by hand).",
         "Each row is one `gnomon score` run of a hard view of a real model against the Embree",
         f"reference at {size}, with gnomon's default options"
-        + (f" plus `{' '.join(flags)}`" if flags else "") + f" (gnomon {version()}).",
+        + (f" plus `{' '.join(flags)}`" if flags else "")
+        + (f", every view moved by ({', '.join(f'{c:g}' for c in offset)})" if any(offset) else "")
+        + f" (gnomon {version()}).",
         "The models come from `../shared/scenes` beside the repository, and the horse from",
         "Debian's `glmark2-data`. Columns as in [quality.md](quality.md): percentages of the",
         "pixels where a light's shadow can show, summed over lights; *outside band* leaves out",
@@ -322,19 +354,27 @@ def main():
     parser.add_argument("--list", action="store_true", help="print the view names")
     parser.add_argument("--view-flags", metavar="VIEW",
                         help="print the gnomon flags VIEW always needs, one per line")
+    parser.add_argument("--offset", default="0,0,0", metavar="X,Y,Z",
+                        help="move every view's model, camera and lights by this much (a model "
+                             "placed far from the world's origin scores as at the origin)")
     parser.add_argument("--write-scene", nargs=2, metavar=("VIEW", "FILE"),
                         help="only write VIEW's scene file (exit 77 when its model is absent)")
     args = parser.parse_args()
+    try:
+        offset = [float(c) for c in args.offset.split(",")]
+        assert len(offset) == 3
+    except (ValueError, AssertionError):
+        sys.exit(f"--offset: expected X,Y,Z, got '{args.offset}'")
 
     if args.list:
         print("\n".join(v["name"] for v in VIEWS))
         return
     if args.view_flags:
-        for flag in find_view(args.view_flags).get("flags", []):
+        for flag in moved(find_view(args.view_flags), offset).get("flags", []):
             print(flag)
         return
     if args.write_scene:
-        view = find_view(args.write_scene[0])
+        view = moved(find_view(args.write_scene[0]), offset)
         model = model_path(view, args.scenes)
         if not os.path.isfile(model):
             print(f"skipped: {view['name']}: no {model}", file=sys.stderr)
@@ -344,7 +384,8 @@ def main():
     if not os.access(GNOMON, os.X_OK):
         sys.exit(f"{GNOMON} not found: run `make build` first")
 
-    views = [find_view(n) for n in args.only.split(",")] if args.only else VIEWS
+    views = [moved(find_view(n), offset) for n in args.only.split(",")] if args.only else \
+        [moved(v, offset) for v in VIEWS]
     flags = shlex.split(args.flags)
     out_dir = args.out_dir
     images = None
@@ -376,7 +417,7 @@ def main():
 
     if args.out:
         with open(args.out + ".tmp", "w") as f:
-            f.write("\n".join(document(rows, views, args.size, flags)) + "\n")
+            f.write("\n".join(document(rows, views, args.size, flags, offset)) + "\n")
         os.replace(args.out + ".tmp", args.out)
         print(f"wrote {args.out}", file=sys.stderr)
     else:
