@@ -1,13 +1,13 @@
 // The scene a frame is drawn from, in coordinates relative to a point near it rather than to
 // the world's origin (coordinateOrigin, scene/SceneUtil.h). A float keeps 24 bits: 100 000
 // units out it steps by 0.008, and every matrix made there (a light's look-at, its fitted
-// window, a cube face's projection) carries that much error in its translation. Maps drawn
-// through such a matrix and looked up from the light's own position disagreed by it: a point
-// light over Sponza moved that far shadowed 22 % of the view in rings, Suzanne 4.8 % at
-// 10 000 units, and the ToyCar (a few centimetres long) lay partly outside its own fitted
-// map. So the renderer works on a copy of a far scene moved next to the origin, made once
-// per scene revision; its camera and lights (which the revision does not cover) are moved
-// again each frame. A scene around the origin is used as it is, without a copy.
+// window, a cube face's projection) carries that much error in its translation. With only
+// the GPU's matrices moved, maps drawn through such a matrix and looked up from the light's
+// own position disagreed by it: a point light over Sponza moved that far shadowed 22 % of
+// the view in rings, and the ToyCar (a few centimetres long) leaked on 15 % of its view. So
+// the renderer works on a copy of a far scene moved next to the origin, made once per scene
+// revision; its camera and lights (which the revision does not cover) are moved again each
+// frame. A scene around the origin is used as it is, without a copy.
 #pragma once
 
 #include <cstdint>
@@ -21,8 +21,6 @@ public:
     // `scene` itself when it lies around the world's origin, else the moved copy (remade when
     // the scene's revision changed; its camera and lights follow `scene`'s every call).
     const Scene& of(const Scene& scene, double seconds);
-    // The point the scene of the last of() is relative to (0: none).
-    const glm::vec3& origin() const { return mOrigin; }
     // A camera of the world (the fit camera of gnomon score's flicker) in those coordinates.
     Camera moved(const Camera& camera) const;
 
