@@ -368,14 +368,9 @@ void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
         out.lights = std::move(included.lights);
     }
 
-    // A camera of the file's own without near or far gets them from the scene's extent (below,
-    // once the ground is in): the defaults 1 and 100 would cut away a model in millimetres
-    // whole, or clip a city. A plane given is kept.
-    bool givenNear = true, givenFar = true;
-    if (const Json* cj = root.find("camera")) {
+    const Json* cj = root.find("camera");
+    if (cj) {
         out.camera = readCamera(r, *cj, root.at("camera"));
-        givenNear = cj->contains("near");
-        givenFar = cj->contains("far");
     } else if (included.camera) {
         out.camera = *included.camera;
     } else if (!out.objects.empty()) {
@@ -393,24 +388,7 @@ void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
     if (const Json* gj = root.find("ground"); gj && r.boolean(*gj, root.at("ground"))) {
         addGround(out);
     }
-    if (!givenNear || !givenFar) {
-        Camera fitted = out.camera;
-        fitCameraDepth(out, fitted);
-        if (!givenNear) out.camera.near = fitted.near;
-        if (!givenFar) out.camera.far = fitted.far;
-    }
-    // The same for the file's own manual and course shadow cameras, which sit at their light.
-    for (std::size_t i = 0; lj && i < lj->size(); ++i) {
-        Light& light = out.lights[i];  // readLight took (*lj)[i] as an object
-        if (!(*lj)[i].contains("shadow-camera") ||
-            light.shadowCamera.policy == ShadowCameraPolicy::Fit)
-            continue;
-        const Json& given = (*lj)[i].at("shadow-camera");
-        ShadowCamera fitted = light.shadowCamera;
-        fitShadowCameraDepth(out, light, fitted);
-        if (!given.contains("near")) light.shadowCamera.near = fitted.near;
-        if (!given.contains("far")) light.shadowCamera.far = fitted.far;
-    }
+    fitPlanesLeftOut(cj, lj, out);  // once the ground is in
 
     out.options = included.options.value_or(RenderOptions{});
     if (const Json* oj = root.find("options"))

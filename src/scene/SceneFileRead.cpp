@@ -320,6 +320,27 @@ Light readLight(const Reader& r, const Json& j, const std::string& path, std::si
     return l;
 }
 
+void fitPlanesLeftOut(const Json* camera, const Json* lights, Scene& out) {
+    if (camera && !(camera->contains("near") && camera->contains("far"))) {
+        Camera fitted = out.camera;
+        fitCameraDepth(out, fitted);
+        if (!camera->contains("near")) out.camera.near = fitted.near;
+        if (!camera->contains("far")) out.camera.far = fitted.far;
+    }
+    // Manual and course shadow cameras sit at their light, and fit from there.
+    for (std::size_t i = 0; lights && i < lights->size(); ++i) {
+        Light& light = out.lights[i];  // readLight took (*lights)[i] as an object
+        if (!(*lights)[i].contains("shadow-camera") ||
+            light.shadowCamera.policy == ShadowCameraPolicy::Fit)
+            continue;
+        const Json& given = (*lights)[i].at("shadow-camera");
+        ShadowCamera fitted = light.shadowCamera;
+        fitShadowCameraDepth(out, light, fitted);
+        if (!given.contains("near")) light.shadowCamera.near = fitted.near;
+        if (!given.contains("far")) light.shadowCamera.far = fitted.far;
+    }
+}
+
 Camera readCamera(const Reader& r, const Json& j, const std::string& path, const Camera& start) {
     const Fields f(r, j, path,
                    {"eye", "centre", "up", "projection", "fovy", "aspect", "near", "far", "left",

@@ -38,6 +38,12 @@ Light readLight(const Reader& r, const Json& j, const std::string& path, std::si
 // The keys `j` gives over `start` (a scene file's camera starts from the default one).
 Camera readCamera(const Reader& r, const Json& j, const std::string& path,
                   const Camera& start = Camera{});
+// The near and far planes the file's own cameras leave out, fitted to the finished scene (its
+// ground included): the view camera's (`camera`, its JSON; null when the file has none of its
+// own) and the manual and course shadow cameras of the file's `lights` (null: none; read into
+// `out.lights` in order). The defaults 1 and 100 would cut away a model in millimetres whole,
+// or clip a city. A plane given is kept.
+void fitPlanesLeftOut(const Json* camera, const Json* lights, Scene& out);
 // The keys given in `j` applied over `o`; RenderOptions::validate()'s sentences as errors.
 void applyOptions(const Reader& r, const Json& j, const std::string& path, RenderOptions& o);
 
