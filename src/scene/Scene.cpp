@@ -247,6 +247,30 @@ glm::vec3 coordinateOrigin(const Aabb& worldBox) {
     return glm::round(c / grid) * grid;
 }
 
+glm::vec3 sceneOrigin(const Scene& scene, double seconds) {
+    return coordinateOrigin(worldBounds(scene, meshBounds(scene), seconds, false));
+}
+
+glm::vec3 relativeTo(const glm::vec3& worldPoint, const glm::vec3& origin) {
+    return glm::vec3(glm::dvec3(worldPoint) - glm::dvec3(origin));
+}
+
+void makeRelative(Object& object, const glm::vec3& origin) {
+    object.worldFromModel = glm::mat4(glm::translate(glm::dmat4(1.0), -glm::dvec3(origin)) *
+                                      glm::dmat4(object.worldFromModel));
+    object.spin.pivot = relativeTo(object.spin.pivot, origin);
+}
+
+void makeRelative(Light& light, const glm::vec3& origin) {
+    light.position = relativeTo(light.position, origin);
+    light.shadowCamera.target = relativeTo(light.shadowCamera.target, origin);
+}
+
+void makeRelative(Camera& camera, const glm::vec3& origin) {
+    camera.eye = relativeTo(camera.eye, origin);
+    camera.centre = relativeTo(camera.centre, origin);
+}
+
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index) {
     if (options.lightOnly >= 0) return index == std::size_t(options.lightOnly);
     return scene.lights[index].enabled;

@@ -21,6 +21,16 @@ Aabb worldBounds(const Scene& scene, const std::vector<Aabb>& meshBoxes, double 
 // 10 000 it steps by 0.001): positions interpolated across a triangle and multiplied by a
 // light's matrix, or shadow rays started off a surface, go wrong there by that much.
 glm::vec3 coordinateOrigin(const Aabb& worldBox);
+// The scene's coordinateOrigin, its objects placed at `seconds` (reads every vertex).
+glm::vec3 sceneOrigin(const Scene& scene, double seconds);
+// What the world places, moved to coordinates relative to `origin` (the renderer's scene
+// near the origin, render/RelativeScene.h, and the reference's rays, truth/ShadowRays.h, both
+// through these, so the two agree to the bit). In double precision, then float: as exact as
+// the world's own floats.
+glm::vec3 relativeTo(const glm::vec3& worldPoint, const glm::vec3& origin);
+void makeRelative(Object& object, const glm::vec3& origin);  // its matrix and spin pivot
+void makeRelative(Light& light, const glm::vec3& origin);    // position, shadow-camera target
+void makeRelative(Camera& camera, const glm::vec3& origin);  // eye and centre
 // Is light `index` on for these options (RenderOptions::lightOnly overrides the scene)?
 bool lightIsOn(const Scene& scene, const RenderOptions& options, std::size_t index);
 

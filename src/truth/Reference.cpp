@@ -9,7 +9,6 @@
 #include <thread>
 
 #include <embree3/rtcore.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "gnomon/Error.h"
 #include "scene/SceneUtil.h"
@@ -170,8 +169,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     // View rays in the rays' coordinates (ShadowRays::origin), from the camera moved there as
     // the renderer moves it (render/RelativeScene.h): the same view to the last bit.
     Camera camera = scene.camera;
-    camera.eye = glm::vec3(glm::dvec3(camera.eye) - glm::dvec3(rays->origin()));
-    camera.centre = glm::vec3(glm::dvec3(camera.centre) - glm::dvec3(rays->origin()));
+    makeRelative(camera, rays->origin());
     const glm::mat4 relativeFromClip =
         glm::inverse(shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera));
     const glm::vec3 eye = camera.eye;

@@ -5,8 +5,6 @@
 #include <limits>
 #include <string>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "gnomon/Error.h"
 #include "scene/SceneUtil.h"
 
@@ -76,14 +74,14 @@ void tangents(const glm::vec3& w, glm::vec3& u, glm::vec3& v) {
 
 ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options)
     : mLights(scene.lights), mBlend(options.shadow.blendShadows) {
-    mOrigin = coordinateOrigin(worldBounds(scene, meshBounds(scene), options.time, false));
-    const glm::dmat4 relativeFromWorld = glm::translate(glm::dmat4(1.0), -glm::dvec3(mOrigin));
+    mOrigin = sceneOrigin(scene, options.time);
     Aabb bounds;
     for (const Object& obj : scene.objects) {
         const Mesh& mesh = scene.meshes[obj.mesh];
-        // In double, then float as the renderer's object matrices (exact where the origin is 0).
-        const glm::mat4 m =
-            glm::mat4(relativeFromWorld * glm::dmat4(obj.worldFromModelAt(options.time)));
+        // Moved as the renderer moves it (render/RelativeScene.h): the same floats.
+        Object moved = obj;
+        makeRelative(moved, mOrigin);
+        const glm::mat4 m = moved.worldFromModelAt(options.time);
         std::vector<glm::vec3> p(mesh.positions.size());
         for (std::size_t i = 0; i < p.size(); ++i) {
             p[i] = glm::vec3(m * glm::vec4(mesh.positions[i], 1.0f));
@@ -92,7 +90,7 @@ ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options)
         mPositions.push_back(std::move(p));
     }
     for (Light& light : mLights)
-        light.position = glm::vec3(glm::dvec3(light.position) - glm::dvec3(mOrigin));
+        makeRelative(light, mOrigin);
     mScale = bounds.empty() ? 1.0f : std::max(bounds.radius(), 1e-6f);
     mAlpha.resize(scene.objects.size());
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
