@@ -105,6 +105,16 @@ VIEWS = [
      "camera": {"eye": [-6, 5, 14], "centre": [30, 0, -30], "fovy": 60, "near": 0.2,
                 "far": 400},
      "lights": [sun(0.7, -0.22, -0.7)]},
+    {"name": "lantern-post-edge-on", "model": LANTERN, "ground": False,
+     "why": "a random view of broad-check.py: the post's side 0.2 degrees from edge-on to a sun "
+            "at azimuth 180.2, elevation 10.9, beside the face the sun lights across the edge",
+     "flags": ["--camera-eye", "43.725,30.41,6.1957", "--camera-target", "5.6377,9.7532,-3.6806",
+               "--sun", "180.2,10.9"]},
+    {"name": "lantern-post-point", "model": LANTERN, "ground": True,
+     "why": "a random view of broad-check.py (seed 11): a point light almost in the plane of the "
+            "post's side that faces the camera",
+     "camera": {"eye": [8.2041, 19.464, -36.439], "centre": [3.7981, 14.058, 3.8262]},
+     "lights": [{"type": "point", "position": [27.04453, 19.53821, -0.85103]}]},
     {"name": "suzanne-grazing", "model": SUZANNE, "ground": True,
      "why": "smooth self-shadowing (brows, eye sockets, ears) under a sun 20 degrees high",
      "camera": {"eye": [1.6, 0.8, 3.4], "centre": [0, -0.2, 0], "fovy": 45, "near": 0.05,

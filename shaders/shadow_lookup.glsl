@@ -140,7 +140,7 @@ float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, vec2 ful
     // The map's first texel and its last 2x2 block's start, in texels of the layer.
     vec2 first = floor(originUv / texelUv + 0.5);
     vec2 last = first + floor(uvScale / texelUv + 0.5) - 2.0;
-    float sum = 0.0;
+    float sum = 0.0, downhillShadow = 0.0;
     for (int my = 0; my <= r; ++my) {
         float ky = clamp(base.y - float(r - 2 * my), first.y, last.y);
         vec2 wy = vec2(my == 0 ? 1.0 - f.y : 1.0, my == r ? f.y : 1.0);
@@ -151,13 +151,19 @@ float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, vec2 ful
             // z (k+1, k), w (k, k) as (column, row).
             vec4 d = textureGather(uShadowDepths, vec3((vec2(kx, ky) + 1.0) * texelUv, layer));
             vec2 o = vec2(kx, ky) - s;
-            vec4 along = planeAlong4(dot(g, o) + vec4(g.y, g.x + g.y, g.x, 0.0),
-                                     dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0));
+            vec4 capped = dot(g, o) + vec4(g.y, g.x + g.y, g.x, 0.0);
+            vec4 along = planeAlong4(capped,
+                                     dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0),
+                                     kPlaneMaxApproach);
             vec4 refs = reference + along - spread;
             vec4 w = vec4(wx.x * wy.y, wx.y * wy.y, wx.y * wy.x, wx.x * wy.x);
-            sum += dot(step(refs, d), w);
+            vec4 lit = step(refs, d);
+            sum += dot(lit, w);
+            downhillShadow += dot(step(0.0, capped), 1.0 - lit);
         }
     }
+    // The silhouette rule (receiver_plane.glsl), from the texels downhill of the point.
+    if (atSilhouette(kSilhouetteCosine, downhillShadow)) return 1.0;
     return sum / float((2 * r + 1) * (2 * r + 1));
 }
 #endif
@@ -242,14 +248,47 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
 #else
     const int kCubeKernel = PCF_SIZE;
 #endif
-    float sum = 0.0;
     const int r = kCubeKernel / 2;
+#if defined(RECEIVER_PLANE)
+    // The same taps in two halves, for the silhouette rule (receiver_plane.glsl): each tap of
+    // one half-plane of offsets, turned to the downhill side of the point, then its mirror
+    // image uphill, compared against the full plane when every downhill tap whose bilinear
+    // footprint lies wholly beyond the point (the others may read the point's own texel) was
+    // lit. Each tap is read once, as before.
+    float sum = texture(uShadowCubes, vec4(toPoint, layer), CUBE_REFERENCE(vec2(0.0)));
+    float downhillShadow = 0.0;
+    float beyond = 0.999 * step * (abs(full.x) + abs(full.y));
+    for (int y = 0; y <= r; ++y) {
+        for (int x = -r; x <= r; ++x) {
+            if (y == 0 && x <= 0) continue;
+            vec2 o = vec2(x, y) * step;
+            vec2 downhill = dot(full, o) < 0.0 ? -o : o;
+            float t = texture(uShadowCubes, vec4(toPoint + downhill.x * u + downhill.y * v, layer),
+                              CUBE_REFERENCE(downhill));
+            sum += t;
+            downhillShadow += dot(full, downhill) >= beyond ? 1.0 - t : 0.0;
+        }
+    }
+    bool silhouette = atSilhouette(kSilhouetteCosine, downhillShadow);
+    for (int y = 0; y <= r; ++y) {
+        for (int x = -r; x <= r; ++x) {
+            if (y == 0 && x <= 0) continue;
+            vec2 o = vec2(x, y) * step;
+            vec2 uphill = dot(full, o) < 0.0 ? o : -o;
+            float along = silhouette ? min(dot(g, uphill), dot(full, uphill)) - spread + reference
+                                     : CUBE_REFERENCE(uphill);
+            sum += texture(uShadowCubes, vec4(toPoint + uphill.x * u + uphill.y * v, layer), along);
+        }
+    }
+#else
+    float sum = 0.0;
     for (int y = -r; y <= r; ++y) {
         for (int x = -r; x <= r; ++x) {
             vec3 tap = toPoint + (float(x) * u + float(y) * v) * step;
             sum += texture(uShadowCubes, vec4(tap, layer), CUBE_REFERENCE(vec2(x, y) * step));
         }
     }
+#endif
     return sum / float(kCubeKernel * kCubeKernel);
 #elif defined(FILTER_PCSS)
     float texelAtReceiver = light.shadow.y * major;  // one texel at the receiver, world

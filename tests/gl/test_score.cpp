@@ -93,6 +93,29 @@ TEST(Score, FloatRoundingNearTheLightLeavesTheFaceUnderItLit) {
     }
 }
 
+// The silhouette rule (shaders/receiver_plane.glsl): a post's side about a degree from
+// edge-on to a point light, beside the face the light meets head-on. The capped receiver
+// plane read that face, across the edge, as a caster of the side and striped it with false
+// shadow (0.38 % of the view away from edges before the rule).
+TEST(Score, SideAlmostEdgeOnBesideTheFaceTheLightMeetsIsLit) {
+    Scene s;
+    s.name = "post beside a point light";
+    s.materials.push_back(Material{});
+    s.meshes.push_back(mesh::box("post", glm::vec3(0.0f, 1.5f, 0.0f), glm::vec3(0.4f, 3.0f, 0.4f)));
+    s.objects.push_back({"post", 0, 0, glm::mat4(1.0f), {}, true, true});
+    addGround(s);
+    Light point;
+    point.type = LightType::Point;
+    point.position = {-0.3f, 2.5f, -6.0f};  // 0.1 outside the plane of the post's -x side
+    s.lights.push_back(point);
+    s.camera.eye = {-4.0f, 1.6f, -1.5f};
+    s.camera.centre = {0.0f, 1.4f, 0.0f};
+    const ScoreResult r = score(sharedRenderer(), s, small(s));
+    ASSERT_GT(r.overall.pixels, 10000);
+    EXPECT_LT(r.overall.falseShadowOutsideBand, 0.0005);
+    EXPECT_LT(r.overall.misclassified, 0.005);
+}
+
 // No tolerance of any kind: acne over most lit surfaces (false shadow), and the defaults
 // remove it.
 TEST(Score, NoBiasIsFalseShadowDefaultsAreNot) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Shadow quality on real scenes: twelve hard views of scripts/quality-real.py (inside Sponza
+# Shadow quality on real scenes: fourteen hard views of scripts/quality-real.py (inside Sponza
 # under a sun and under a spot, a low sun, a spot light, point lights, faces edge-on or
-# nearly edge-on to a sun, blended panels throwing coloured light, a model 100 000 units from
+# nearly edge-on to a sun, a post's side nearly edge-on to a sun and to a point light beside
+# the face they light, blended panels throwing coloured light, a model 100 000 units from
 # the world's origin; its VIEWS are the one
 # definition, written out with --write-scene and --view-flags) scored against the ray-traced reference at 192x192. Fails when a view's
 # overall misclassified fraction reaches 1 %, its false shadow outside the aliasing band
@@ -15,7 +16,8 @@
 set -uo pipefail
 gnomon=$1; scenes=$2; work=$3
 views=(sponza-atrium sponza-gallery sponza-capitals-spot lantern-low-sun dragon-spot lamp-stem
-       toycar-lamp instancing-side-sun alphablend-sun suzanne-edge-on suzanne-ear suzanne-far)
+       toycar-lamp instancing-side-sun alphablend-sun suzanne-edge-on suzanne-ear suzanne-far
+       lantern-post-edge-on lantern-post-point)
 size=192x192
 quality_real=$(dirname "$0")/../../scripts/quality-real.py
 rm -rf "$work" && mkdir -p "$work"
