@@ -34,7 +34,9 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-# $GNOMON picks another build (a copy kept aside while this tree rebuilds).
+# $GNOMON picks another build: a whole build tree's binary (a git worktree's, say), not a copy of
+# this tree's: the binary loads libgnomon from the tree it was built in, so a copy run while this
+# tree rebuilds mixes the two builds.
 GNOMON = os.environ.get("GNOMON") or os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
 SCENES = os.path.join(os.path.dirname(ROOT), "shared", "scenes")
 BOUNDS = (1.0, 0.05, 0.1)  # misclassified, false shadow away, leak away (percent)

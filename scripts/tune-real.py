@@ -14,7 +14,9 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-# $GNOMON picks another build (a copy kept aside while this tree rebuilds).
+# $GNOMON picks another build: a whole build tree's binary (a git worktree's, say), not a copy of
+# this tree's: the binary loads libgnomon from the tree it was built in, so a copy run while this
+# tree rebuilds mixes the two builds.
 GNOMON = os.environ.get("GNOMON") or os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
 QUALITY_REAL = os.path.join(ROOT, "scripts", "quality-real.py")
 
