@@ -269,7 +269,7 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
             downhillShadow += dot(full, downhill) >= beyond ? 1.0 - t : 0.0;
         }
     }
-    bool silhouette = atSilhouette(kSilhouetteCosine, downhillShadow);
+    bool silhouette = atSilhouette(kCubeSilhouetteCosine, downhillShadow);
     for (int y = 0; y <= r; ++y) {
         for (int x = -r; x <= r; ++x) {
             if (y == 0 && x <= 0) continue;
