@@ -159,11 +159,12 @@ RenderOptions RenderFlags::resolve(const Scene& scene) const {
     }
     // A camera turned away from the scene, or past it, draws the background only: said,
     // not left to a blank image.
-    if (!cameraSeesScene(scene, float(o.width) / float(o.height))) {
+    if (!cameraSeesScene(scene, o.width, o.height)) {
         const Camera& c = scene.camera;
         std::fprintf(stderr,
                      "gnomon: warning: the camera (eye %g,%g,%g, looking at %g,%g,%g) sees none "
-                     "of the scene: the image holds the background only\n",
+                     "of the scene, or all of it within a pixel: the image holds the background "
+                     "only\n",
                      c.eye.x, c.eye.y, c.eye.z, c.centre.x, c.centre.y, c.centre.z);
     }
     return o;

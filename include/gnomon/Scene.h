@@ -250,11 +250,12 @@ void fitCameraDepth(const Scene& scene, Camera& camera);
 // 100 would store no depth of a model in millimetres and cut one in kilometres.
 void fitShadowCameraDepth(const Scene& scene, const Light& light, ShadowCamera& camera);
 
-// Can the scene's camera see any of its objects in an image of `aspect` (width / height)?
-// False when their world bounds lie wholly beyond one side of the camera's view volume
-// (behind it, past its far plane, off to a side): the picture would hold the background
+// Can the scene's camera see any of its objects in a `width` x `height` image? False when
+// their world bounds lie wholly beyond one side of the camera's view volume (behind it, past
+// its far plane, off to a side), or lie in front of it but within less than a pixel each
+// way (a camera thousands of the scene's sizes away): the picture would hold the background
 // only. True whenever some part may show, and for a scene without objects.
-bool cameraSeesScene(const Scene& scene, float aspect);
+bool cameraSeesScene(const Scene& scene, int width, int height);
 
 // The scenes gnomon ships, in a stable order.
 std::vector<SceneInfo> builtinScenes();

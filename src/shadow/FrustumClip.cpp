@@ -1,6 +1,7 @@
 #include "shadow/FrustumClip.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "shadow/ShadowMath.h"
 
@@ -112,16 +113,23 @@ bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ign
 namespace gnomon {
 
 // Declared in gnomon/Scene.h: the scene's box against the camera's volume, in clip space.
-bool cameraSeesScene(const Scene& scene, float aspect) {
+bool cameraSeesScene(const Scene& scene, int width, int height) {
     glm::vec3 lo, hi;
     sceneBounds(scene, lo, hi);
-    if (scene.objects.empty() || lo == hi) return true;
+    if (scene.objects.empty() || lo == hi || width <= 0 || height <= 0) return true;
     const glm::mat4 clipFromWorld =
-        shadow::clipFromView(scene.camera, aspect) * shadow::viewFromWorld(scene.camera);
+        shadow::clipFromView(scene.camera, float(width) / float(height)) *
+        shadow::viewFromWorld(scene.camera);
     glm::vec4 corners[8];
     for (int c = 0; c < 8; ++c)
         corners[c] = clipFromWorld *
                      glm::vec4(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z, 1.0f);
+    // Coordinates past a float's range: the camera stands so far out (1e20 and more from a
+    // scene of a few units) that its projection overflows, and nothing can be drawn.
+    for (const glm::vec4& p : corners)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
+            !std::isfinite(p.w))
+            return false;
     // The view volume is -w <= x, y, z <= w: the box is unseen when every corner lies beyond
     // the same one of those six planes.
     for (int axis = 0; axis < 3; ++axis) {
@@ -132,7 +140,15 @@ bool cameraSeesScene(const Scene& scene, float aspect) {
             if (allBeyond) return false;
         }
     }
-    return true;
+    // Wholly in front of the camera: how many pixels the box spans each way.
+    glm::vec2 ndcLo(1e30f), ndcHi(-1e30f);
+    for (const glm::vec4& p : corners) {
+        if (!(p.w > 0.0f)) return true;
+        ndcLo = glm::min(ndcLo, glm::vec2(p) / p.w);
+        ndcHi = glm::max(ndcHi, glm::vec2(p) / p.w);
+    }
+    const glm::vec2 pixels = 0.5f * (ndcHi - ndcLo) * glm::vec2(width, height);
+    return pixels.x >= 1.0f || pixels.y >= 1.0f;
 }
 
 }  // namespace gnomon

@@ -304,8 +304,11 @@ scene_flags)
     # A camera turned away from the scene renders, and says that it shows none of it.
     run render --scene tutorial-room --size 32x32 --out "$work/e.png" --camera-eye 0,5,30 \
         --camera-target 0,5,60
-    expect 0 "sees none of the scene: the image holds the background only"
+    expect 0 "sees none of the scene, or all of it within a pixel: the image holds the background"
     [[ -e "$work/e.png" ]] || fail "the turned-away render wrote nothing"
+    # So does one so far away that the whole scene falls within a pixel.
+    run render --scene tutorial-room --size 32x32 --out "$work/e.png" --camera-eye 1e30,0,0
+    expect 0 "sees none of the scene, or all of it within a pixel"
     run render --scene tutorial-room --size 32x32 --out "$work/f.png" --camera-eye 6,4,8
     grep -q "sees none" "$work/stderr" && fail "warned of a camera that sees the room"
     ;;

@@ -154,21 +154,29 @@ TEST(Renderer, BrokenSceneIsRejectedWithItsLocation) {
 }
 
 // The CLI warns of a camera that shows none of the scene; the test behind it is conservative:
-// false only where the scene's bounds lie wholly beyond one side of the view volume.
-TEST(Renderer, CameraSeesSceneUnlessTheBoundsLieBeyondOneSide) {
+// false only where the scene's bounds lie wholly beyond one side of the view volume, or in
+// front of the camera within less than a pixel.
+TEST(Renderer, CameraSeesSceneUnlessTheBoundsLieBeyondOneSideOrWithinAPixel) {
     Scene s = builtinScene("tutorial-room");
-    EXPECT_TRUE(cameraSeesScene(s, 1.0f));
+    EXPECT_TRUE(cameraSeesScene(s, 64, 64));
     s.camera.eye = {0.0f, 5.0f, 30.0f};  // outside the room, turned away from it
     s.camera.centre = {0.0f, 5.0f, 60.0f};
-    EXPECT_FALSE(cameraSeesScene(s, 1.0f));
+    EXPECT_FALSE(cameraSeesScene(s, 64, 64));
     s.camera.centre = {0.0f, 5.0f, 0.0f};  // turned back towards it
-    EXPECT_TRUE(cameraSeesScene(s, 1.0f));
+    EXPECT_TRUE(cameraSeesScene(s, 64, 64));
     s.camera.far = 1.0f;  // but it all lies past the far plane
-    EXPECT_FALSE(cameraSeesScene(s, 1.0f));
+    EXPECT_FALSE(cameraSeesScene(s, 64, 64));
     s.camera.far = 100.0f;
     s.camera.centre = {300.0f, 5.0f, 30.0f};  // off to the side: it lies past the left plane
-    EXPECT_FALSE(cameraSeesScene(s, 1.0f));
-    EXPECT_TRUE(cameraSeesScene(Scene{}, 1.0f)) << "nothing to see is not a camera's fault";
+    EXPECT_FALSE(cameraSeesScene(s, 64, 64));
+    s.camera.centre = {0.0f, 5.0f, 0.0f};
+    s.camera.far = 1e7f;
+    s.camera.eye = {0.0f, 5.0f, 300.0f};  // far down the axis: the room spans a few pixels
+    EXPECT_TRUE(cameraSeesScene(s, 64, 64));
+    s.camera.eye = {0.0f, 5.0f, 1e4f};  // further: under a pixel
+    EXPECT_FALSE(cameraSeesScene(s, 64, 64));
+    EXPECT_TRUE(cameraSeesScene(s, 4096, 4096)) << "a larger image resolves it";
+    EXPECT_TRUE(cameraSeesScene(Scene{}, 64, 64)) << "nothing to see is not a camera's fault";
 }
 
 TEST(Renderer, ShadowsOffRendersNoShadowPass) {
