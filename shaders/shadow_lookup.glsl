@@ -238,6 +238,8 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     float spread = 0.5 * step * (abs(g.x) + abs(g.y));
 #define CUBE_REFERENCE(o) (reference + planeAlong(g, full, (o), kCubeMaxApproach) - spread)
 #else
+    vec2 g = vec2(0.0), full = vec2(0.0);  // no plane: every tap at the point's own depth
+    float spread = 0.0;
 #define CUBE_REFERENCE(o) (reference)
 #endif
 #if defined(FILTER_PCF) || defined(FILTER_MOMENTS)
@@ -249,12 +251,12 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     const int kCubeKernel = PCF_SIZE;
 #endif
     const int r = kCubeKernel / 2;
-#if defined(RECEIVER_PLANE)
-    // The same taps in two halves, for the silhouette rule (receiver_plane.glsl): each tap of
+    // The kernel's taps in two halves, for the silhouette rule (receiver_plane.glsl): each tap of
     // one half-plane of offsets, turned to the downhill side of the point, then its mirror
     // image uphill, compared against the full plane when every downhill tap whose bilinear
     // footprint lies wholly beyond the point (the others may read the point's own texel) was
-    // lit. Each tap is read once, as before.
+    // lit. Each tap is read once. Without a receiver plane there is no downhill (g and full
+    // are 0) and no silhouette: the plain K x K kernel.
     float sum = texture(uShadowCubes, vec4(toPoint, layer), CUBE_REFERENCE(vec2(0.0)));
     float downhillShadow = 0.0;
     float beyond = 0.999 * step * (abs(full.x) + abs(full.y));
@@ -275,20 +277,13 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
             if (y == 0 && x <= 0) continue;
             vec2 o = vec2(x, y) * step;
             vec2 uphill = dot(full, o) < 0.0 ? o : -o;
-            float along = silhouette ? min(dot(g, uphill), dot(full, uphill)) - spread + reference
-                                     : CUBE_REFERENCE(uphill);
-            sum += texture(uShadowCubes, vec4(toPoint + uphill.x * u + uphill.y * v, layer), along);
+            float compareTo = silhouette
+                                  ? reference + min(dot(g, uphill), dot(full, uphill)) - spread
+                                  : CUBE_REFERENCE(uphill);
+            sum += texture(uShadowCubes, vec4(toPoint + uphill.x * u + uphill.y * v, layer),
+                           compareTo);
         }
     }
-#else
-    float sum = 0.0;
-    for (int y = -r; y <= r; ++y) {
-        for (int x = -r; x <= r; ++x) {
-            vec3 tap = toPoint + (float(x) * u + float(y) * v) * step;
-            sum += texture(uShadowCubes, vec4(tap, layer), CUBE_REFERENCE(vec2(x, y) * step));
-        }
-    }
-#endif
     return sum / float(kCubeKernel * kCubeKernel);
 #elif defined(FILTER_PCSS)
     float texelAtReceiver = light.shadow.y * major;  // one texel at the receiver, world
