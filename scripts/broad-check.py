@@ -4,7 +4,8 @@ of them was tuned for, and lists the views over the bounds gnomon holds itself t
 misclassified < 1 %, false shadow away from edges < 0.05 %, leak away from edges < 0.1 %).
 Run from anywhere after `make build`:
 
-    scripts/broad-check.py [--scenes DIR] [--size WxH] [--lights sun,point,spot] [--only A,B]
+    scripts/broad-check.py [--scenes DIR | --models A.obj,B.3ds] [--size WxH]
+                           [--lights sun,point,spot] [--only A,B]
                            [--random N [--seed S]] [--flags "--bias-slope 0"]
                            [--out docs/broad-check.md]
 
@@ -13,7 +14,8 @@ Views per model, each with and without `--ground`:
 - point, spot: a point light and a 35° spot placed from the model's bounds (above and to
   one side, about 1.5 radii out), each seen from the model's own camera and from a low
   close camera. Bounds come from the glTF's position accessors through its node
-  transforms, so they are the file's, not gnomon's;
+  transforms, so they are the file's, not gnomon's (other formats, given by --models: the box
+  gnomon loads them into, from `gnomon --verbose render`);
 - random (with --random N): N more views per model, each a camera 1.2 to 3 radii out at a
   random bearing and height (5 degrees below the centre to 60 above), aimed within 0.3 radii
   of the centre, under one random light of the kinds --lights names, in turn: a sun (6 to
@@ -92,12 +94,31 @@ def bounds(path):
     return [(lo[k] + hi[k]) / 2 for k in range(3)], math.dist(lo, hi) / 2
 
 
+def gnomon_bounds(path):
+    """Centre and radius of the box gnomon loads `path` into (`gnomon --verbose render`), for
+    formats other than glTF (OBJ, 3DS, FBX... through assimp), whose node transforms this script
+    does not read."""
+    with tempfile.TemporaryDirectory() as work:
+        run = subprocess.run([GNOMON, "--verbose", "render", "--scene", path, "--size", "16x16",
+                              "--out", os.path.join(work, "bounds.png")],
+                             capture_output=True, text=True)
+    line = next((l for l in run.stderr.splitlines() if "scene bounds" in l), None)
+    if run.returncode or not line:
+        sys.exit(f"broad-check: cannot load {path}: {run.stderr.strip()}")
+    lo, hi = ([float(v) for v in part.split(",")] for part in line.split("bounds ")[1].split(" to "))
+    return [(lo[k] + hi[k]) / 2 for k in range(3)], math.dist(lo, hi) / 2
+
+
+def model_bounds(path):
+    return bounds(path) if path.endswith((".gltf", ".glb")) else gnomon_bounds(path)
+
+
 def random_views(model, name, count, rng, kinds, work):
     """`count` random cameras around `model`, each under one random light, as (label, scene,
     flags). The lights take turns through `kinds`: a sun given by flags, or a point or spot
     light placed 1.2 to 2.5 radii out, 15 to 75 degrees above the centre, written with the
     model into a scene file."""
-    c, r = bounds(model)
+    c, r = model_bounds(model)
     for i in range(count):
         bearing, height = rng.uniform(0, 2 * math.pi), math.radians(rng.uniform(-5, 60))
         d = rng.uniform(1.2, 3.0) * r
@@ -140,7 +161,7 @@ def views(model, kinds, work, random_count=0, rng=None):
                                 [k for k in ("sun", "point", "spot") if k in kinds], work)
     if not {"point", "spot"} & set(kinds):
         return
-    c, r = bounds(model)
+    c, r = model_bounds(model)
     at = lambda k: [c[i] + r * k[i] for i in range(3)]
     lights = {"point": {"type": "point", "position": at([0.6, 1.2, 0.8])},
               "spot": {"type": "spot", "position": at([-1.0, 1.5, 1.0]), "direction": [1.0, -1.5, -1.0],
@@ -163,6 +184,10 @@ def main():
     parser.add_argument("--size", default="384x384")
     parser.add_argument("--lights", default="sun,point,spot")
     parser.add_argument("--only", default="", help="comma-separated parts of model names")
+    parser.add_argument("--models", default="",
+                        help="comma-separated model files of any format gnomon reads, checked "
+                             "instead of --scenes' glTF models (models none of gnomon's work "
+                             "was tried on: Debian's glmark2-data, say)")
     parser.add_argument("--out", help="also write the table as a markdown page")
     parser.add_argument("--flags", default="",
                         help="gnomon score flags added to every view (a candidate default)")
@@ -172,12 +197,15 @@ def main():
     args = parser.parse_args()
     rng = random.Random(args.seed)
     extra = shlex.split(args.flags)
-    models = sorted(glob.glob(os.path.join(args.scenes, "*", "*.gltf")) +
-                    glob.glob(os.path.join(args.scenes, "*", "*.glb")))
+    if args.models:
+        models = args.models.split(",")
+    else:
+        models = sorted(glob.glob(os.path.join(args.scenes, "*", "*.gltf")) +
+                        glob.glob(os.path.join(args.scenes, "*", "*.glb")))
     if args.only:
         models = [m for m in models if any(o in os.path.basename(m) for o in args.only.split(","))]
     if not models:
-        sys.exit(f"broad-check: no glTF model under {args.scenes}")
+        sys.exit(f"broad-check: no model under {args.scenes} (or given by --models)")
     over, total, lines = [], 0, []
 
     def emit(line):
@@ -217,7 +245,8 @@ def main():
         page = ["# Broad check: every model, many views, default settings", "",
                 head, "", f"`scripts/broad-check.py --size {args.size}{' --flags ' + shlex.quote(args.flags) if args.flags else ''}"
                 f"{f' --lights {args.lights}' if args.lights != 'sun,point,spot' else ''}"
-                f"{f' --random {args.random} --seed {args.seed}' if args.random else ''} --out FILE`, at commit {commit}. "
+                f"{f' --random {args.random} --seed {args.seed}' if args.random else ''}"
+                f"{f' --models {args.models}' if args.models else ''} --out FILE`, at commit {commit}. "
                 + summary + ".", ""] + lines
         tmp = args.out + ".tmp"
         with open(tmp, "w") as f:

@@ -105,6 +105,14 @@ int runRender(const RenderArgs& args, bool verbose) {
         std::fprintf(
             stderr, "gnomon: loaded '%s' in %.0f ms: %zu triangles, %zu objects, %zu lights\n",
             scene.name.c_str(), loadMs, triangles, scene.objects.size(), scene.lights.size());
+        // Where the model lies, in the world units lights and cameras are placed in (a model
+        // in millimetres or far from the origin is otherwise found by trial).
+        if (!scene.objects.empty()) {
+            glm::vec3 lo, hi;
+            gnomon::sceneBounds(scene, lo, hi);
+            std::fprintf(stderr, "gnomon: scene bounds %.6g,%.6g,%.6g to %.6g,%.6g,%.6g\n", lo.x,
+                         lo.y, lo.z, hi.x, hi.y, hi.z);
+        }
     }
     const gnomon::RenderOptions options = args.flags.resolve(scene);
     if (options.lightOnly >= int(scene.lights.size())) {

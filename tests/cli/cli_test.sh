@@ -196,6 +196,8 @@ scene_file)
     skip_without_gl
     expect 0 "loaded 'tutorial-room'"
     expect 0 "7 objects, 1 lights"
+    # Where the scene lies, for placing lights and cameras: the room's floor, walls and beams.
+    expect 0 "scene bounds -10.5,-0.5,-10.5 to 10.5,6,10.5"
     [[ -s "$work/room.png" ]] || fail "no room.png"
     grep -q "warning" "$work/stderr" && fail "warnings for an example: $(cat "$work/stderr")"
     printf '{"gnomon-scene": 1, "include": [{"scene": "tutorial-room"}], "options": {"filtre": "pcf"}}' \
