@@ -117,6 +117,21 @@ vec3 normalOffset(LightData light, vec3 wsNormal, vec3 wsToLight, float texelWor
 
 #include "receiver_plane.glsl"
 
+// The grazing planes' share of a shift (receiver_plane.glsl): none where the lookup applies the
+// silhouette rule (single maps' gathered PCF and hw2x2, one-comparison lookups; cubes' every
+// filter but pcss).
+#if (defined(FILTER_PCF) && !defined(HAND_COMPARE)) || defined(FILTER_HW2X2) || \
+    defined(FILTER_NONE)
+const float kMapGrazingShift = 0.0;
+#else
+const float kMapGrazingShift = kGrazingShift;
+#endif
+#if defined(FILTER_PCSS)
+const float kCubeGrazingShift = kGrazingShift;
+#else
+const float kCubeGrazingShift = 0.0;
+#endif
+
 #if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
     (defined(FILTER_PCF) || defined(FILTER_HW2X2))
 // PCF over whole texels: the footprint of a K x K box of bilinear taps is (K + 1)^2 texels
@@ -162,8 +177,10 @@ float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, vec2 ful
             downhillShadow += dot(step(0.0, capped), 1.0 - lit);
         }
     }
-    // The silhouette rule (receiver_plane.glsl), from the texels downhill of the point.
-    if (atSilhouette(kSilhouetteCosine, downhillShadow)) return 1.0;
+    // The silhouette rule (receiver_plane.glsl), from the texels downhill of the point: those
+    // of one gather (--pcf-size 1, hw2x2) as a one-comparison lookup's tap.
+    const float cosine = r == 0 ? kSingleTapSilhouetteCosine : kSilhouetteCosine;
+    if (atSilhouette(cosine, downhillShadow)) return 1.0;
     return sum / float((2 * r + 1) * (2 * r + 1));
 }
 #endif
@@ -206,7 +223,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     vec3 offset = vec3(0.0);
 #endif
 #if defined(RECEIVER_PLANE)
-    offset += grazingPlaneOffset(wsToLight, texelWorld, kFilterReach);
+    offset += grazingPlaneOffset(wsToLight, texelWorld, kFilterReach, kMapGrazingShift);
 #endif
     vec4 shadowCoord = clip + light.textureFromWorld * vec4(offset, 0.0);
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
@@ -278,6 +295,22 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
                    plane);
 #else
     vec2 tap = clamp(uv, lo, hi);
+#if defined(RECEIVER_PLANE)
+    // The silhouette rule for one comparison (--filter none, colour formats' hw2x2): one tap
+    // more, a texel diagonally downhill (its footprint wholly beyond the point), tells a
+    // silhouette, where the point is lit, from a fold (cube_lookup.glsl's cubeSingleTap).
+    vec2 downhill = clamp(uv + texelUv * sign(full), lo, hi);
+#if defined(MAP_NEAREST)
+    // A NEAREST read is one texel: compared at its own centre on the receiver's plane, as the
+    // gathers compare theirs, rather than at the point. With half a texel's capped spread
+    // instead, the side of a post 3 to 4 degrees from edge-on to a spot, beside its lit face,
+    // read that face as a caster: 0.55 % of the view falsely shadowed away from edges.
+    tap = (floor(tap / texelUv) + 0.5) * texelUv;
+    downhill = (floor(downhill / texelUv) + 0.5) * texelUv;
+#endif
+    float beyond = compareDepth(downhill, layer, TAP_REFERENCE(downhill - uv));
+    if (atSilhouette(kSingleTapSilhouetteCosine, 1.0 - beyond)) return 1.0;
+#endif
     return compareDepth(tap, layer, TAP_REFERENCE(tap - uv));
 #endif
 #undef TAP_REFERENCE
