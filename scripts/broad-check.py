@@ -240,6 +240,10 @@ def main():
     print("\n" + summary)
     if args.out:
         head = __doc__.split("Run from")[0].strip().replace("\n", " ")
+        if args.models:
+            names = ", ".join(os.path.basename(m) for m in models)
+            head = head.replace("every glTF model in ../shared/scenes",
+                                f"the models given ({names})")
         commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                                 capture_output=True, text=True).stdout.strip()
         page = ["# Broad check: every model, many views, default settings", "",
