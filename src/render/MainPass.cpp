@@ -24,6 +24,11 @@ int ditherMode(const RenderOptions& options, bool floor) {
 bool handCompare(const ShadowOptions& s) {
     return isColourFormat(s.depthFormat) || s.filter == ShadowFilter::None;
 }
+// Hand-compared reads of one NEAREST texel: compared at the texel's own centre on the receiver's
+// plane (shadow_lookup.glsl, MAP_NEAREST).
+bool nearestHandCompare(const ShadowOptions& s) {
+    return handCompare(s) && s.mapFilter == MapFilter::Nearest;
+}
 // Filters whose kernel width is pcfSize.
 bool kernelFilter(const ShadowOptions& s) {
     return s.filter == ShadowFilter::Pcf || s.filter == ShadowFilter::Poisson;
@@ -67,7 +72,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(ditherMode(options, floor)) << 27 |
         std::uint64_t(in.viewDepth != nullptr) << 29 | std::uint64_t(so.normalOffset > 0.0f) << 30 |
         std::uint64_t(in.transmittance != nullptr) << 31 |
-        std::uint64_t(handCompare(so) && so.mapFilter == MapFilter::Nearest) << 32;
+        std::uint64_t(nearestHandCompare(so)) << 32;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -123,7 +128,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
             break;
     }
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
-    if (handCompare(s) && s.mapFilter == MapFilter::Nearest) defines.push_back("MAP_NEAREST");
+    if (nearestHandCompare(s)) defines.push_back("MAP_NEAREST");
     if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
     if (s.normalOffset > 0.0f) defines.push_back("NORMAL_OFFSET");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
