@@ -6,6 +6,7 @@
 // floor, a thin part against its base) get their shadow. Included by main.frag.glsl.
 #ifdef CONTACT_SHADOWS
 layout(binding = 5) uniform sampler2D uViewDepth;  // window depth, NEAREST, no comparison
+layout(location = 1) uniform mat4 uViewFromWorld;  // the vertex stage's, shared
 layout(location = 2) uniform mat4 uClipFromView;   // the vertex stage's, shared
 // View-space z from window depth d: (x·d + y) / (z·d + w). A perspective or orthographic
 // projection's z and w rows do not involve x and y, so the inverse projection reduces to this.
@@ -34,17 +35,19 @@ float viewZPerDepth(float d) {
 
 // `visible` (the map's visibility) when nothing in the depth buffer lies between the
 // fragment and the march's length towards the light, 0 when something does; a fragment the
-// map already shadows (visible 0) does not march. `lightDistance` is the light's distance
-// for point and spot lights (the march stops there), or a large number for directional ones.
-float contactShadow(vec3 vsP, vec3 vsN, vec3 vsToLight, float lightDistance, float visible) {
+// map already shadows (visible 0) does not march. The point `p`, its normal `n` and the
+// direction `toLight` are in world space (the view's rotation keeps lengths).
+// `lightDistance` is the light's distance for point and spot lights (the march stops
+// there), or a large number for directional ones.
+float contactShadow(vec3 p, vec3 n, vec3 toLight, float lightDistance, float visible) {
     float len = min(uContactLength, 0.95 * lightDistance);
     if (!(len > 0.0)) return visible;
     // Steps start off the surface and are staggered per pixel (interleaved gradient noise,
     // Jimenez 2014), so a short march leaves no bands.
     float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    vec3 start = vsP + vsN * (0.02 * len);
-    vec4 clipStart = uClipFromView * vec4(start, 1.0);
-    vec4 clipEnd = uClipFromView * vec4(start + vsToLight * len, 1.0);
+    vec3 start = p + n * (0.02 * len);
+    vec4 clipStart = uClipFromView * (uViewFromWorld * vec4(start, 1.0));
+    vec4 clipEnd = uClipFromView * (uViewFromWorld * vec4(start + toLight * len, 1.0));
     // A march towards the camera stops before the camera's plane, where it would not project.
     float wMin = 0.1 * clipStart.w;
     if (clipEnd.w < wMin) {

@@ -1,8 +1,8 @@
 // Lights as the main pass sees them: one record per light (up to MAX_LIGHTS, set
-// from GL_MAX_UNIFORM_BLOCK_SIZE), positions and directions already in view space, plus the
-// light's shadow transform. A uniform block, not a storage buffer: indexed by the loop
-// counter (dynamically uniform) its reads are scalar, where llvmpipe gathers storage-buffer
-// reads per fragment.
+// from GL_MAX_UNIFORM_BLOCK_SIZE), positions and directions in world space, where the
+// surface is shaded and its maps looked up, plus the light's shadow transform. A uniform
+// block, not a storage buffer: indexed by the loop counter (dynamically uniform) its reads
+// are scalar, where llvmpipe gathers storage-buffer reads per fragment.
 const int kDirectional = 0;
 const int kSpot = 1;
 const int kPoint = 2;
@@ -16,15 +16,15 @@ const float kFrameCascaded = 3.0;  // wsPosition: x first cascade record, y coun
 
 struct LightData {
     mat4 textureFromWorld;  // world -> light clip -> [0,1] map coordinates and depth
-    vec4 vsPosition;        // xyz, w = type
-    vec4 vsDirection;       // xyz towards where the light goes, w = range (point, spot; -1:
+    vec4 position;          // xyz, w = type
+    vec4 direction;         // xyz towards where the light goes, w = range (point, spot; -1:
                             // none; 0 never reaches the shader: lights that are off)
     vec4 colour;            // rgb = colour x intensity, w = shadow layer (-1: no shadow)
     vec4 attenuation;       // c0, c1, c2, cos(outer cone); cascade records: x = far split
     vec4 shadow;            // x cos(inner cone), y texel world size, z frame kind, w uv scale
     vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv,
                             // w the map's far plane
-    vec4 wsPosition;        // xyz world position (cube lookups); 2D maps: xy the map's
+    vec4 wsPosition;        // xyz position again (cube lookups); 2D maps: xy the map's
                             // lower-left corner in its layer (uv); w the map's near plane
     vec4 soft;              // PCSS: x emitter radius (world; directional: tan of its angular
                             // radius), y 1 = angular, z emitter distance at map depth 0;

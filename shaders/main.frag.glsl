@@ -1,7 +1,7 @@
 #version 450 core
-// Main pass shading: ambient + Blinn-Phong diffuse and specular per light in view
-// space, attenuation 1/(c0 + c1 d + c2 d^2) (area lights: d from the light's plane), spot
-// cones, and per-light shadow visibility.
+// Main pass shading: ambient + Blinn-Phong diffuse and specular per light in world
+// space (where the maps are looked up too), attenuation 1/(c0 + c1 d + c2 d^2) (area
+// lights: d from the light's plane), spot cones, and per-light shadow visibility.
 // A shadowed fragment keeps ambient only (SHADOWED_FACTOR undefined) or has its colour
 // multiplied by uShadowFactor per shadowing light (SHADOWED_FACTOR, the WebGL book's 0.7).
 // SHADOWS_OFF skips every lookup and leaves lighting unchanged.
@@ -22,8 +22,6 @@
 in VertexOut {
     vec3 wsPosition;
     vec3 wsNormal;
-    vec3 vsPosition;
-    vec3 vsNormal;
     vec3 colour;
     flat vec4 material;
     flat float receives;
@@ -42,14 +40,14 @@ layout(binding = 4) uniform sampler2D uBaseColourTexture;  // 1x1 white when unt
 
 layout(location = 3) uniform vec3 uAmbient;
 layout(location = 4) uniform float uShadowFactor;
-layout(location = 5) uniform mat4 uWorldFromView;
+layout(location = 5) uniform vec3 uEye;  // the camera's world position
 
 layout(location = 0) out vec4 fragColour;
 
 #ifdef HAS_CASCADES
 // The view depth that picks a cascade, as a row applied to the world position: the depth
-// along the camera the cascades were fitted to. That is the drawing camera's (the same as
-// -vsPosition.z) except when gnomon score draws one view with another frame's maps, to see
+// along the camera the cascades were fitted to. That is the drawing camera's (the point's
+// view-space depth) except when gnomon score draws one view with another frame's maps, to see
 // what only the maps' motion changes.
 layout(location = 11) uniform vec4 uCascadeDepth;
 #define CASCADE_DEPTH dot(uCascadeDepth, vec4(vIn.wsPosition, 1.0))
@@ -73,35 +71,35 @@ struct Surface {
     bool unlit;
     bool receives;
     bool blended;  // alpha-blended: takes no tint (its own would speckle it)
-    vec3 vsN, wsN, base, vsToEye;
+    vec3 n, base, toEye;  // world space
 };
 
-// Direction to the light (view space) and its falloff at this fragment.
-void lightAt(LightData light, out vec3 vsToLight, out float falloff) {
-    int type = int(light.vsPosition.w);
+// Direction to the light (world space) and its falloff at this fragment.
+void lightAt(LightData light, out vec3 toLight, out float falloff) {
+    int type = int(light.position.w);
     falloff = 1.0;
     if (type == kDirectional) {
-        vsToLight = -normalize(light.vsDirection.xyz);
+        toLight = -normalize(light.direction.xyz);
     } else if (type == kArea) {
         // Parallel rays; falloff with the distance from the light's plane (Hessian normal
         // form: n.p + d, with d = -n.p0 for the plane through the light).
-        vec3 n = normalize(light.vsDirection.xyz);
-        vsToLight = -n;
-        float dist = abs(dot(n, vIn.vsPosition - light.vsPosition.xyz));
+        vec3 n = normalize(light.direction.xyz);
+        toLight = -n;
+        float dist = abs(dot(n, vIn.wsPosition - light.position.xyz));
         vec3 c = light.attenuation.xyz;
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
     } else {
-        vec3 d = light.vsPosition.xyz - vIn.vsPosition;
+        vec3 d = light.position.xyz - vIn.wsPosition;
         float dist = length(d);
-        vsToLight = d / dist;
+        toLight = d / dist;
         vec3 c = light.attenuation.xyz;
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
         // glTF's range window (1 - (d/range)^4)^2, 1 without a range (w < 0).
-        float r = light.vsDirection.w > 0.0 ? dist / light.vsDirection.w : 0.0;
+        float r = light.direction.w > 0.0 ? dist / light.direction.w : 0.0;
         float window = clamp(1.0 - r * r * r * r, 0.0, 1.0);
         falloff *= window * window;
         if (type == kSpot) {
-            float cosAngle = dot(-vsToLight, normalize(light.vsDirection.xyz));
+            float cosAngle = dot(-toLight, normalize(light.direction.xyz));
             falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
         }
     }
@@ -109,15 +107,15 @@ void lightAt(LightData light, out vec3 vsToLight, out float falloff) {
 
 // Adds one light's Blinn-Phong term, as visible as `visibility` says (per channel: coloured
 // shadows tint it).
-void shade(LightData light, Surface s, vec3 vsToLight, float falloff, vec3 visibility,
+void shade(LightData light, Surface s, vec3 toLight, float falloff, vec3 visibility,
            inout vec3 lit, inout vec3 factor) {
     if (s.unlit) {
         factor *= mix(vec3(uShadowFactor), vec3(1.0), visibility);
         return;
     }
-    float nDotL = max(dot(s.vsN, vsToLight), 0.0);
-    vec3 h = normalize(vsToLight + s.vsToEye);
-    float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(s.vsN, h), 0.0), vIn.material.y) : 0.0;
+    float nDotL = max(dot(s.n, toLight), 0.0);
+    vec3 h = normalize(toLight + s.toEye);
+    float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(s.n, h), 0.0), vIn.material.y) : 0.0;
     vec3 contribution = light.colour.rgb * falloff * (nDotL * s.base + spec);
 #ifdef SHADOWED_FACTOR
     lit += contribution;
@@ -156,33 +154,32 @@ void recordVisibility(LightData light, float visibility) {
 #define SHADOWED_LOOP(first, last, LOOKUP)                                              \
     for (int k = first; k < last; ++k) {                                                \
         LightData light = lights[lightRecord(k)];                                       \
-        vec3 vsToLight;                                                                 \
+        vec3 toLight;                                                                   \
         float falloff;                                                                  \
-        lightAt(light, vsToLight, falloff);                                             \
+        lightAt(light, toLight, falloff);                                               \
         float visibility = 1.0;                                                         \
         if (s.receives) {                                                               \
-            vec3 wsToLight = mat3(uWorldFromView) * vsToLight;                           \
             gTexelWorld = 0.0;                                                          \
             RESET_TINT                                                                  \
-            visibility = LOOKUP(light, vIn.wsPosition, s.wsN, wsToLight, CASCADE_DEPTH);     \
-            CONTACT(light, visibility, vsToLight);                                      \
+            visibility = LOOKUP(light, vIn.wsPosition, s.n, toLight, CASCADE_DEPTH);    \
+            CONTACT(light, visibility, toLight);                                        \
             RECORD(light, visibility);                                                  \
         }                                                                               \
-        shade(light, s, vsToLight, falloff, LIGHT_THROUGH(visibility), lit, factor);    \
+        shade(light, s, toLight, falloff, LIGHT_THROUGH(visibility), lit, factor);      \
     }
 
 #ifdef CONTACT_SHADOWS
 // Point and spot lights: the march stops short of the light.
-#define CONTACT(light, visibility, vsToLight)                                            \
+#define CONTACT(light, visibility, toLight)                                             \
     {                                                                                   \
-        int kind = int(light.vsPosition.w);                                             \
+        int kind = int(light.position.w);                                               \
         float reach = kind == kDirectional || kind == kArea                             \
                           ? 1e30                                                        \
-                          : length(light.vsPosition.xyz - vIn.vsPosition);              \
-        visibility = contactShadow(vIn.vsPosition, s.vsN, vsToLight, reach, visibility); \
+                          : length(light.position.xyz - vIn.wsPosition);                \
+        visibility = contactShadow(vIn.wsPosition, s.n, toLight, reach, visibility);    \
     }
 #else
-#define CONTACT(light, visibility, vsToLight)
+#define CONTACT(light, visibility, toLight)
 #endif
 
 #ifdef VISIBILITY_PASS
@@ -232,30 +229,29 @@ void findReceiverPlane() {
 }
 
 #ifdef FLOOR
-vec3 floorDiffuse(LightData light, vec3 vsN, out vec3 vsToLight) {
-    int type = int(light.vsPosition.w);
-    vsToLight = type == kDirectional || type == kArea
-                    ? -normalize(light.vsDirection.xyz)
-                    : normalize(light.vsPosition.xyz - vIn.vsPosition);
-    return light.colour.rgb * max(dot(vsN, vsToLight), 0.0);
+vec3 floorDiffuse(LightData light, vec3 n, out vec3 toLight) {
+    int type = int(light.position.w);
+    toLight = type == kDirectional || type == kArea
+                  ? -normalize(light.direction.xyz)
+                  : normalize(light.position.xyz - vIn.wsPosition);
+    return light.colour.rgb * max(dot(n, toLight), 0.0);
 }
 
 #define FLOOR_LOOP(first, last, LOOKUP)                                                   \
     for (int k = first; k < last; ++k) {                                                  \
-        vec3 vsToLight;                                                                   \
+        vec3 toLight;                                                                     \
         LightData light = lights[lightRecord(k)];                                         \
-        vec3 diffuse = floorDiffuse(light, vsN, vsToLight);                               \
-        lit += diffuse * LOOKUP(light, vIn.wsPosition, wsN, mat3(uWorldFromView) * vsToLight, \
-                                CASCADE_DEPTH);                                           \
+        vec3 diffuse = floorDiffuse(light, n, toLight);                                   \
+        lit += diffuse * LOOKUP(light, vIn.wsPosition, n, toLight, CASCADE_DEPTH);        \
     }
 
 void main() {
     findReceiverPlane();
-    vec3 vsN = normalize(vIn.vsNormal), wsN = normalize(vIn.wsNormal);
+    vec3 n = normalize(vIn.wsNormal);
     vec3 lit = uAmbient;
     vec3 unused;
     for (int k = uLightFirst; k < UNSHADOWED_END; ++k)
-        lit += floorDiffuse(lights[lightRecord(k)], vsN, unused);
+        lit += floorDiffuse(lights[lightRecord(k)], n, unused);
     SHADOWED_KINDS(FLOOR_LOOP)
     fragColour = vec4(lit * vIn.colour, 1.0);
 }
@@ -303,12 +299,8 @@ void main() {
     s.unlit = vIn.material.z > 0.5;
     s.receives = vIn.receives > 0.5;
     s.blended = false;
-    s.vsN = normalize(vIn.vsNormal);
-    s.wsN = normalize(vIn.wsNormal);
-    if (vIn.material.w > 0.5 && !gl_FrontFacing) {  // double-sided: light the side we see
-        s.vsN = -s.vsN;
-        s.wsN = -s.wsN;
-    }
+    s.n = normalize(vIn.wsNormal);
+    if (vIn.material.w > 0.5 && !gl_FrontFacing) s.n = -s.n;  // double-sided: light the side we see
     s.base = vIn.colour;
     float alpha = 1.0;
 #ifdef MATERIAL_PATH
@@ -323,16 +315,16 @@ void main() {
 #ifdef VISIBILITY_PASS
     if (s.receives) imageStore(uObjectRecord, ivec2(gl_FragCoord.xy), vec4(vIn.object + 1.0));
 #endif
-    s.vsToEye = normalize(-vIn.vsPosition);
+    s.toEye = normalize(uEye - vIn.wsPosition);
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
     vec3 factor = vec3(1.0);
     for (int k = uLightFirst; k < UNSHADOWED_END; ++k) {
         LightData light = lights[lightRecord(k)];
-        vec3 vsToLight;
+        vec3 toLight;
         float falloff;
-        lightAt(light, vsToLight, falloff);
-        shade(light, s, vsToLight, falloff, vec3(1.0), lit, factor);
+        lightAt(light, toLight, falloff);
+        shade(light, s, toLight, falloff, vec3(1.0), lit, factor);
     }
     SHADOWED_KINDS(SHADOWED_LOOP)
     vec3 colour = lit * factor;

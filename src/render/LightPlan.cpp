@@ -9,7 +9,7 @@
 namespace gnomon::render {
 
 namespace {
-// LightData.vsPosition.w in shaders/lights.glsl.
+// LightData.position.w in shaders/lights.glsl.
 int lightTypeCode(LightType type) {
     switch (type) {
         case LightType::Directional:
@@ -72,22 +72,19 @@ LightPlan::Held* LightPlan::held(std::size_t i) {
 }
 
 bool LightPlan::unchanged(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-                          const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
-                          const Camera* fitCamera) const {
+                          const shadow::ViewSamples* samples, const Camera* fitCamera) const {
     const Made& m = mMade;
     // Samples filled some other way than viewSamples() carry no generation: always replan.
     const std::uint64_t generation = samples ? samples->generation : 0;
     return m.valid && (!samples || generation != 0) && m.geometry == scene.revision() &&
            m.samples == generation && m.following == mFollowing &&
            m.hasFitCamera == (fitCamera != nullptr) && (!fitCamera || m.fitCamera == *fitCamera) &&
-           m.viewFromWorld == viewFromWorld && m.camera == s.camera && m.options == options &&
-           m.lights == s.lights;
+           m.camera == s.camera && m.options == options && m.lights == s.lights;
 }
 
 void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-                     const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
-                     const Camera* fitCamera) {
-    if (unchanged(s, options, scene, viewFromWorld, samples, fitCamera)) return;
+                     const shadow::ViewSamples* samples, const Camera* fitCamera) {
+    if (unchanged(s, options, scene, samples, fitCamera)) return;
     mMade.valid = false;  // until this plan is whole
     mFitCamera = fitCamera ? *fitCamera : s.camera;
     mShadowed.clear();
@@ -113,15 +110,13 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
         const glm::vec3 direction = glm::length(light.direction) > 0.0f
                                         ? glm::normalize(light.direction)
                                         : glm::vec3(0, -1, 0);
-        g.vsPosition = glm::vec4(glm::vec3(viewFromWorld * glm::vec4(light.position, 1.0f)),
-                                 float(lightTypeCode(light.type)));
+        g.position = glm::vec4(light.position, float(lightTypeCode(light.type)));
         // w: 0 off; on: the range (point, spot), or -1 for none.
         const bool ranged =
             light.range > 0.0f && (light.type == LightType::Point || light.type == LightType::Spot);
-        g.vsDirection =
-            glm::vec4(glm::mat3(viewFromWorld) * direction, !lightIsOn(s, options, i) ? 0.0f
-                                                            : ranged                  ? light.range
-                                                                                      : -1.0f);
+        g.direction = glm::vec4(direction, !lightIsOn(s, options, i) ? 0.0f
+                                           : ranged                  ? light.range
+                                                                     : -1.0f);
         g.colour = glm::vec4(light.colour * light.intensity, -1.0f);
         g.attenuation = {light.attenuation.constant, light.attenuation.linear,
                          light.attenuation.quadratic,
@@ -169,7 +164,6 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
     mMade.hasFitCamera = fitCamera != nullptr;
     if (fitCamera) mMade.fitCamera = *fitCamera;
     mMade.following = mFollowing;
-    mMade.viewFromWorld = viewFromWorld;
     mMade.options = options;
     mMade.valid = true;
 }
@@ -187,7 +181,7 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     // (Map layers are assigned later, by the shadow pass: colour.w says nothing yet.)
     auto kindOf = [&](std::size_t i) {
         const GpuLight& g = mLights[i];
-        if (g.vsDirection.w == 0.0f) return -1;
+        if (g.direction.w == 0.0f) return -1;
         if (!mHasMap[i]) return 0;
         return g.shadow.z == 2.0f ? 2 : g.shadow.z == 3.0f ? 3 : 1;
     };

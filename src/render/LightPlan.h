@@ -26,13 +26,13 @@ public:
     // with FitTo::ViewDepth)?
     static bool wantsViewSamples(const Scene& s, const RenderOptions& options);
 
-    // Plans every light of `s` (the GPU copy `scene` gives the items' world boxes).
+    // Plans every light of `s` (the GPU copy `scene` gives the items' world boxes) as
+    // world-space records: the main pass lights and looks up in world space, so a record
+    // depends on the view only through the maps fitted to it.
     // `samples`: what the view sees, or null to fit to boxes. `fitCamera`: the camera the
-    // maps follow when not the scene's (samples then come from its view); the records stay
-    // in the drawing view's space (`viewFromWorld`).
+    // maps follow when not the scene's (samples then come from its view).
     void plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-              const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
-              const Camera* fitCamera = nullptr);
+              const shadow::ViewSamples* samples, const Camera* fitCamera = nullptr);
     // Frames that follow one another as a view moves (the viewer, a scored path): each
     // stabilised map keeps its extent, and cascades their depth range, while those still
     // cover what the view sees (shadow::HeldExtent). Off: every frame is fitted afresh.
@@ -72,12 +72,10 @@ private:
         std::vector<Light> lights;
         Camera camera, fitCamera;
         bool hasFitCamera = false, following = false;
-        glm::mat4 viewFromWorld{0.0f};
         RenderOptions options;
     };
     bool unchanged(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-                   const glm::mat4& viewFromWorld, const shadow::ViewSamples* samples,
-                   const Camera* fitCamera) const;
+                   const shadow::ViewSamples* samples, const Camera* fitCamera) const;
 
     Made mMade;
     bool mFollowing = false;

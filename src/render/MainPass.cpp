@@ -247,7 +247,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     glUniformMatrix4fv(2, 1, GL_FALSE, &u.in->clipFromView[0][0]);
     glUniform3fv(3, 1, &u.in->ambient[0]);
     glUniform1f(4, u.shadowFactor);
-    glUniformMatrix4fv(5, 1, GL_FALSE, &u.worldFromView[0][0]);
+    glUniform3fv(5, 1, &u.eye[0]);
     glUniform4iv(6, 1, &u.ranges[0]);
     glUniform1i(10, u.first);
     glUniform3fv(7, 1, &u.depthAware[0]);
@@ -333,7 +333,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
                                        : options.shadow.depthFormat;
     FrameUniforms u;
     u.in = &in;
-    u.worldFromView = glm::inverse(in.viewFromWorld);
+    u.eye = glm::vec3(glm::inverse(in.viewFromWorld)[3]);
     u.viewZFromDepth = viewZFromDepth(in.clipFromView);
     u.shadowFactor = options.shading.shadowFactor;
     u.depthAware =

@@ -18,8 +18,8 @@ namespace gnomon::render {
 // The std140 light record of shaders/lights.glsl (every member 16-byte aligned).
 struct GpuLight {
     glm::mat4 textureFromWorld{1.0f};
-    glm::vec4 vsPosition{0.0f};
-    glm::vec4 vsDirection{0.0f};
+    glm::vec4 position{0.0f};   // world space, w = type
+    glm::vec4 direction{0.0f};  // world space, w = range
     glm::vec4 colour{0.0f};
     glm::vec4 attenuation{0.0f};
     glm::vec4 shadow{0.0f};
@@ -75,7 +75,7 @@ private:
     // What every program of one frame's draws is given (the shaders' uniform locations).
     struct FrameUniforms {
         const MainPassInputs* in = nullptr;
-        glm::mat4 worldFromView{1.0f};
+        glm::vec3 eye{0.0f};  // the camera's world position
         glm::vec4 viewZFromDepth{0.0f};
         float shadowFactor = 0.0f, contactLength = 0.0f, lightBleed = 0.0f;
         glm::vec3 depthAware{0.0f};  // steps, map and cube stored-depth spacing

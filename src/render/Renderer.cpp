@@ -185,7 +185,7 @@ struct Renderer::Impl {
         }
         // Drawn for the tiles alone, the samples do not fit the lights.
         const bool fitSamples = render::LightPlan::wantsViewSamples(s, options) || contact;
-        plan.plan(s, options, scene, viewFromWorld, fitSamples ? samples : nullptr, fitCamera);
+        plan.plan(s, options, scene, fitSamples ? samples : nullptr, fitCamera);
         if (fitCamera) {
             // The samples were the fit camera's view: contact shadows need the drawn one's,
             // and the tiles are not worth it for this rare frame.
@@ -250,8 +250,8 @@ struct Renderer::Impl {
         // The view's depth bounds each tile's volume, when blended surfaces (not in it) do
         // not lie over it.
         const shadow::DepthCells cells = viewDepth.cells();
-        tiled.plan(plan.records(), plan.ranges(), in.clipFromView, options.width, options.height,
-                   stats.mainTriangles,
+        tiled.plan(plan.records(), plan.ranges(), in.viewFromWorld, in.clipFromView, options.width,
+                   options.height, stats.mainTriangles,
                    options.shading.lightTiles && !fitCamera &&
                        options.shading.shadowedRule != ShadowedRule::Factor && !scene.hasUnlit(),
                    samples && !scene.hasBlended() ? &cells : nullptr);

@@ -10,16 +10,17 @@ namespace gnomon::render {
 namespace {
 // A record's reach (shaders/main.frag.glsl, lightAt): spots end at their outer cone, point
 // and spot lights with a range at that range; directional and area lights reach everywhere.
-shadow::LightReach reachOf(const GpuLight& g, bool shadowed) {
+shadow::LightReach reachOf(const GpuLight& g, bool shadowed, const glm::mat4& viewFromWorld) {
     shadow::LightReach r;
     r.shadowed = shadowed;
-    const int type = int(g.vsPosition.w);
+    const int type = int(g.position.w);
     if (type != 1 && type != 2) return r;  // directional, area
-    r.position = glm::vec3(g.vsPosition);
-    r.range = g.vsDirection.w > 0.0f ? g.vsDirection.w : 0.0f;
+    // Records are in world space; tiles are culled in the view's.
+    r.position = glm::vec3(viewFromWorld * glm::vec4(glm::vec3(g.position), 1.0f));
+    r.range = g.direction.w > 0.0f ? g.direction.w : 0.0f;
     if (type == 1) {
         r.shape = shadow::LightReach::Shape::Cone;
-        r.direction = glm::vec3(g.vsDirection);
+        r.direction = glm::mat3(viewFromWorld) * glm::vec3(g.direction);
         r.cosOuter = g.attenuation.w;
     } else if (r.range > 0.0f) {
         r.shape = shadow::LightReach::Shape::Sphere;
@@ -44,8 +45,9 @@ bool TiledLights::wantsDepth(const Scene& s, const RenderOptions& options) {
 }
 
 void TiledLights::plan(const std::vector<GpuLight>& records, glm::ivec4 ranges,
-                       const glm::mat4& clipFromView, int width, int height,
-                       std::uint64_t triangles, bool allowed, const shadow::DepthCells* depth) {
+                       const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, int width,
+                       int height, std::uint64_t triangles, bool allowed,
+                       const shadow::DepthCells* depth) {
     mRanges = ranges;
     mTiles.clear();
     mOrder.resize(std::size_t(ranges.w));
@@ -56,7 +58,7 @@ void TiledLights::plan(const std::vector<GpuLight>& records, glm::ivec4 ranges,
     mReach.clear();
     bool anyBounded = false;
     for (int i = 0; i < ranges.w; ++i) {
-        mReach.push_back(reachOf(records[std::size_t(i)], i >= ranges.x));
+        mReach.push_back(reachOf(records[std::size_t(i)], i >= ranges.x, viewFromWorld));
         anyBounded = anyBounded || mReach.back().shape != shadow::LightReach::Shape::Everywhere;
     }
     if (!anyBounded) return;

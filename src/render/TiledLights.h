@@ -29,13 +29,14 @@ struct LightTile {
 
 class TiledLights {
 public:
-    // Plans one frame. `records` and `ranges` as LightPlan makes them (view-space records,
-    // the ends of each kind); `triangles`: what one more drawing of the scene costs. Tiles
-    // only when `allowed` and the cost model (shadow::tilingGainMs) expects a gain.
-    // `depth`: the view's reduced depth, which bounds each tile's volume (null: none).
+    // Plans one frame. `records` and `ranges` as LightPlan makes them (world-space records,
+    // the ends of each kind), seen through `viewFromWorld` and `clipFromView`; `triangles`: what
+    // one more drawing of the scene costs. Tiles only when `allowed` and the cost model
+    // (shadow::tilingGainMs) expects a gain. `depth`: the view's reduced depth, which bounds each
+    // tile's volume (null: none).
     void plan(const std::vector<GpuLight>& records, glm::ivec4 ranges,
-              const glm::mat4& clipFromView, int width, int height, std::uint64_t triangles,
-              bool allowed, const shadow::DepthCells* depth);
+              const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, int width, int height,
+              std::uint64_t triangles, bool allowed, const shadow::DepthCells* depth);
     // Is the view depth pass worth drawing for the tiles alone: do two or more shadowed
     // lights that are on have a bounded reach (spots, or point lights with a range)?
     static bool wantsDepth(const Scene& s, const RenderOptions& options);
