@@ -74,9 +74,15 @@ struct Surface {
     vec3 n, base, toEye;  // world space
 };
 
+// A loop's light kind when all its records have one (cubes: point lights; cascades:
+// directional ones), passed as a constant so the compiler drops the other kinds' code:
+// llvmpipe runs every side of a branch on the record's type. The single-map and
+// unshadowed loops mix kinds.
+const int kAnyKind = -1;
+
 // Direction to the light (world space) and its falloff at this fragment.
-void lightAt(LightData light, out vec3 toLight, out float falloff) {
-    int type = int(light.position.w);
+void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
+    int type = kind == kAnyKind ? int(light.position.w) : kind;
     falloff = 1.0;
     if (type == kDirectional) {
         toLight = -normalize(light.direction.xyz);
@@ -151,12 +157,12 @@ void recordVisibility(LightData light, float visibility) {
 // lights that reach it). llvmpipe runs both sides of every branch
 // it cannot prove uniform, so a single loop would pay for every kind's lookup on every light;
 // separate loops run each light's own lookup only, and lights that are off are not in any.
-#define SHADOWED_LOOP(first, last, LOOKUP)                                              \
+#define SHADOWED_LOOP(first, last, LOOKUP, KIND)                                        \
     for (int k = first; k < last; ++k) {                                                \
         LightData light = lights[lightRecord(k)];                                       \
         vec3 toLight;                                                                   \
         float falloff;                                                                  \
-        lightAt(light, toLight, falloff);                                               \
+        lightAt(light, KIND, toLight, falloff);                                         \
         float visibility = 1.0;                                                         \
         if (s.receives) {                                                               \
             gTexelWorld = 0.0;                                                          \
@@ -189,24 +195,24 @@ void recordVisibility(LightData light, float visibility) {
 #endif
 
 // The records each main() loops over: the unshadowed ones (every light when shadows are off),
-// then each kind of shadowed light this frame has, through LOOP(first, last, LOOKUP).
+// then each kind of shadowed light this frame has, through LOOP(first, last, LOOKUP, KIND).
 #ifdef SHADOWS_OFF
 #define UNSHADOWED_END uLightRanges.w
 #define SHADOWED_KINDS(LOOP)
 #else
 #define UNSHADOWED_END uLightRanges.x
 #ifdef HAS_CUBES
-#define CUBE_KIND(LOOP) LOOP(uLightRanges.y, uLightRanges.z, cubeLookup)
+#define CUBE_KIND(LOOP) LOOP(uLightRanges.y, uLightRanges.z, cubeLookup, kPoint)
 #else
 #define CUBE_KIND(LOOP)
 #endif
 #ifdef HAS_CASCADES
-#define CASCADE_KIND(LOOP) LOOP(uLightRanges.z, uLightRanges.w, cascadeVisibility)
+#define CASCADE_KIND(LOOP) LOOP(uLightRanges.z, uLightRanges.w, cascadeVisibility, kDirectional)
 #else
 #define CASCADE_KIND(LOOP)
 #endif
 #define SHADOWED_KINDS(LOOP) \
-    LOOP(uLightRanges.x, uLightRanges.y, mapLookup) CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
+    LOOP(uLightRanges.x, uLightRanges.y, mapLookup, kAnyKind) CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
 #endif
 
 float mapLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
@@ -229,19 +235,19 @@ void findReceiverPlane() {
 }
 
 #ifdef FLOOR
-vec3 floorDiffuse(LightData light, vec3 n, out vec3 toLight) {
-    int type = int(light.position.w);
+vec3 floorDiffuse(LightData light, int kind, vec3 n, out vec3 toLight) {
+    int type = kind == kAnyKind ? int(light.position.w) : kind;
     toLight = type == kDirectional || type == kArea
                   ? -normalize(light.direction.xyz)
                   : normalize(light.position.xyz - vIn.wsPosition);
     return light.colour.rgb * max(dot(n, toLight), 0.0);
 }
 
-#define FLOOR_LOOP(first, last, LOOKUP)                                                   \
+#define FLOOR_LOOP(first, last, LOOKUP, KIND)                                             \
     for (int k = first; k < last; ++k) {                                                  \
         vec3 toLight;                                                                     \
         LightData light = lights[lightRecord(k)];                                         \
-        vec3 diffuse = floorDiffuse(light, n, toLight);                                   \
+        vec3 diffuse = floorDiffuse(light, KIND, n, toLight);                             \
         lit += diffuse * LOOKUP(light, vIn.wsPosition, n, toLight, CASCADE_DEPTH);        \
     }
 
@@ -251,7 +257,7 @@ void main() {
     vec3 lit = uAmbient;
     vec3 unused;
     for (int k = uLightFirst; k < UNSHADOWED_END; ++k)
-        lit += floorDiffuse(lights[lightRecord(k)], n, unused);
+        lit += floorDiffuse(lights[lightRecord(k)], kAnyKind, n, unused);
     SHADOWED_KINDS(FLOOR_LOOP)
     fragColour = vec4(lit * vIn.colour, 1.0);
 }
@@ -323,7 +329,7 @@ void main() {
         LightData light = lights[lightRecord(k)];
         vec3 toLight;
         float falloff;
-        lightAt(light, toLight, falloff);
+        lightAt(light, kAnyKind, toLight, falloff);
         shade(light, s, toLight, falloff, vec3(1.0), lit, factor);
     }
     SHADOWED_KINDS(SHADOWED_LOOP)
