@@ -46,8 +46,8 @@ float cubeSingleTap(vec3 toPoint, float layer, vec3 u, vec3 v, float step, float
 // face's plane (a 2-D kernel on the face, not the online WebGL tutorial's 3-D grid of
 // directions: the same footprint for k^2 instead of k^3 lookups).
 float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
-    vec3 toPoint = wsPosition - light.wsPosition.xyz;
-    float near = light.wsPosition.w, far = light.shadowBias.w;
+    vec3 toPoint = wsPosition - light.position.xyz;
+    float near = light.placement.w, far = light.shadowBias.w;
     vec3 a = abs(toPoint);
     float major = max(a.x, max(a.y, a.z));
     gTexelWorld = light.shadow.y * major;
@@ -69,7 +69,7 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     // step of a float map on receivers near the nearest caster's distance (a box's top face
     // under a point light 0.1 to 0.5 units above it: up to 6 % of the view falsely shadowed
     // with one step, the whole face inside the cube's downward face flipping at once).
-    float wsScale = length(wsPosition) + length(light.wsPosition.xyz);
+    float wsScale = length(wsPosition) + length(light.position.xyz);
     float rounding = exp2(-24.0) * (farTerm + nearTerm * (2.0 + wsScale / major));
     float reference = stored - depthTolerance(light, max(uDepthAware.z, rounding));
     float layer = light.colour.w;

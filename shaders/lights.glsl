@@ -12,7 +12,7 @@ const int kArea = 3;
 const float kFramePerspective = 0.0;
 const float kFrameOrthographic = 1.0;
 const float kFrameCube = 2.0;
-const float kFrameCascaded = 3.0;  // wsPosition: x first cascade record, y count, z blend
+const float kFrameCascaded = 3.0;  // placement: x first cascade record, y count, z blend
 
 struct LightData {
     mat4 textureFromWorld;  // world -> light clip -> [0,1] map coordinates and depth
@@ -24,8 +24,8 @@ struct LightData {
     vec4 shadow;            // x cos(inner cone), y texel world size, z frame kind, w uv scale
     vec4 shadowBias;        // x constant (stored depth), y normal offset (texels), z texel uv,
                             // w the map's far plane
-    vec4 wsPosition;        // xyz position again (cube lookups); 2D maps: xy the map's
-                            // lower-left corner in its layer (uv); w the map's near plane
+    vec4 placement;         // 2D maps: xy the map's lower-left corner in its layer (uv);
+                            // cascaded lights: see kFrameCascaded; w the map's near plane
     vec4 soft;              // PCSS: x emitter radius (world; directional: tan of its angular
                             // radius), y 1 = angular, z emitter distance at map depth 0;
                             // w the light's index in the scene

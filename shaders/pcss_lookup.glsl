@@ -15,20 +15,20 @@ const float kPcssMaxTexels = 48.0;
 
 // Linear distance from the map's eye for a stored depth (orthographic or perspective).
 float linearDepth(LightData light, float stored, bool ortho) {
-    float n = light.wsPosition.w, f = light.shadowBias.w;
+    float n = light.placement.w, f = light.shadowBias.w;
     return ortho ? n + stored * (f - n) : n * f / (f - stored * (f - n));
 }
 
 // Stored-depth change per world unit of depth at distance t.
 float storedPerWorld(LightData light, float t, bool ortho) {
-    float n = light.wsPosition.w, f = light.shadowBias.w;
+    float n = light.placement.w, f = light.shadowBias.w;
     return ortho ? 1.0 / (f - n) : f * n / ((f - n) * t * t);
 }
 
 // World radius of the blocker search (at the near plane) and of the penumbra (at the
 // receiver), for a receiver at distance tr and an average blocker at tb.
 float pcssSearchWorld(LightData light, float tr) {
-    float n = light.wsPosition.w;
+    float n = light.placement.w;
     return light.soft.y > 0.5 ? light.soft.x * (tr - n)
                               : light.soft.x * (tr - n) / max(tr + light.soft.z, 1e-6);
 }
@@ -53,7 +53,7 @@ float pcssTapReference(float reference, vec2 o, vec3 plane, float perTexel, vec2
 
 float pcssMap(LightData light, vec2 uv, float layer, float receiverStored, float reference,
               vec2 lo, vec2 hi, float texelUv, bool ortho, float slope, vec3 plane) {
-    float n = light.wsPosition.w;
+    float n = light.placement.w;
     float tr = linearDepth(light, receiverStored, ortho);
     float texelAtNear = light.shadow.y * (ortho ? 1.0 : n);
     float texelAtReceiver = light.shadow.y * (ortho ? 1.0 : tr);

@@ -239,7 +239,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     float rounding = mapRounding(light, wsPosition + offset, shadowCoord.w, coord.z);
     float reference = coord.z - depthTolerance(light, max(uDepthAware.y, rounding));
     // The light's map covers [origin, origin + uvScale] of the layer; keep every tap inside.
-    vec2 origin = light.wsPosition.xy;
+    vec2 origin = light.placement.xy;
     vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);
     vec2 uv = origin + coord.xy * uvScale;
 #if defined(COLOURED_SHADOWS)
@@ -326,8 +326,8 @@ int gCascade = -1;
 // the selection loop for every cascade.
 float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
                         float vsDepth) {
-    int first = int(light.wsPosition.x), count = int(light.wsPosition.y);
-    float blend = light.wsPosition.z;
+    int first = int(light.placement.x), count = int(light.placement.y);
+    float blend = light.placement.z;
     int chosen = -1;
     float t = 0.0, previousSplit = 0.0;
     for (int k = 0; k < count; ++k) {

@@ -32,7 +32,7 @@ bool casts(const Scene& s, const RenderOptions& options, std::size_t i) {
 void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const Light& light,
                       const ShadowOptions& options) {
     g.shadow.y = frame.texelWorldSize;
-    g.wsPosition.w = frame.near;
+    g.placement.w = frame.near;
     g.shadowBias.w = frame.far;
     // PCSS's emitter: a disc of lightRadius at the light (area lights: on their plane,
     // which may lie off the map's depth origin), or the directional light's angle.
@@ -146,9 +146,6 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
             if (frame.valid) {
                 fillShadowRecord(g, frame, light, options.shadow);
                 g.soft.w = float(i);
-                if (frame.kind == shadow::FrameKind::Cube) {
-                    g.wsPosition = glm::vec4(light.position, frame.near);
-                }
                 mShadowed.push_back({int(i), mapSize, frame,
                                      light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
                                      int(i), -1});
@@ -195,7 +192,7 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     }
     const int base = int(mOrdered.size());
     for (GpuLight& g : mOrdered) {
-        if (g.shadow.z == 3.0f) g.wsPosition.x += float(base) - float(sceneLights);
+        if (g.shadow.z == 3.0f) g.placement.x += float(base) - float(sceneLights);
     }
     mOrdered.insert(mOrdered.end(), mCascadeRecords.begin(), mCascadeRecords.end());
     for (ShadowedLight& sl : mShadowed) {
@@ -250,7 +247,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
     const int first = int(s.lights.size() + mCascadeRecords.size());
     g.shadow.z = 3.0f;
     g.colour.w = 0.0f;  // has shadows; the maps are the cascade records'
-    g.wsPosition = glm::vec4(float(first), float(count), blend, 0.0f);
+    g.placement = glm::vec4(float(first), float(count), blend, 0.0f);
     for (int k = 0; k < count; ++k) {
         const float from = splits[std::size_t(k)], to = splits[std::size_t(k) + 1];
         shadow::LightCameraFrame frame;
@@ -274,7 +271,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
         c.soft.w = float(lightIndex);
         c.attenuation.x = to;
-        c.wsPosition = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
+        c.placement = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
         mCascadeRecords.push_back(c);
         mShadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k, reach,
                              k + 1 == count ? std::numeric_limits<float>::max() : to});
@@ -290,10 +287,9 @@ void LightPlan::finish(const ShadowPass& pass) {
         g.shadow.y = sl.frame.texelWorldSize;  // a cube drawn larger than asked has finer texels
         g.shadow.w = float(sl.mapSize) / float(arraySize);
         g.shadowBias.z = 1.0f / float(arraySize);
-        // A 2D map's square in its layer (lights.glsl: wsPosition.xy, which only cubes use
-        // otherwise).
+        // A 2D map's square in its layer (lights.glsl: placement.xy).
         if (!cube)
-            g.wsPosition = glm::vec4(glm::vec2(sl.origin) / float(arraySize), 0.0f, g.wsPosition.w);
+            g.placement = glm::vec4(glm::vec2(sl.origin) / float(arraySize), 0.0f, g.placement.w);
     }
 }
 

@@ -24,7 +24,7 @@ struct GpuLight {
     glm::vec4 attenuation{0.0f};
     glm::vec4 shadow{0.0f};
     glm::vec4 shadowBias{0.0f};
-    glm::vec4 wsPosition{0.0f};
+    glm::vec4 placement{0.0f};  // lights.glsl's LightData.placement
     glm::vec4 soft{0.0f};
 };
 
