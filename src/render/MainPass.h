@@ -1,4 +1,4 @@
-// The main pass: the scene from the view camera, lit per light in view
+// The main pass: the scene from the view camera, lit per light in world
 // space, each fragment looking up every shadowed light's map. Program variants (filter,
 // outside policy, shadowed rule, shadows off) are #defines injected into one shader file,
 // compiled once and cached.
