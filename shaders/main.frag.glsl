@@ -75,10 +75,15 @@ struct Surface {
 };
 
 // A loop's light kind when all its records have one (cubes: point lights; cascades:
-// directional ones), passed as a constant so the compiler drops the other kinds' code:
-// llvmpipe runs every side of a branch on the record's type. The single-map and
-// unshadowed loops mix kinds.
+// directional ones; single maps when this frame's share one, SINGLE_MAP_KIND), passed as a
+// constant so the compiler drops the other kinds' code: llvmpipe runs every side of a branch
+// on the record's type. The unshadowed loop mixes kinds.
 const int kAnyKind = -1;
+#ifdef SINGLE_MAP_KIND
+const int kSingleMapKind = SINGLE_MAP_KIND;
+#else
+const int kSingleMapKind = kAnyKind;
+#endif
 
 // Direction to the light (world space) and its falloff at this fragment.
 void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
@@ -211,8 +216,9 @@ void recordVisibility(LightData light, float visibility) {
 #else
 #define CASCADE_KIND(LOOP)
 #endif
-#define SHADOWED_KINDS(LOOP) \
-    LOOP(uLightRanges.x, uLightRanges.y, mapLookup, kAnyKind) CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
+#define SHADOWED_KINDS(LOOP)                                         \
+    LOOP(uLightRanges.x, uLightRanges.y, mapLookup, kSingleMapKind) \
+    CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
 #endif
 
 float mapLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {

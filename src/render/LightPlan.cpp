@@ -202,6 +202,16 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     mLights.swap(mOrdered);
 }
 
+int LightPlan::singleMapKind() const {
+    int kind = -1;
+    for (int i = mRanges.x; i < mRanges.y; ++i) {
+        const int type = int(mLights[std::size_t(i)].position.w);
+        if (kind >= 0 && type != kind) return -1;
+        kind = type;
+    }
+    return kind;
+}
+
 // `count` maps along the view (Zhang et al. 2006, Parallel-Split Shadow Maps). With view
 // samples: split over the depth range they span, each cascade fitted to the samples that
 // may read it (its own slice and the previous cascade's blend band). Without: from the

@@ -45,6 +45,9 @@ public:
     const std::vector<GpuLight>& records() const { return mLights; }
     glm::ivec4 ranges() const { return mRanges; }  // ends of the record kinds
     bool hasCascades() const { return !mCascadeRecords.empty(); }
+    // The type code (shaders/lights.glsl) all single-map records share, or -1 when they
+    // mix kinds or there are none.
+    int singleMapKind() const;
 
 private:
     void orderLights(std::size_t sceneLights);

@@ -72,7 +72,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(ditherMode(options, floor)) << 27 |
         std::uint64_t(in.viewDepth != nullptr) << 29 | std::uint64_t(so.normalOffset > 0.0f) << 30 |
         std::uint64_t(in.transmittance != nullptr) << 31 |
-        std::uint64_t(nearestHandCompare(so)) << 32;
+        std::uint64_t(nearestHandCompare(so)) << 32 |
+        std::uint64_t(in.singleMapKind + 1) << 33;  // 0..4: 3 bits
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -139,6 +140,9 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     }
     if (in.shadowCubes) defines.push_back("HAS_CUBES");
     if (in.hasCascades) defines.push_back("HAS_CASCADES");
+    if (in.singleMapKind >= 0) {
+        defines.push_back("SINGLE_MAP_KIND " + std::to_string(in.singleMapKind));
+    }
     if (options.shading.shadowedRule == ShadowedRule::Factor) {
         defines.push_back("SHADOWED_FACTOR");
     }

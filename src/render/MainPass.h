@@ -43,7 +43,10 @@ struct MainPassInputs {
     // The light order and screen tiles (ranges: ends of the unshadowed, map, cube and
     // cascaded records).
     const TiledLights* tiled = nullptr;
-    bool hasCascades = false;                  // some light is cascaded this frame
+    bool hasCascades = false;  // some light is cascaded this frame
+    // The kind (lights.glsl's type code) every single-map record shares, or -1 when they mix
+    // (LightPlan::singleMapKind): the program drops the other kinds' light code.
+    int singleMapKind = -1;
     const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
     // The 2D maps' blurred moments (MomentPass) for the moment filters; null otherwise.

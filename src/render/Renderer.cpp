@@ -258,6 +258,7 @@ struct Renderer::Impl {
         in.tiled = &tiled;
         stats.lightTiles = int(tiled.tiles().size());
         in.hasCascades = plan.hasCascades();
+        in.singleMapKind = plan.singleMapKind();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
         const std::vector<render::ShadowedLight>& shadowed = plan.shadowed();

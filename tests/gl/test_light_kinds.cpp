@@ -1,0 +1,58 @@
+// When every single-map light of a frame has one kind (all spots, say), the main pass is a
+// program with that kind compiled in (LightPlan::singleMapKind); with kinds mixed, the
+// program reads each record's kind. Both must light the same: adding a light of another
+// kind that adds nothing (intensity 0, with its own map) turns the specialised program into
+// the mixed one and must leave every byte of the image as it was.
+#include <gtest/gtest.h>
+
+#include "GlTest.h"
+
+namespace gnomon::test {
+namespace {
+
+Image renderAt(const Scene& s, int size) {
+    RenderOptions o = s.options;
+    o.width = o.height = size;
+    o.shadow.cascades = 1;  // the sun added below keeps a single map, beside the others
+    return sharedRenderer().render(s, o);
+}
+
+void expectSameWithADarkSun(const Scene& s, int size) {
+    Scene mixed = s;
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = {0.3f, -1.0f, 0.2f};
+    sun.intensity = 0.0f;
+    sun.castsShadows = true;
+    mixed.lights.push_back(sun);
+    const Image one = renderAt(s, size);
+    const Image both = renderAt(mixed, size);
+    ASSERT_EQ(one.pixels.size(), both.pixels.size());
+    long differing = 0;
+    for (std::size_t i = 0; i < one.pixels.size(); ++i)
+        differing += one.pixels[i] != both.pixels[i];
+    EXPECT_EQ(differing, 0) << s.name << ": the mixed-kind program changed " << differing
+                            << " bytes";
+}
+
+TEST(LightKinds, SpotsLightTheSameAloneAsBesideAnotherKind) {
+    Scene s = builtinScene("tutorial-spot");
+    ASSERT_FALSE(s.lights.empty());
+    ASSERT_EQ(s.lights.front().type, LightType::Spot);
+    expectSameWithADarkSun(s, 128);
+}
+
+TEST(LightKinds, FramedPointLightsLightTheSameAloneAsBesideAnotherKind) {
+    // A point light with a manual frustum has one map, not a cube.
+    Scene s = builtinScene("tutorial-spot");
+    ASSERT_FALSE(s.lights.empty());
+    Light& l = s.lights.front();
+    l.type = LightType::Point;
+    l.shadowCamera.policy = ShadowCameraPolicy::Manual;
+    l.shadowCamera.target = l.position + l.direction;
+    l.shadowCamera.fovyDegrees = 90.0f;
+    expectSameWithADarkSun(s, 128);
+}
+
+}  // namespace
+}  // namespace gnomon::test
