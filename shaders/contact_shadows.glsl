@@ -6,8 +6,8 @@
 // floor, a thin part against its base) get their shadow. Included by main.frag.glsl.
 #ifdef CONTACT_SHADOWS
 layout(binding = 5) uniform sampler2D uViewDepth;  // window depth, NEAREST, no comparison
-layout(location = 1) uniform mat4 uViewFromWorld;  // the vertex stage's, shared
-layout(location = 2) uniform mat4 uClipFromView;   // the vertex stage's, shared
+// The view's clip from world, one product on the CPU where each fragment would make two.
+layout(location = 13) uniform mat4 uClipFromWorld;
 // View-space z from window depth d: (x·d + y) / (z·d + w). A perspective or orthographic
 // projection's z and w rows do not involve x and y, so the inverse projection reduces to this.
 layout(location = 8) uniform vec4 uViewZFromDepth;
@@ -46,8 +46,8 @@ float contactShadow(vec3 p, vec3 n, vec3 toLight, float lightDistance, float vis
     // Jimenez 2014), so a short march leaves no bands.
     float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
     vec3 start = p + n * (0.02 * len);
-    vec4 clipStart = uClipFromView * (uViewFromWorld * vec4(start, 1.0));
-    vec4 clipEnd = uClipFromView * (uViewFromWorld * vec4(start + toLight * len, 1.0));
+    vec4 clipStart = uClipFromWorld * vec4(start, 1.0);
+    vec4 clipEnd = clipStart + uClipFromWorld * vec4(toLight * len, 0.0);
     // A march towards the camera stops before the camera's plane, where it would not project.
     float wMin = 0.1 * clipStart.w;
     if (clipEnd.w < wMin) {

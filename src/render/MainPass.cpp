@@ -259,6 +259,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     if (u.in->viewDepth) {
         glUniform4fv(8, 1, &u.viewZFromDepth[0]);
         glUniform1f(9, u.contactLength);
+        glUniformMatrix4fv(13, 1, GL_FALSE, &u.clipFromWorld[0][0]);
     }
     if (u.in->shadowMoments) glUniform1f(12, u.lightBleed);
 }
@@ -344,6 +345,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glm::vec3(options.shadow.biasDepthAware, shadow::toleranceStep(options.shadow.depthFormat),
                   shadow::toleranceStep(cubeFormat));
     u.contactLength = options.shadow.contactLength;
+    u.clipFromWorld = in.clipFromView * in.viewFromWorld;
     u.lightBleed = options.shadow.lightBleed;
     // The light order's range the draws use: every light, or one tile's.
     u.ranges = tiled.ranges();

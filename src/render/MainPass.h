@@ -80,6 +80,7 @@ private:
         const MainPassInputs* in = nullptr;
         glm::vec3 eye{0.0f};  // the camera's world position
         glm::vec4 viewZFromDepth{0.0f};
+        glm::mat4 clipFromWorld{1.0f};  // contact shadows' march
         float shadowFactor = 0.0f, contactLength = 0.0f, lightBleed = 0.0f;
         glm::vec3 depthAware{0.0f};  // steps, map and cube stored-depth spacing
         glm::ivec4 ranges{0};        // the light order's range: every light, or one tile's
