@@ -118,12 +118,19 @@ glm::mat4 lightRotation(const glm::vec3& direction) {
 // The stabilised box of a fit that follows the view, in place: from the needed box
 // [lo, hi] x [zFar, zNear] in light space, a quantised size with room for the origin's snap
 // and the origin on a multiple of a texel, so the same inputs up to a texel give the same
-// camera. The shorter side is the longer one over a power of two: under a low sun the
-// receivers stretch along the light, and a square would spend the short axis's texels on
-// nothing (ToyCar on its ground, sun 8 degrees high: 0.48 % misclassified square, 0.21 %
-// so), while two sides quantised apart would each step on their own, twice the steps a
-// moving view sees as the map's grid jumping (Sponza's dolly: 0.09 % flicker per frame).
-void snapExtent(int mapSize, glm::vec2& lo, glm::vec2& hi, float& zNear, float& zFar) {
+// camera. Under a low sun the receivers stretch along the light, and a square would spend
+// the short axis's texels on nothing (ToyCar on its ground, sun 8 degrees high: 0.48 %
+// misclassified square, 0.21 % not). For frames that follow a moving view (`following`) the
+// shorter side is the longer one over a power of two: sides quantised apart each step on
+// their own, and a tight short side leaves the held extent (steadyExtent) sooner, so the
+// moving view sees the map's grid jump more often (Sponza's atrium on its dolly path: 0.017 %
+// flicker per frame against 0.001 %; 0.09 % before extents were held). A still frame has
+// nothing to hold and takes the short side's own quantised size, up to twice the texels
+// across it: glmark2's asteroid under a sun at 200, 20 misclassifies 2.16 % against 2.85 %,
+// the Lantern's post edge-on 0.37 % against 0.85 %, the spheres under a grazing sun 0.14 %
+// against 0.19 % (scripts/quality-real.py, 384²).
+void snapExtent(int mapSize, bool following, glm::vec2& lo, glm::vec2& hi, float& zNear,
+                float& zFar) {
     const glm::vec2 size = hi - lo;
     const float pad = 1.0f - 4.0f / float(mapSize);
     const int longAxis = size.x >= size.y ? 0 : 1;
@@ -131,7 +138,9 @@ void snapExtent(int mapSize, glm::vec2& lo, glm::vec2& hi, float& zNear, float& 
     const float shortNeeded = std::max(size[1 - longAxis] / pad, longSide / 1024.0f);
     glm::vec2 side;
     side[longAxis] = longSide;
-    side[1 - longAxis] = longSide / std::exp2(std::floor(std::log2(longSide / shortNeeded)));
+    side[1 - longAxis] = following
+                             ? longSide / std::exp2(std::floor(std::log2(longSide / shortNeeded)))
+                             : std::min(longSide, quantizeUp(shortNeeded));
     const glm::vec2 texel = side / float(mapSize);
     const glm::vec2 centre = 0.5f * (lo + hi);
     lo = glm::floor((centre - 0.5f * side) / texel) * texel;
@@ -150,7 +159,7 @@ void steadyExtent(HeldExtent* held, const glm::mat4& rotation, int mapSize, glm:
                   glm::vec2& hi, float& zNear, float& zFar) {
     const glm::vec2 neededLo = lo, neededHi = hi;
     const float neededNear = zNear, neededFar = zFar;
-    snapExtent(mapSize, lo, hi, zNear, zFar);
+    snapExtent(mapSize, held != nullptr, lo, hi, zNear, zFar);
     if (held == nullptr) return;
     const bool serves = held->valid && held->mapSize == mapSize && held->rotation == rotation &&
                         glm::all(glm::lessThanEqual(held->lo, neededLo)) &&
