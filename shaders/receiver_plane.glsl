@@ -94,7 +94,8 @@ vec3 grazingPlaneOffset(vec3 wsToLight, float texelWorld, float reach, float shi
 // from a point light up to 0.045). Lookups of one comparison or one gather (--filter none,
 // --pcf-size 1, hw2x2; cubes' poisson) judge from one texel downhill, or the gather's, also
 // within 4 degrees (at 1.15 the post's side 1.4 to 3.8 degrees from edge-on to a spot stayed
-// striped over 0.2 to 1.3 % of the view).
+// striped over 0.2 to 1.3 % of the view). MSM's lookups judge from one texel downhill within
+// kSilhouetteCosine (shadow_lookup.glsl).
 const float kSilhouetteCosine = 0.02;
 const float kCubeSilhouetteCosine = 0.07;
 const float kSingleTapSilhouetteCosine = 0.07;

@@ -3,7 +3,7 @@
 # under a sun and under a spot, a low sun, a spot light, point lights, faces edge-on or
 # nearly edge-on to a sun, a post's side nearly edge-on to a sun and to a point light beside
 # the face they light, blended panels throwing coloured light, a model 100 000 units from
-# the world's origin; its VIEWS are the one
+# the world's origin; and the post edge-on to the sun again under --filter msm; its VIEWS are the one
 # definition, written out with --write-scene and --view-flags) scored against the ray-traced reference at 192x192. Fails when a view's
 # overall misclassified fraction reaches 1 %, its false shadow outside the aliasing band
 # 0.05 %, or its leak outside the band 0.1 %: those are errors a viewer sees (acne,
@@ -31,21 +31,32 @@ for view in "${views[@]}"; do
     [[ $code == 0 ]] || { echo "FAIL: could not write the scene of $view"; exit 1; }
 done
 
+# Views scored again with another filter, as VIEW:FILTER: MSM on the post edge-on to the sun,
+# which its footprint dotted with false shadow before it judged silhouettes (2.0 % of the view
+# misclassified, 1.3 % falsely shadowed away from edges at this size).
+runs=("${views[@]}" lantern-post-edge-on:msm)
+
 failed=0
-for view in "${views[@]}"; do
+for run in "${runs[@]}"; do
+    view=${run%%:*}
+    filter=
+    [[ $run == *:* ]] && filter=${run#*:}
+    name=$view${filter:+ --filter $filter}
+    out=$work/$view${filter:+-$filter}
     # The flags a view always needs (a sun given by --sun), one per line.
     mapfile -t flags < <(python3 "$quality_real" --view-flags "$view")
-    "$gnomon" score --scene "$work/$view.json" --size "$size" --out-dir "$work/$view" \
-        "${flags[@]}" >"$work/$view.out" 2>&1
+    [[ -n $filter ]] && flags+=(--filter "$filter")
+    "$gnomon" score --scene "$work/$view.json" --size "$size" --out-dir "$out" \
+        "${flags[@]}" >"$out.out" 2>&1
     code=$?
-    if grep -q "no usable OpenGL" "$work/$view.out"; then
-        echo "skipped: $(cat "$work/$view.out")"; exit 77
+    if grep -q "no usable OpenGL" "$out.out"; then
+        echo "skipped: $(cat "$out.out")"; exit 77
     fi
     if [[ $code != 0 ]]; then
-        echo "FAIL ($view): gnomon score exited $code: $(cat "$work/$view.out")"; failed=1
+        echo "FAIL ($name): gnomon score exited $code: $(cat "$out.out")"; failed=1
         continue
     fi
-    python3 - "$view" "$work/$view/score.json" "$work/$view/errors.png" <<'PY' || failed=1
+    python3 - "$name" "$out/score.json" "$out/errors.png" <<'PY' || failed=1
 import json, sys
 view, path, errors = sys.argv[1:]
 result = json.load(open(path))
