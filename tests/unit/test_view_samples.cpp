@@ -190,46 +190,6 @@ TEST(ViewSamples, SunFittedToSamplesCoversThemWithSmallerTexels) {
                      .valid);
 }
 
-// The two sides of an orthographic frame's box across the light, world units.
-glm::vec2 orthographicSides(const shadow::LightCameraFrame& f) {
-    return {2.0f / f.clipFromLight[0][0], 2.0f / f.clipFromLight[1][1]};
-}
-
-// A low sun stretches what the view sees along the light. A still frame quantises the box's
-// short side on its own, so its texels across it are finer; frames that follow a moving
-// view keep that side the long one over a power of two (fewer steps as the view moves).
-// Both cover every sample.
-TEST(ViewSamples, StillFramesFitTheShortSideTighterThanFollowingOnes) {
-    Camera camera = groundCamera();
-    camera.far = 30.0f;
-    const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
-    const float aspect = 4.0f / 3.0f;
-    shadow::ViewSamples samples;
-    shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
-    shadow::FitScene scene;
-    scene.receivers = {Aabb{{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}}};
-    scene.casters = {scene.receivers[0]};
-    scene.viewKnown = true;
-    scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
-    scene.samples = &samples;
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.9f, -0.3f, 0.2f));
-    shadow::HeldExtent held;
-    const shadow::LightCameraFrame still = shadow::lightCameraFrame(sun, camera, scene, 1024);
-    const shadow::LightCameraFrame following =
-        shadow::lightCameraFrame(sun, camera, scene, 1024, &held);
-    ASSERT_TRUE(still.valid && following.valid);
-    expectCovers(still, samples);
-    expectCovers(following, samples);
-    const glm::vec2 a = orthographicSides(still), b = orthographicSides(following);
-    const int shortAxis = b.x < b.y ? 0 : 1;
-    EXPECT_FLOAT_EQ(a[1 - shortAxis], b[1 - shortAxis]);  // the long side: one rule
-    const float powers = std::log2(b[1 - shortAxis] / b[shortAxis]);
-    EXPECT_FLOAT_EQ(powers, std::round(powers));
-    EXPECT_LT(a[shortAxis], 0.8f * b[shortAxis]) << a[shortAxis] << " " << b[shortAxis];
-}
-
 // The ground (|x|, |z| <= 10) with a post on it, seen by `camera` at 128 x 96 reduced to
 // 64-cell rows: `samples` filled from its depth, the fit scene pointing at them.
 shadow::FitScene groundWithPost(const Camera& camera, shadow::ViewSamples& samples) {
@@ -298,6 +258,37 @@ TEST_F(ViewSamplesOnGround, SpotLightMapsOnlyThePartOfItsConeTheViewSees) {
     // Without samples (fit to boxes): the whole cone.
     scene.samples = nullptr;
     EXPECT_FLOAT_EQ(shadow::lightCameraFrame(spot, camera, scene, 1024).texelWorldSize, coneTexel);
+}
+
+// The two sides of an orthographic frame's box across the light, world units.
+glm::vec2 orthographicSides(const shadow::LightCameraFrame& f) {
+    return {2.0f / f.clipFromLight[0][0], 2.0f / f.clipFromLight[1][1]};
+}
+
+// A low sun stretches what the view sees along the light. A still frame quantises the box's
+// short side on its own, so its texels across it are finer; frames that follow a moving
+// view keep that side the long one over a power of two (fewer steps as the view moves).
+// Both cover every sample.
+TEST(ViewSamples, StillFramesFitTheShortSideTighterThanFollowingOnes) {
+    const Camera camera = groundCamera();
+    shadow::ViewSamples samples;
+    const shadow::FitScene scene = groundWithPost(camera, samples);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.9f, -0.3f, 0.2f));
+    shadow::HeldExtent held;
+    const shadow::LightCameraFrame still = shadow::lightCameraFrame(sun, camera, scene, 1024);
+    const shadow::LightCameraFrame following =
+        shadow::lightCameraFrame(sun, camera, scene, 1024, &held);
+    ASSERT_TRUE(still.valid && following.valid);
+    expectCovers(still, samples);
+    expectCovers(following, samples);
+    const glm::vec2 a = orthographicSides(still), b = orthographicSides(following);
+    const int shortAxis = b.x < b.y ? 0 : 1;
+    EXPECT_FLOAT_EQ(a[1 - shortAxis], b[1 - shortAxis]);  // the long side: one rule
+    const float powers = std::log2(b[1 - shortAxis] / b[shortAxis]);
+    EXPECT_FLOAT_EQ(powers, std::round(powers));
+    EXPECT_LT(a[shortAxis], 0.8f * b[shortAxis]) << a[shortAxis] << " " << b[shortAxis];
 }
 
 // Frames that follow one another (the viewer, a scored path): a point light's frustum and a
