@@ -4,7 +4,8 @@
 // point lights' cube maps in one cube-map array.
 //
 // Variants (injected #defines): FILTER_NONE | FILTER_HW2X2 | FILTER_PCF | FILTER_POISSON
-// | FILTER_PCSS | FILTER_MOMENTS (moment_lookup.glsl), with PCF_SIZE (the kernel's width in texels) for PCF and POISSON,
+// | FILTER_PCSS | FILTER_MOMENTS (moment_lookup.glsl), with PCF_SIZE (the kernel's width in
+// texels) for PCF and POISSON,
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit),
 // COLOURED_SHADOWS (each lookup also sets gTint: transmittance_lookup.glsl).
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
@@ -22,7 +23,8 @@ float depthTolerance(LightData light, float step) {
 // Fetch the stored depth (filtered by the sampler: --map-filter) and compare by hand: every
 // lookup of colour formats (PACK_*: decode first), and --filter none on native depth (the
 // course text's LINEAR lookup of a depth texture). LINEAR interpolates stored depth: fine
-// for one channel, wrong for packed channels (why Shadow_highp of the WebGL Programming Guide, ch. 10, uses NEAREST).
+// for one channel, wrong for packed channels (why Shadow_highp of the WebGL Programming Guide,
+// ch. 10, uses NEAREST).
 #include "depth_packing.glsl"
 layout(binding = 0) uniform sampler2DArray uShadowMaps;
 float rawDepth(vec2 uv, float layer) {
@@ -251,11 +253,11 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     // downhill: MSM's footprint over a plane within a degree or so of edge-on reads the
     // surface it meets across a convex edge as a caster (the Lantern's post edge-on to the
     // sun: 2.1 % misclassified, 1.3 % false shadow away from edges; 0.56 % and none with the
-    // rule). Summed over scripts/quality-real.py's 29 views, 7.4 points against 5.9; some
-    // leak more (Sponza's atrium 0.59 % to 0.63 %). Within 4 degrees, as one-comparison
-    // lookups judge, the sum was 6.1. EVSM2 and EVSM4 do not stripe there and only leaked more
-    // with it. Downhill, where the plane runs away from the light, is the way its normal
-    // turned towards the light points across the map.
+    // rule). Summed over scripts/quality-real.py's 29 views: 5.9 points with it, 7.4 without;
+    // some views leak more (Sponza's atrium 0.59 % to 0.63 %). Within 4 degrees, as
+    // one-comparison lookups judge, the sum was 6.1. EVSM2 and EVSM4 do not stripe there and
+    // only leaked more with it. Downhill, where the plane runs away from the light, is the way
+    // its normal turned towards the light points across the map.
     vec3 towards = gPlaneNormal * dot(gPlaneNormal, wsToLight);
     vec2 away = (light.textureFromWorld * vec4(towards, 0.0)).xy;
     float lit = compareDepth(clamp(uv + texelUv * sign(away), lo, hi), layer, reference);

@@ -25,7 +25,8 @@ vec3 mapTint(vec2 uv, float layer, float reference, vec2 lo, vec2 hi, float texe
     vec2 f = fract(uv / texelUv - 0.5);
     // Gathered as (i, j+1), (i+1, j+1), (i+1, j), (i, j): their bilinear weights.
     vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
-    vec4 through = max(vec4(lessThan(depths, vec4(reference))), vec4(greaterThanEqual(depths, vec4(1.0))));
+    vec4 through =
+        max(vec4(lessThan(depths, vec4(reference))), vec4(greaterThanEqual(depths, vec4(1.0))));
     vec3 rgb = texture(uTransmittance, vec3(uv, layer)).rgb;
     return mix(vec3(1.0), rgb, dot(w, through));
 }
