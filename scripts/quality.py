@@ -93,8 +93,10 @@ def main():
         "Produced by `scripts/quality.py` (do not edit by hand). Every cell is one",
         "`gnomon score` run against the Embree reference at 512×512, and its frame time is",
         f"the median of {args.frames} frames of `gnomon bench --static` (maps kept, as for a",
-        f"static scene; the driver: {gl}). The flags of each row are added to the scene's own",
-        "options:",
+        f"static scene; the driver: {gl}). Compare frame times within this table only: they",
+        "are one run's, and this shared machine's speed moves by up to twice between hours",
+        "(docs/performance.md measures builds and peers side by side). The flags of each row are",
+        "added to the scene's own options:",
         "",
     ]
     for label, flags in VARIANTS:
