@@ -13,15 +13,15 @@ namespace {
 int lightTypeCode(LightType type) {
     switch (type) {
         case LightType::Directional:
-            return 0;
+            return gpu::kDirectional;
         case LightType::Spot:
-            return 1;
+            return gpu::kSpot;
         case LightType::Point:
-            return 2;
+            return gpu::kPoint;
         case LightType::Area:
-            return 3;
+            return gpu::kArea;
     }
-    return 0;
+    return gpu::kDirectional;
 }
 
 bool casts(const Scene& s, const RenderOptions& options, std::size_t i) {
@@ -45,9 +45,9 @@ void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const 
                                  : 0.0f;
         g.soft = glm::vec4(options.lightRadius, 0.0f, offset, 0.0f);
     }
-    g.shadow.z = frame.kind == shadow::FrameKind::Cube           ? 2.0f
-                 : frame.kind == shadow::FrameKind::Orthographic ? 1.0f
-                                                                 : 0.0f;
+    g.shadow.z = frame.kind == shadow::FrameKind::Cube           ? gpu::kFrameCube
+                 : frame.kind == shadow::FrameKind::Orthographic ? gpu::kFrameOrthographic
+                                                                 : gpu::kFramePerspective;
     if (frame.kind != shadow::FrameKind::Cube) {
         g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
     }
@@ -176,11 +176,12 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     for (const ShadowedLight& sl : mShadowed)
         mHasMap[std::size_t(sl.light)] = 1;
     // (Map layers are assigned later, by the shadow pass: colour.w says nothing yet.)
+    // The record classes in uLightRanges' order: unshadowed, one map, cube, cascaded.
     auto kindOf = [&](std::size_t i) {
         const GpuLight& g = mLights[i];
         if (g.direction.w == 0.0f) return -1;
         if (!mHasMap[i]) return 0;
-        return g.shadow.z == 2.0f ? 2 : g.shadow.z == 3.0f ? 3 : 1;
+        return g.shadow.z == gpu::kFrameCube ? 2 : g.shadow.z == gpu::kFrameCascaded ? 3 : 1;
     };
     for (int kind = 0; kind < 4; ++kind) {
         for (std::size_t i = 0; i < sceneLights; ++i) {
@@ -192,7 +193,7 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     }
     const int base = int(mOrdered.size());
     for (GpuLight& g : mOrdered) {
-        if (g.shadow.z == 3.0f) g.placement.x += float(base) - float(sceneLights);
+        if (g.shadow.z == gpu::kFrameCascaded) g.placement.x += float(base) - float(sceneLights);
     }
     mOrdered.insert(mOrdered.end(), mCascadeRecords.begin(), mCascadeRecords.end());
     for (ShadowedLight& sl : mShadowed) {
@@ -255,7 +256,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
     const std::vector<float> splits =
         shadow::cascadeSplits(near, far, count, options.shadow.cascadeLambda);
     const int first = int(s.lights.size() + mCascadeRecords.size());
-    g.shadow.z = 3.0f;
+    g.shadow.z = gpu::kFrameCascaded;
     g.colour.w = 0.0f;  // has shadows; the maps are the cascade records'
     g.placement = glm::vec4(float(first), float(count), blend, 0.0f);
     for (int k = 0; k < count; ++k) {

@@ -14,11 +14,11 @@ shadow::LightReach reachOf(const GpuLight& g, bool shadowed, const glm::mat4& vi
     shadow::LightReach r;
     r.shadowed = shadowed;
     const int type = int(g.position.w);
-    if (type != 1 && type != 2) return r;  // directional, area
+    if (type != gpu::kSpot && type != gpu::kPoint) return r;  // directional, area
     // Records are in world space; tiles are culled in the view's.
     r.position = glm::vec3(viewFromWorld * glm::vec4(glm::vec3(g.position), 1.0f));
     r.range = g.direction.w > 0.0f ? g.direction.w : 0.0f;
-    if (type == 1) {
+    if (type == gpu::kSpot) {
         r.shape = shadow::LightReach::Shape::Cone;
         r.direction = glm::mat3(viewFromWorld) * glm::vec3(g.direction);
         r.cosOuter = g.attenuation.w;
