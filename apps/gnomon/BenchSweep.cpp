@@ -145,7 +145,7 @@ std::vector<std::string> defaultValues(const std::string& param) {
 int mapSizeOf(const Scene& scene, const RenderOptions& o) {
     if (o.shadow.mapSize > 0) return o.shadow.mapSize;
     for (const Light& l : scene.lights)
-        if (l.castsShadows) return l.shadowMapSize;
+        if (l.castsShadows) return shadowMapSizeOf(l);
     return 1024;
 }
 

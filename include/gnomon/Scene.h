@@ -155,10 +155,18 @@ struct Light {
     // (1 - (d/range)^4)^2 on top of the attenuation); 0 = unlimited.
     float range = 0.0f;
     bool castsShadows = true;
-    int shadowMapSize = 1024;  // texels per side, 64..8192
+    // Texels per side (per cube face for point lights), 64..8192; 0: its type's default
+    // (shadowMapSizeOf).
+    int shadowMapSize = 0;
     ShadowCamera shadowCamera;
     bool operator==(const Light&) const = default;
 };
+
+// The map size of a light that names none: 2048 texels per side for directional lights
+// (a sun's one map covers the whole view), 1024 for the others.
+int defaultShadowMapSize(LightType type);
+// Light::shadowMapSize, or its type's default when it is 0.
+int shadowMapSizeOf(const Light& light);
 
 // Names one state of a scene's meshes, materials, textures and objects, so a renderer
 // re-reads them (checks, hashes, uploads: work that grows with the scene) only when it

@@ -70,7 +70,7 @@ Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& sta
     Space result;
     result.sizedLights = lightsSizedApart(scene, o);
     for (const Light& l : scene.lights)
-        result.ownSizes.push_back(l.shadowMapSize);
+        result.ownSizes.push_back(shadowMapSizeOf(l));
     std::vector<search::Parameter>& space = result.parameters;
     space = {
         {"filter", {"none", "pcf", "poisson", "pcss"}},

@@ -257,6 +257,24 @@ TEST(Scene, ValidateCatchesLightAndCameraProblems) {
     expectOneProblem(s, "eye equals its centre");
 }
 
+// A light that names no map size takes its type's (2048 for a sun, 1024 for the others); one
+// it names is kept, and 0 is valid where other sizes below 64 are not.
+TEST(Scene, LightsWithoutAMapSizeTakeTheirTypesDefault) {
+    Light l;
+    EXPECT_EQ(l.shadowMapSize, 0);
+    l.type = LightType::Directional;
+    EXPECT_EQ(shadowMapSizeOf(l), 2048);
+    for (LightType t : {LightType::Spot, LightType::Point, LightType::Area}) {
+        l.type = t;
+        EXPECT_EQ(shadowMapSizeOf(l), 1024);
+    }
+    l.shadowMapSize = 333;
+    EXPECT_EQ(shadowMapSizeOf(l), 333);
+    Scene s = builtinScene("book-triangle");
+    s.lights[0].shadowMapSize = 0;
+    EXPECT_TRUE(s.validate().empty());
+}
+
 // Scenes that pass validate() must render: each of these turns a matrix into NaN (a light
 // camera looking at its own eye, a spin about a zero axis), so validate() should flag them.
 TEST(Scene, ValidateCatchesDegenerateLightCamerasAndSpins) {

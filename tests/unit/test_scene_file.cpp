@@ -195,6 +195,20 @@ TEST(SceneFile, SavedFileReproducesWhatWasTuned) {
     EXPECT_TRUE(back.warnings.empty());
 }
 
+// A light without a map size is saved without one, so it keeps its type's default when read.
+TEST(SceneFile, ALightWithoutAMapSizeIsSavedWithoutOne) {
+    ScopedTempDir dir;
+    Scene s = builtinScene("tutorial-room");
+    s.lights[0].shadowMapSize = 0;
+    const fs::path saved = dir.path() / "sun.json";
+    saveSceneFile(saved.string(), "tutorial-room", s, s.options);
+    EXPECT_EQ(readText(saved).find("shadow-map-size"), std::string::npos);
+    const Scene back = loadSceneFile(saved.string());
+    ASSERT_EQ(back.lights.size(), 1u);
+    EXPECT_EQ(back.lights[0].shadowMapSize, 0);
+    EXPECT_EQ(shadowMapSizeOf(back.lights[0]), 2048);
+}
+
 TEST(SceneFile, SavedFileIncludesAModelRelativeToItsFolder) {
     ScopedTempDir dir;
     fs::create_directories(dir.path() / "models" / "book");

@@ -229,13 +229,13 @@ void Viewer::lightControls() {
         changed(ImGui::SliderFloat("outer cone", &l.outerConeDegrees, l.innerConeDegrees, 89.0f,
                                    "%.1f deg"));
     }
-    int mapSizeLog = int(std::lround(std::log2(std::max(l.shadowMapSize, 64))));
+    int mapSizeLog = int(std::lround(std::log2(shadowMapSizeOf(l))));
     if (ImGui::SliderInt("map size", &mapSizeLog, 6, 13, "")) {
         l.shadowMapSize = 1 << mapSizeLog;
         changed(true);
     }
     ImGui::SameLine();
-    ImGui::Text("%d", l.shadowMapSize);
+    ImGui::Text("%d", shadowMapSizeOf(l));
     tooltip("this light's shadow map, texels per side (--map-size overrides every light)");
     ShadowCamera& sc = l.shadowCamera;
     int policy = int(sc.policy);
