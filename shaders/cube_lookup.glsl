@@ -56,6 +56,9 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     offset += grazingPlaneOffset(wsToLight, light.shadow.y * major, kCubeReach,
                                  kCubeGrazingShift);
 #endif
+#ifdef STAND_IN_LIFT
+    offset += wsToLight * standInLift(light.shadow.y * major);
+#endif
     toPoint += offset;
     a = abs(toPoint);
     major = max(a.x, max(a.y, a.z));

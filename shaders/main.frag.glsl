@@ -15,6 +15,8 @@
 // CONTACT_SHADOWS: each shadowed light's visibility also marched through the view's depth
 // (contact_shadows.glsl). COLOURED_SHADOWS: light through blended casters tinted
 // (transmittance_lookup.glsl). DITHER_LINEAR / DITHER_SRGB: ordered dithering of the output.
+// STAND_IN_LIFT: shadow passes draw stand-in casters; their objects' lookups start off the
+// surface by the stand-in's error (shadow_lookup.glsl).
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
@@ -31,6 +33,9 @@ in VertexOut {
 #endif
 #ifdef VISIBILITY_PASS
     flat float object;  // the scene object's index
+#endif
+#ifdef STAND_IN_LIFT
+    flat float standInError;
 #endif
 } vIn;
 
@@ -258,6 +263,9 @@ vec3 floorDiffuse(LightData light, int kind, vec3 n, out vec3 toLight) {
     }
 
 void main() {
+#ifdef STAND_IN_LIFT
+    gStandInError = vIn.standInError;
+#endif
     findReceiverPlane();
     vec3 n = normalize(vIn.wsNormal);
     vec3 lit = uAmbient;
@@ -303,6 +311,9 @@ vec3 dither(vec3 c) {
 #endif
 
 void main() {
+#ifdef STAND_IN_LIFT
+    gStandInError = vIn.standInError;
+#endif
     findReceiverPlane();
 #ifdef CONTACT_SHADOWS
     findContactPlane();

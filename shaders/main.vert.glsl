@@ -29,6 +29,9 @@ out VertexOut {
 #ifdef VISIBILITY_PASS
     flat float object;  // the scene object's index, recorded beside the lights' visibility
 #endif
+#ifdef STAND_IN_LIFT
+    flat float standInError;  // world units (shadow_lookup.glsl)
+#endif
 } vOut;
 
 void main() {
@@ -48,5 +51,10 @@ void main() {
 #endif
 #ifdef VISIBILITY_PASS
     vOut.object = float(aObject);
+#endif
+#ifdef STAND_IN_LIFT
+    // The object's stand-in error, model units to world units (at most: its largest scale).
+    mat3 m = mat3(o.worldFromModel);
+    vOut.standInError = o.flags.w * max(length(m[0]), max(length(m[1]), length(m[2])));
 #endif
 }

@@ -5,7 +5,8 @@ struct ObjectData {
     mat4 worldFromModelNormal;  // inverse transpose, upper 3x3 used
     vec4 baseColour;            // rgb, a = 1
     vec4 material;              // x specular, y shininess, z unlit (0/1), w double-sided (0/1)
-    vec4 flags;   // x receives shadows (0/1), y alpha mode (0 opaque, 1 mask, 2 blend), z cutoff
+    vec4 flags;   // x receives shadows (0/1), y alpha mode (0 opaque, 1 mask, 2 blend), z cutoff,
+                  // w how far the shadow passes' stand-in strays from the mesh (model units)
     vec4 uvRow0;  // texture coordinates used: (dot(uvRow0.xyz, (u, v, 1)),
     vec4 uvRow1;  //                            dot(uvRow1.xyz, (u, v, 1))) (KHR_texture_transform)
 };

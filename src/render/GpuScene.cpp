@@ -78,9 +78,10 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         std::vector<std::pair<std::size_t, GLsizei>>& ranges = mStandInRanges[detail];
         ranges = full;
         for (std::size_t m = 0; m < meshes.size(); ++m) {
-            if (meshes[m].empty()) continue;
-            ranges[m] = {indices.size() * sizeof(std::uint32_t), GLsizei(meshes[m].size())};
-            indices.insert(indices.end(), meshes[m].begin(), meshes[m].end());
+            const std::vector<std::uint32_t>& own = meshes[m].indices;
+            if (own.empty()) continue;
+            ranges[m] = {indices.size() * sizeof(std::uint32_t), GLsizei(own.size())};
+            indices.insert(indices.end(), own.begin(), own.end());
         }
     }
     mVertices =
@@ -113,10 +114,10 @@ void GpuScene::uploadGeometry(const Scene& scene) {
 bool GpuScene::makeStandIns(const Scene& scene, float casterDetail) {
     if (!(casterDetail < 1.0f) || mStandIns.contains(casterDetail)) return false;
     if (mStandIns.size() >= kKeptStandIns) mStandIns.clear();
-    std::vector<std::vector<std::uint32_t>>& made = mStandIns[casterDetail];
+    std::vector<shadow::StandIn>& made = mStandIns[casterDetail];
     for (const Mesh& m : scene.meshes) {
-        made.push_back(shadow::standInIndices(m, casterDetail));
-        if (made.back().size() == m.indices.size()) made.back().clear();  // its own range
+        made.push_back(shadow::makeStandIn(m, casterDetail));
+        if (made.back().indices.size() == m.indices.size()) made.back() = {};  // its own range
     }
     return true;
 }
@@ -167,6 +168,8 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     }
     const std::vector<std::pair<std::size_t, GLsizei>>& standIns =
         mStandInRanges.at(casterDetail < 1.0f ? casterDetail : 1.0f);
+    const std::vector<shadow::StandIn>* standInMeshes =
+        casterDetail < 1.0f ? &mStandIns.at(casterDetail) : nullptr;
 
     // Object records: rebuilt on the CPU (cheap), uploaded only when they differ.
     const size_t n = scene.objects.size();
@@ -194,7 +197,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         g.material = {mat.specular, mat.shininess, mat.unlit ? 1.0f : 0.0f,
                       mat.doubleSided ? 1.0f : 0.0f};
         g.flags = {o.receivesShadows ? 1.0f : 0.0f, float(int(mat.alphaMode)), mat.alphaCutoff,
-                   0.0f};
+                   standInMeshes ? (*standInMeshes)[o.mesh].error : 0.0f};
         const glm::mat3& uv = mat.uvTransform;
         g.uvRow0 = {uv[0][0], uv[1][0], uv[2][0], 0.0f};
         g.uvRow1 = {uv[0][1], uv[1][1], uv[2][1], 0.0f};

@@ -15,6 +15,7 @@
 #include "core/Aabb.h"
 #include "gl/Objects.h"
 #include "gnomon/Scene.h"
+#include "shadow/StandIn.h"
 
 namespace gnomon::render {
 
@@ -23,7 +24,8 @@ struct GpaObject {
     glm::mat4 worldFromModelNormal;
     glm::vec4 baseColour;
     glm::vec4 material;  // specular, shininess, unlit, double-sided
-    glm::vec4 flags;     // receives shadows, alpha mode (0 opaque, 1 mask, 2 blend), cutoff
+    glm::vec4 flags;     // receives shadows, alpha mode (0 opaque, 1 mask, 2 blend), cutoff,
+                         // stand-in caster's error (model units)
     glm::vec4 uvRow0;    // texture coordinates used: (dot(uvRow0.xyz, (u, v, 1)),
     glm::vec4 uvRow1;    //                            dot(uvRow1.xyz, (u, v, 1)))
 };
@@ -140,11 +142,11 @@ private:
     std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
     std::vector<DrawItem> mItems;
     std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
-    // Stand-in casters by detail: the index lists made for the current geometry (an empty
-    // list: the mesh's own), at most kKeptStandIns of them, and where each mesh's lies in the
-    // index buffer per detail (1: the full meshes), first index byte and count.
+    // Stand-in casters by detail: the ones made for the current geometry (empty indices: the
+    // mesh's own), at most kKeptStandIns of them, and where each mesh's lies in the index
+    // buffer per detail (1: the full meshes), first index byte and count.
     static constexpr std::size_t kKeptStandIns = 4;
-    std::map<float, std::vector<std::vector<std::uint32_t>>> mStandIns;
+    std::map<float, std::vector<shadow::StandIn>> mStandIns;
     std::map<float, std::vector<std::pair<std::size_t, GLsizei>>> mStandInRanges;
     float mCasterDetail = 1.0f;  // the detail drawn
     std::uint64_t mGeometryUploads = 0;

@@ -73,7 +73,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(in.viewDepth != nullptr) << 29 | std::uint64_t(so.normalOffset > 0.0f) << 30 |
         std::uint64_t(in.transmittance != nullptr) << 31 |
         std::uint64_t(nearestHandCompare(so)) << 32 |
-        std::uint64_t(in.singleMapKind + 1) << 33;  // 0..4: 3 bits
+        std::uint64_t(in.singleMapKind + 1) << 33 |  // 0..4: 3 bits
+        std::uint64_t(so.casterDetail < 1.0f) << 36;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -132,6 +133,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (nearestHandCompare(s)) defines.push_back("MAP_NEAREST");
     if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
     if (s.normalOffset > 0.0f) defines.push_back("NORMAL_OFFSET");
+    if (s.casterDetail < 1.0f) defines.push_back("STAND_IN_LIFT");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
     if (in.viewDepth) defines.push_back("CONTACT_SHADOWS");
     if (in.transmittance) defines.push_back("COLOURED_SHADOWS");

@@ -7,11 +7,11 @@
 
 namespace gnomon::shadow {
 
-std::vector<std::uint32_t> standInIndices(const Mesh& mesh, float detail) {
+StandIn makeStandIn(const Mesh& mesh, float detail) {
     const std::size_t count = mesh.indices.size();
     constexpr std::size_t kMinTriangles = 64;  // smaller meshes cost nothing to draw whole
     if (!(detail < 1.0f) || count < 3 * kMinTriangles || mesh.positions.empty()) {
-        return mesh.indices;
+        return {mesh.indices, 0.0f};
     }
     const float* positions = &mesh.positions[0].x;
     const std::size_t vertices = mesh.positions.size();
@@ -23,17 +23,21 @@ std::vector<std::uint32_t> standInIndices(const Mesh& mesh, float detail) {
                                       vertices, stride, stride);
     const std::size_t target = std::max<std::size_t>(
         3, std::size_t(std::lround(double(detail) * double(count) / 3.0)) * 3);
-    std::vector<std::uint32_t> out(count);
-    // Error bound 1 (the mesh's whole extent): the triangle count is the user's choice.
+    StandIn s{std::vector<std::uint32_t>(count), 0.0f};
+    std::vector<std::uint32_t>& out = s.indices;
+    // Error bound 1 (the mesh's whole extent): the triangle count is the user's choice. The
+    // error reached comes back relative to the mesh's extent.
+    float error = 0.0f;
     std::size_t kept = meshopt_simplify(out.data(), welded.data(), count, positions, vertices,
-                                        stride, target, 1.0f, 0, nullptr);
+                                        stride, target, 1.0f, 0, &error);
     if (kept > target + target / 2) {
         kept = meshopt_simplifySloppy(out.data(), welded.data(), count, positions, vertices, stride,
-                                      target, 1.0f, nullptr);
+                                      target, 1.0f, &error);
     }
-    if (kept < 3) return mesh.indices;  // nothing left: keep the caster whole
+    if (kept < 3) return {mesh.indices, 0.0f};  // nothing left: keep the caster whole
     out.resize(kept);
-    return out;
+    s.error = error * meshopt_simplifyScale(positions, vertices, stride);
+    return s;
 }
 
 }  // namespace gnomon::shadow

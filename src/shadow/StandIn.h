@@ -13,10 +13,17 @@
 
 namespace gnomon::shadow {
 
-// Indices of a stand-in keeping about `detail` (0 < detail <= 1) of the mesh's triangles:
-// the mesh's own for 1 or for meshes too small to simplify. Simplification keeps the
-// surface where it can (meshoptimizer's edge collapses); where seams and borders stop it
-// short of the target, a cruder grid-based pass reaches it.
-std::vector<std::uint32_t> standInIndices(const Mesh& mesh, float detail);
+struct StandIn {
+    std::vector<std::uint32_t> indices;  // into the mesh's own vertices
+    // How far its surface may stray from the mesh's, in the mesh's units (meshoptimizer's
+    // error bound for the collapses made); 0 for the mesh itself.
+    float error = 0.0f;
+};
+
+// A stand-in keeping about `detail` (0 < detail <= 1) of the mesh's triangles: the mesh
+// itself for 1 or for meshes too small to simplify. Simplification keeps the surface where
+// it can (meshoptimizer's edge collapses); where seams and borders stop it short of the
+// target, a cruder grid-based pass reaches it.
+StandIn makeStandIn(const Mesh& mesh, float detail);
 
 }  // namespace gnomon::shadow

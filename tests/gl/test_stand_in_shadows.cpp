@@ -78,6 +78,51 @@ TEST(StandInCasters, TenthOfTheTrianglesCastsTheSameShadow) {
     EXPECT_LT(std::abs(darkA - darkB), darkA / 20) << darkA << " dark pixels against " << darkB;
 }
 
+// A bowl (the lower half of a finely tessellated sphere, its inside facing up) under a sun:
+// seen from inside, a coarser stand-in's flat triangles cut across the curve in front of the
+// surface they stand for and would shadow it where the full bowl does not. Its own lookups
+// start off the surface by the stand-in's error, so a tenth of the triangles misclassifies
+// about what the full mesh does, with nothing wrong away from shadow edges (measured: 0.84 %
+// against 0.59 %; without the lift 8.2 %, 7.4 % false shadow away from edges).
+TEST(StandInCasters, AConcaveSurfaceIsNotShadowedByItsOwnStandIn) {
+    Scene s;
+    s.name = "bowl";
+    Material grey;
+    grey.baseColour = glm::vec3(0.8f);
+    grey.specular = 0.0f;
+    s.materials.push_back(grey);
+    const Mesh sphere = mesh::sphere("sphere", glm::vec3(0.0f), 2.0f, 384, 192);
+    Mesh bowl = sphere;
+    bowl.name = "bowl";
+    bowl.indices.clear();
+    for (std::size_t t = 0; t + 2 < sphere.indices.size(); t += 3) {
+        const std::uint32_t a = sphere.indices[t], b = sphere.indices[t + 1],
+                            c = sphere.indices[t + 2];
+        if (sphere.positions[a].y + sphere.positions[b].y + sphere.positions[c].y > -0.6f) continue;
+        bowl.indices.insert(bowl.indices.end(), {a, c, b});  // the inside faces out
+    }
+    for (glm::vec3& n : bowl.normals)
+        n = -n;
+    s.meshes.push_back(bowl);
+    s.objects.push_back({"bowl", 0, 0, glm::mat4(1.0f), {}, true, true});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.5f, -1.0f, 0.2f));  // the rim shadows a crescent
+    s.lights.push_back(sun);
+    s.camera = lookingStraightDown(2.2f);
+    s.ambient = glm::vec3(0.05f);
+    RenderOptions full = s.options, coarse = s.options;
+    full.width = full.height = coarse.width = coarse.height = 160;
+    coarse.shadow.casterDetail = 0.1f;
+    const ScoreResult whole = score(sharedRenderer(), s, full);
+    const ScoreResult standIn = score(sharedRenderer(), s, coarse);
+    ASSERT_GT(whole.overall.pixels, 10000);
+    EXPECT_LT(standIn.overall.misclassified, whole.overall.misclassified + 0.004)
+        << standIn.overall.misclassified << " with a tenth of the triangles, "
+        << whole.overall.misclassified << " with all";
+    EXPECT_LT(standIn.overall.falseShadowOutsideBand, 0.0005);
+}
+
 // A stand-in is made once per detail and kept: going back to a detail (tune's trials alternate
 // with the starting settings; the viewer's slider) switches index ranges, with no new
 // simplification or upload. A new geometry drops them.
