@@ -171,8 +171,9 @@ std::vector<std::string> Scene::validateLightsAndCamera() const {
 
 // Engines size a sun's map so: Unity's and Unreal's 2048 per map or cascade. On the real
 // scenes of scripts/quality-real.py its suns' views misclassified about half as much with
-// 2048 as with 1024 (Sponza's gallery 0.23 % to 0.06 %, a ToyCar under a low sun 0.23 % to
-// 0.12 %); spots and cubes keep 1024, six faces of which are already more texels.
+// 2048 as with 1024 (Sponza's atrium 0.48 % to 0.28 %, a ToyCar under a low sun 0.23 % to
+// 0.12 %; docs/techniques.md, "Map size"); spots and cubes keep 1024, six faces of which are
+// already more texels.
 int defaultShadowMapSize(LightType type) {
     return type == LightType::Directional ? 2048 : 1024;
 }
