@@ -103,7 +103,7 @@ void applySweep(const std::string& param, const std::string& value, const Scene&
             l.innerConeDegrees = 35.0f;
             l.outerConeDegrees = 45.0f;
             l.intensity = 1.5f / float(n);
-            l.shadowMapSize = mapSizeOf(base, baseOptions);
+            l.shadowMapSize = baseOptions.shadow.mapSize;  // 0: a spot's own default
             scene.lights.push_back(l);
         }
         options.lightOnly = -1;
@@ -143,10 +143,7 @@ std::vector<std::string> defaultValues(const std::string& param) {
 }  // namespace
 
 int mapSizeOf(const Scene& scene, const RenderOptions& o) {
-    if (o.shadow.mapSize > 0) return o.shadow.mapSize;
-    for (const Light& l : scene.lights)
-        if (l.castsShadows) return shadowMapSizeOf(l);
-    return 1024;
+    return firstCasterMapSize(scene, o.shadow);
 }
 
 // The values --sweep runs over: --values, else the parameter's defaults (none without

@@ -162,11 +162,14 @@ struct Light {
     bool operator==(const Light&) const = default;
 };
 
-// The map size of a light that names none: 2048 texels per side for directional lights
-// (a sun's one map covers the whole view), 1024 for the others.
+// The map size of a light that names none: 2048 texels per side for directional and area
+// lights (parallel rays: each map or cascade is fitted to everything the view sees), 1024
+// for the others.
 int defaultShadowMapSize(LightType type);
 // Light::shadowMapSize, or its type's default when it is 0.
 int shadowMapSizeOf(const Light& light);
+// The size a light's map is drawn at: options.mapSize (--map-size) when set, else its own.
+int shadowMapSizeOf(const Light& light, const ShadowOptions& options);
 
 // Names one state of a scene's meshes, materials, textures and objects, so a renderer
 // re-reads them (checks, hashes, uploads: work that grows with the scene) only when it
@@ -275,5 +278,9 @@ Scene loadScene(const std::string& nameOrPath);
 // floor show their shadows: a square ten times the scene's radius wide, facing +y (glTF's
 // up) just below the lowest point at options.time 0. Does nothing to an empty scene.
 void addGround(Scene& scene);
+
+// The size the scene's first shadow-casting light's map is drawn at (1024 with none): what
+// gnomon bench reports as the scene's map size, and where the viewer's override starts.
+int firstCasterMapSize(const Scene& scene, const ShadowOptions& options);
 
 }  // namespace gnomon

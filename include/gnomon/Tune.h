@@ -39,7 +39,7 @@ struct TuneOptions {
 // One setting tried, scored over every view (means) and timed.
 struct TuneTrial {
     RenderOptions options;
-    // Per light of the scene, its shadow map size in this trial (Light::shadowMapSize): the
+    // Per light of the scene, its shadow map size in this trial (shadowMapSizeOf): the
     // search sets them one by one when two to eight lights cast shadows and
     // options.shadow.mapSize is 0; otherwise they are the scene's own.
     std::vector<int> mapSizes;

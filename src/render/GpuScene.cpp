@@ -197,7 +197,8 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         g.material = {mat.specular, mat.shininess, mat.unlit ? 1.0f : 0.0f,
                       mat.doubleSided ? 1.0f : 0.0f};
         g.flags = {o.receivesShadows ? 1.0f : 0.0f, float(int(mat.alphaMode)), mat.alphaCutoff,
-                   standInMeshes ? (*standInMeshes)[o.mesh].error : 0.0f};
+                   // Only a caster's own stand-in stands in front of it.
+                   standInMeshes && o.castsShadows ? (*standInMeshes)[o.mesh].error : 0.0f};
         const glm::mat3& uv = mat.uvTransform;
         g.uvRow0 = {uv[0][0], uv[1][0], uv[2][0], 0.0f};
         g.uvRow1 = {uv[0][1], uv[1][1], uv[2][1], 0.0f};

@@ -123,8 +123,7 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
                          std::cos(glm::radians(light.outerConeDegrees))};
         g.shadow.x = std::cos(glm::radians(light.innerConeDegrees));
         g.soft.w = float(i);  // the scene's index, for the visibility pass
-        const int mapSize =
-            options.shadow.mapSize > 0 ? options.shadow.mapSize : shadowMapSizeOf(light);
+        const int mapSize = shadowMapSizeOf(light, options.shadow);
         const bool shadowing = casts(s, options, i);
         g.shadowBias.x = options.shadow.biasConstant;
         g.shadowBias.y = options.shadow.normalOffset;

@@ -56,7 +56,7 @@ std::vector<int> lightsSizedApart(const Scene& scene, const RenderOptions& o) {
 
 // What the search varies: options by their names, then one map size per light of
 // `sizedLights` (parameter i >= options is that light's). `ownSizes`: every light's map size
-// as the scene had it when the search began (the evaluator sets them on the scene per trial).
+// when the search began (shadowMapSizeOf; the evaluator sets them on the scene per trial).
 struct Space {
     std::vector<search::Parameter> parameters;
     std::size_t options = 0;
@@ -315,8 +315,11 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
 
 void applyMapSizes(const std::vector<int>& mapSizes, Scene& scene) {
     if (mapSizes.size() != scene.lights.size()) return;
-    for (std::size_t i = 0; i < mapSizes.size(); ++i)
-        scene.lights[i].shadowMapSize = mapSizes[i];
+    for (std::size_t i = 0; i < mapSizes.size(); ++i) {
+        Light& l = scene.lights[i];
+        // A size equal to the type's default stays unnamed (0), as the scene may have had it.
+        l.shadowMapSize = mapSizes[i] == defaultShadowMapSize(l.type) ? 0 : mapSizes[i];
+    }
 }
 
 std::string toJson(const TuneResult& r, const std::string& scene) {

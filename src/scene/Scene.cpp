@@ -170,16 +170,27 @@ std::vector<std::string> Scene::validateLightsAndCamera() const {
 }
 
 // Engines size a sun's map so: Unity's and Unreal's 2048 per map or cascade. On the real
-// scenes of scripts/quality-real.py its suns' views misclassified about half as much with
-// 2048 as with 1024 (Sponza's atrium 0.48 % to 0.28 %, a ToyCar under a low sun 0.23 % to
-// 0.12 %; docs/techniques.md, "Map size"); spots and cubes keep 1024, six faces of which are
-// already more texels.
+// scenes of scripts/quality-real.py its sun views' misclassification summed 1.71 points with
+// 2048 against 2.50 with 1024 (Sponza's atrium 0.48 % to 0.28 %, a ToyCar under a low sun
+// 0.23 % to 0.12 %; docs/techniques.md, "Map size"). Area lights are fitted as suns are.
+// Spots keep 1024: their cone, not the whole view, is what their map spreads over; cubes
+// too, six faces of which already hold more texels than one 2048² map.
 int defaultShadowMapSize(LightType type) {
-    return type == LightType::Directional ? 2048 : 1024;
+    return type == LightType::Directional || type == LightType::Area ? 2048 : 1024;
 }
 
 int shadowMapSizeOf(const Light& light) {
     return light.shadowMapSize > 0 ? light.shadowMapSize : defaultShadowMapSize(light.type);
+}
+
+int shadowMapSizeOf(const Light& light, const ShadowOptions& options) {
+    return options.mapSize > 0 ? options.mapSize : shadowMapSizeOf(light);
+}
+
+int firstCasterMapSize(const Scene& scene, const ShadowOptions& options) {
+    for (const Light& l : scene.lights)
+        if (l.castsShadows) return shadowMapSizeOf(l, options);
+    return options.mapSize > 0 ? options.mapSize : 1024;
 }
 
 std::vector<Aabb> meshBounds(const Scene& scene) {

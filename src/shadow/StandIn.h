@@ -15,8 +15,9 @@ namespace gnomon::shadow {
 
 struct StandIn {
     std::vector<std::uint32_t> indices;  // into the mesh's own vertices
-    // How far its surface may stray from the mesh's, in the mesh's units (meshoptimizer's
-    // error bound for the collapses made); 0 for the mesh itself.
+    // meshoptimizer's reported error, in the mesh's units: how far the vertices it removed
+    // lie from the stand-in's surface (faces sag up to about twice that further); 0 for the
+    // mesh itself.
     float error = 0.0f;
 };
 

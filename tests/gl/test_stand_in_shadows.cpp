@@ -115,7 +115,10 @@ TEST(StandInCasters, AConcaveSurfaceIsNotShadowedByItsOwnStandIn) {
     full.width = full.height = coarse.width = coarse.height = 160;
     coarse.shadow.casterDetail = 0.1f;
     const ScoreResult whole = score(sharedRenderer(), s, full);
+    const std::uint64_t fullTriangles = sharedRenderer().lastFrameStats().shadowTriangles;
     const ScoreResult standIn = score(sharedRenderer(), s, coarse);
+    const std::uint64_t coarseTriangles = sharedRenderer().lastFrameStats().shadowTriangles;
+    ASSERT_LE(coarseTriangles * 8, fullTriangles) << "the stand-in is not drawn";
     ASSERT_GT(whole.overall.pixels, 10000);
     EXPECT_LT(standIn.overall.misclassified, whole.overall.misclassified + 0.004)
         << standIn.overall.misclassified << " with a tenth of the triangles, "

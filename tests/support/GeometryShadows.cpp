@@ -176,7 +176,7 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
         const Light& l = scene.lights[i];
         LightModel& lm = lights[i];
         lm.on = lightIsOn(scene, options, i);
-        const int size = options.shadow.mapSize > 0 ? options.shadow.mapSize : shadowMapSizeOf(l);
+        const int size = shadowMapSizeOf(l, options.shadow);
         lm.frame = shadow::lightCameraFrame(l, scene.camera, fit, size);
         lm.shadowed = lm.on && l.castsShadows && lm.frame.valid && options.shadow.enabled;
         const glm::mat4 worldFromLight = glm::inverse(lm.frame.lightFromWorld);

@@ -257,19 +257,25 @@ TEST(Scene, ValidateCatchesLightAndCameraProblems) {
     expectOneProblem(s, "eye equals its centre");
 }
 
-// A light that names no map size takes its type's (2048 for a sun, 1024 for the others); one
-// it names is kept, and 0 is valid where other sizes below 64 are not.
+// A light that names no map size takes its type's (2048 for parallel rays, fitted to the
+// whole view; 1024 for the others); one it names is kept, --map-size overrides both, and 0 is
+// valid where other sizes below 64 are not.
 TEST(Scene, LightsWithoutAMapSizeTakeTheirTypesDefault) {
     Light l;
     EXPECT_EQ(l.shadowMapSize, 0);
-    l.type = LightType::Directional;
-    EXPECT_EQ(shadowMapSizeOf(l), 2048);
-    for (LightType t : {LightType::Spot, LightType::Point, LightType::Area}) {
+    for (LightType t : {LightType::Directional, LightType::Area}) {
+        l.type = t;
+        EXPECT_EQ(shadowMapSizeOf(l), 2048);
+    }
+    for (LightType t : {LightType::Spot, LightType::Point}) {
         l.type = t;
         EXPECT_EQ(shadowMapSizeOf(l), 1024);
     }
     l.shadowMapSize = 333;
     EXPECT_EQ(shadowMapSizeOf(l), 333);
+    ShadowOptions every;
+    every.mapSize = 256;
+    EXPECT_EQ(shadowMapSizeOf(l, every), 256);
     Scene s = builtinScene("book-triangle");
     s.lights[0].shadowMapSize = 0;
     EXPECT_TRUE(s.validate().empty());

@@ -271,7 +271,7 @@ void Viewer::shadowMapControls() {
         changed(option("shadows"));
         bool override = s.mapSize > 0;
         if (ImGui::Checkbox("##override", &override)) {
-            s.mapSize = override ? 1024 : 0;
+            s.mapSize = override ? firstCasterMapSize(mState.scene, s) : 0;
             changed(true);
         }
         tooltip("override every light's map size");
