@@ -317,8 +317,8 @@ void applyMapSizes(const std::vector<int>& mapSizes, Scene& scene) {
     if (mapSizes.size() != scene.lights.size()) return;
     for (std::size_t i = 0; i < mapSizes.size(); ++i) {
         Light& l = scene.lights[i];
-        // A size equal to the type's default stays unnamed (0), as the scene may have had it.
-        l.shadowMapSize = mapSizes[i] == defaultShadowMapSize(l.type) ? 0 : mapSizes[i];
+        // A size equal to the light's default stays unnamed (0), as the scene may have had it.
+        l.shadowMapSize = mapSizes[i] == defaultShadowMapSize(l) ? 0 : mapSizes[i];
     }
 }
 

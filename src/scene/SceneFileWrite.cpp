@@ -57,7 +57,7 @@ OJson lightJson(const Light& l) {
     j["range"] = number(l.range);
     j["outer-cone"] = number(l.outerConeDegrees);
     j["casts-shadows"] = l.castsShadows;
-    if (l.shadowMapSize > 0) j["shadow-map-size"] = l.shadowMapSize;  // else its type's
+    if (l.shadowMapSize > 0) j["shadow-map-size"] = l.shadowMapSize;  // else its default
     const ShadowCamera& c = l.shadowCamera;
     OJson s;
     s["policy"] = nameOf(kPolicies, c.policy);

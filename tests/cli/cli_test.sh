@@ -250,18 +250,24 @@ cascades)
     [[ $(cat "$work/code") == 0 && -s "$work/c.png" ]] || fail "auto cascades with boxes: $(cat "$work/stderr")"
     ;;
 map_sizes)
-    # A light without a map size takes its type's: 2048 for a sun, 1024 for a spot.
+    # A light without a map size takes its default: 2048 for a sun, a spot and a point light
+    # with a manual camera (one map each), 1024 per face for a fitted point light's cube.
     cat >"$work/lights.json" <<'JSON'
 {"gnomon-scene": 1, "include": [{"scene": "book-triangle"}],
  "lights": [{"type": "directional", "direction": [0, -1, 0.2]},
             {"type": "spot", "position": [0, 7, 2], "direction": [0, -1, -0.2]},
-            {"type": "directional", "direction": [0.1, -1, 0], "shadow-map-size": 512}]}
+            {"type": "directional", "direction": [0.1, -1, 0], "shadow-map-size": 512},
+            {"type": "point", "position": [0, 1, 0]},
+            {"type": "point", "position": [0, 7, 2],
+             "shadow-camera": {"policy": "manual", "target": [0, 0, 0], "fovy": 90}}]}
 JSON
     run --verbose render --scene "$work/lights.json" --cascades 1 --size 64x64 --out "$work/m.png"
     skip_without_gl
     expect 0 "light 0: 2048² map"
-    expect 0 "light 1: 1024² map"
+    expect 0 "light 1: 2048² map"
     expect 0 "light 2: 512² map"
+    expect 0 "light 3: 1024² map"
+    expect 0 "light 4: 2048² map"
     run --verbose render --scene "$work/lights.json" --cascades 1 --map-size 256 --size 64x64 \
         --out "$work/m.png"
     expect 0 "light 0: 256² map"

@@ -155,11 +155,14 @@ TEST(Tune, MapSizesApplyOnlyToTheSceneTheyCameFrom) {
     EXPECT_EQ(s.lights[1].shadowMapSize, 4096);
     applyMapSizes({1024}, s);
     EXPECT_EQ(s.lights[0].shadowMapSize, 512);
-    // A type's default size stays unnamed, as a scene file without sizes has it.
-    applyMapSizes({2048, 1024}, s);
+    // A light's default size stays unnamed, as a scene file without sizes has it.
+    applyMapSizes({2048, 2048}, s);
     EXPECT_EQ(s.lights[0].shadowMapSize, 0);
     EXPECT_EQ(s.lights[1].shadowMapSize, 0);
     EXPECT_EQ(shadowMapSizeOf(s.lights[0]), 2048);
+    EXPECT_EQ(shadowMapSizeOf(s.lights[1]), 2048);
+    applyMapSizes({2048, 1024}, s);
+    EXPECT_EQ(s.lights[1].shadowMapSize, 1024);
 }
 
 // Sixteen shadowed lights: sizing each apart would add three trials per light and sweep, so

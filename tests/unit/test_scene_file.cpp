@@ -195,7 +195,7 @@ TEST(SceneFile, SavedFileReproducesWhatWasTuned) {
     EXPECT_TRUE(back.warnings.empty());
 }
 
-// A light without a map size is saved without one, so it keeps its type's default when read.
+// A light without a map size is saved without one, so it keeps its default when read.
 TEST(SceneFile, ALightWithoutAMapSizeIsSavedWithoutOne) {
     ScopedTempDir dir;
     Scene s = builtinScene("tutorial-room");

@@ -1,5 +1,5 @@
 // Scene::validate: each spoiled scene yields exactly one problem that names what is wrong and
-// the scene; a light without a map size is valid and takes its type's default; the
+// the scene; a light without a map size is valid and takes its default; the
 // spoilings that would turn a matrix into NaN (a light camera at its own target, a spin
 // about nothing) are flagged before they render.
 #include <limits>
@@ -63,19 +63,22 @@ TEST(Scene, ValidateCatchesLightAndCameraProblems) {
     expectOneProblem(s, "eye equals its centre");
 }
 
-// A light that names no map size takes its type's (2048 for parallel rays, fitted to the
-// whole view; 1024 for the others); one it names is kept, --map-size overrides both, and 0 is
-// valid where other sizes below 64 are not.
-TEST(Scene, LightsWithoutAMapSizeTakeTheirTypesDefault) {
+// A light that names no map size takes its default: 2048 for every light drawn into one map
+// (parallel rays, spots, point lights given one camera), 1024 per face of a fitted point
+// light's cube; one it names is kept, --map-size overrides both, and 0 is valid where other
+// sizes below 64 are not.
+TEST(Scene, LightsWithoutAMapSizeTakeTheirDefault) {
     Light l;
     EXPECT_EQ(l.shadowMapSize, 0);
-    for (LightType t : {LightType::Directional, LightType::Area}) {
+    for (LightType t : {LightType::Directional, LightType::Area, LightType::Spot}) {
         l.type = t;
         EXPECT_EQ(shadowMapSizeOf(l), 2048);
     }
-    for (LightType t : {LightType::Spot, LightType::Point}) {
-        l.type = t;
-        EXPECT_EQ(shadowMapSizeOf(l), 1024);
+    l.type = LightType::Point;
+    EXPECT_EQ(shadowMapSizeOf(l), 1024);  // a cube
+    for (ShadowCameraPolicy p : {ShadowCameraPolicy::Manual, ShadowCameraPolicy::Course}) {
+        l.shadowCamera.policy = p;
+        EXPECT_EQ(shadowMapSizeOf(l), 2048);  // one map
     }
     l.shadowMapSize = 333;
     EXPECT_EQ(shadowMapSizeOf(l), 333);
