@@ -161,10 +161,10 @@ int runRender(const RenderArgs& args, bool verbose) {
                          stats.transmittancePasses);
         }
         for (const gnomon::MapUsage& u : renderer.mapUsage()) {
-            std::fprintf(stderr, "gnomon: light %d%s: %d² map, the view uses %.0f %% of it\n",
+            std::fprintf(stderr, "gnomon: light %d%s: %d² %s, the view uses %.0f %% of it\n",
                          u.light,
                          u.cascade >= 0 ? (" cascade " + std::to_string(u.cascade)).c_str() : "",
-                         u.mapSize, 100.0 * double(u.share));
+                         u.mapSize, u.cube ? "cube" : "map", 100.0 * double(u.share));
         }
     }
     return 0;

@@ -63,8 +63,9 @@ struct FrameStats {
 struct MapUsage {
     int light = 0;     // index into Scene::lights
     int cascade = -1;  // cascade index for cascaded directional lights, else -1
-    int mapSize = 0;   // texels per side
+    int mapSize = 0;   // texels per side (per face of a cube)
     float share = 0.0f;
+    bool cube = false;  // a point light's six faces, not one map
 };
 
 // Per pixel and light, what the main pass's shadow lookups returned (gnomon score): values at

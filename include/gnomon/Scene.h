@@ -155,18 +155,20 @@ struct Light {
     // (1 - (d/range)^4)^2 on top of the attenuation); 0 = unlimited.
     float range = 0.0f;
     bool castsShadows = true;
-    // Texels per side (per cube face for point lights), 64..8192; 0: the default for its type
-    // and shadow camera (defaultShadowMapSize).
+    // Texels per side (per cube face for point lights), 64..8192; 0: the default
+    // (kDefaultShadowMapSize, kDefaultCubeFaceSize for a cube's faces).
     int shadowMapSize = 0;
     ShadowCamera shadowCamera;
     bool operator==(const Light&) const = default;
 };
 
-// The map size of a light that names none: 1024 texels per cube face for a point light with
-// a fitted shadow camera (six faces), 2048 texels per side for every light drawn into one map
-// (directional, area and spot lights, point lights with a manual or course camera).
-int defaultShadowMapSize(const Light& light);
-// Light::shadowMapSize, or its default when it is 0.
+// The map size of a light that names none: 2048 texels per side for a light drawn into one
+// map (directional, area and spot lights, point lights drawn as one frustum), and 1024 per
+// face for a point light drawn as a cube (six faces).
+inline constexpr int kDefaultShadowMapSize = 2048;
+inline constexpr int kDefaultCubeFaceSize = 1024;
+// Light::shadowMapSize, or kDefaultShadowMapSize when it is 0 (a cube's faces, when they are
+// drawn, take kDefaultCubeFaceSize instead).
 int shadowMapSizeOf(const Light& light);
 // The size a light's map is drawn at: options.mapSize (--map-size) when set, else its own.
 int shadowMapSizeOf(const Light& light, const ShadowOptions& options);

@@ -412,7 +412,8 @@ std::vector<MapUsage> Renderer::mapUsage() {
     for (const render::ShadowedLight& sl : m.plan.shadowed()) {
         out.push_back(
             {sl.light, sl.cascade, sl.mapSize,
-             shadow::mapShareUsed(samples, sl.frame, sl.mapSize, sl.depthFrom, sl.depthTo)});
+             shadow::mapShareUsed(samples, sl.frame, sl.mapSize, sl.depthFrom, sl.depthTo),
+             sl.frame.kind == shadow::FrameKind::Cube});
     }
     return out;
 }

@@ -317,8 +317,9 @@ void applyMapSizes(const std::vector<int>& mapSizes, Scene& scene) {
     if (mapSizes.size() != scene.lights.size()) return;
     for (std::size_t i = 0; i < mapSizes.size(); ++i) {
         Light& l = scene.lights[i];
-        // A size equal to the light's default stays unnamed (0), as the scene may have had it.
-        l.shadowMapSize = mapSizes[i] == defaultShadowMapSize(l) ? 0 : mapSizes[i];
+        // A size equal to the default stays unnamed (0), as the scene may have had it (a point
+        // light drawn as a cube then takes its 1024 per face, as it started).
+        l.shadowMapSize = mapSizes[i] == kDefaultShadowMapSize ? 0 : mapSizes[i];
     }
 }
 

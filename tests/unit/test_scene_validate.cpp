@@ -63,22 +63,16 @@ TEST(Scene, ValidateCatchesLightAndCameraProblems) {
     expectOneProblem(s, "eye equals its centre");
 }
 
-// A light that names no map size takes its default: 2048 for every light drawn into one map
-// (parallel rays, spots, point lights given one camera), 1024 per face of a fitted point
-// light's cube; one it names is kept, --map-size overrides both, and 0 is valid where other
-// sizes below 64 are not.
-TEST(Scene, LightsWithoutAMapSizeTakeTheirDefault) {
+// A light that names no map size takes the default, 2048 (a point light's cube faces, when it
+// is drawn as one, take 1024: cli.map_sizes); one it names is kept, --map-size
+// overrides both, and 0 is valid where other sizes below 64 are not.
+TEST(Scene, LightsWithoutAMapSizeTakeTheDefault) {
     Light l;
     EXPECT_EQ(l.shadowMapSize, 0);
-    for (LightType t : {LightType::Directional, LightType::Area, LightType::Spot}) {
+    for (LightType t :
+         {LightType::Directional, LightType::Area, LightType::Spot, LightType::Point}) {
         l.type = t;
         EXPECT_EQ(shadowMapSizeOf(l), 2048);
-    }
-    l.type = LightType::Point;
-    EXPECT_EQ(shadowMapSizeOf(l), 1024);  // a cube
-    for (ShadowCameraPolicy p : {ShadowCameraPolicy::Manual, ShadowCameraPolicy::Course}) {
-        l.shadowCamera.policy = p;
-        EXPECT_EQ(shadowMapSizeOf(l), 2048);  // one map
     }
     l.shadowMapSize = 333;
     EXPECT_EQ(shadowMapSizeOf(l), 333);

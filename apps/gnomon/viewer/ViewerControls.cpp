@@ -235,7 +235,12 @@ void Viewer::lightControls() {
         changed(true);
     }
     ImGui::SameLine();
-    ImGui::Text("%d", shadowMapSizeOf(l));
+    const bool cubeDefault = l.type == LightType::Point && l.shadowMapSize == 0 &&
+                             l.shadowCamera.policy == ShadowCameraPolicy::Fit;
+    if (cubeDefault)
+        ImGui::Text("%d (%d per cube face)", shadowMapSizeOf(l), kDefaultCubeFaceSize);
+    else
+        ImGui::Text("%d", shadowMapSizeOf(l));
     tooltip("this light's shadow map, texels per side (--map-size overrides every light)");
     ShadowCamera& sc = l.shadowCamera;
     int policy = int(sc.policy);
