@@ -33,6 +33,11 @@ bool nearestHandCompare(const ShadowOptions& s) {
 bool kernelFilter(const ShadowOptions& s) {
     return s.filter == ShadowFilter::Pcf || s.filter == ShadowFilter::Poisson;
 }
+// Stand-in casters are in the maps: lookups start off the surface by their error
+// (shadow_lookup.glsl). Without lookups there is nothing to lift.
+bool standInLift(const ShadowOptions& s) {
+    return s.enabled && s.casterDetail < 1.0f;
+}
 // View-space z from window depth d as (x·d + y) / (z·d + w): the inverse projection's z and
 // w rows at ndc z = 2d − 1. They hold no x or y term for perspective and orthographic
 // projections (whose z and w rows do not involve x and y), so the contact march needs no
@@ -74,7 +79,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(in.transmittance != nullptr) << 31 |
         std::uint64_t(nearestHandCompare(so)) << 32 |
         std::uint64_t(in.singleMapKind + 1) << 33 |  // 0..4: 3 bits
-        std::uint64_t(so.casterDetail < 1.0f) << 36;
+        std::uint64_t(standInLift(so)) << 36;
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -133,7 +138,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (nearestHandCompare(s)) defines.push_back("MAP_NEAREST");
     if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
     if (s.normalOffset > 0.0f) defines.push_back("NORMAL_OFFSET");
-    if (s.casterDetail < 1.0f) defines.push_back("STAND_IN_LIFT");
+    if (standInLift(s)) defines.push_back("STAND_IN_LIFT");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
     if (in.viewDepth) defines.push_back("CONTACT_SHADOWS");
     if (in.transmittance) defines.push_back("COLOURED_SHADOWS");
