@@ -153,7 +153,7 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
     run.main = spreadOf(main);
     // The reference points, in the same run: a bare depth-only draw of the casters at the
     // same map size (through the first light's camera), and the frame without shadows.
-    run.mapSize = mapSizeOf(scene, options);
+    run.mapSize = firstCasterMapSize(scene, options.shadow);
     std::vector<double> bare;
     for (int i = 0; i < args.frames; ++i) {
         const double b = renderer.measureBareDepthPass(run.mapSize);

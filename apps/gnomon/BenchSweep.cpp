@@ -142,10 +142,6 @@ std::vector<std::string> defaultValues(const std::string& param) {
 
 }  // namespace
 
-int mapSizeOf(const Scene& scene, const RenderOptions& o) {
-    return firstCasterMapSize(scene, o.shadow);
-}
-
 // The values --sweep runs over: --values, else the parameter's defaults (none without
 // --sweep).
 std::vector<std::string> sweepValues(const BenchArgs& args) {

@@ -16,7 +16,5 @@ std::vector<std::string> sweepValues(const BenchArgs& args);
 // gnomon::Error naming a value out of range.
 void applySweep(const std::string& param, const std::string& value, const Scene& base,
                 const RenderOptions& baseOptions, Scene& scene, RenderOptions& options);
-// The map size a run uses: --map-size, else the first shadowed light's.
-int mapSizeOf(const Scene& scene, const RenderOptions& o);
 
 }  // namespace gnomon::cli

@@ -281,8 +281,9 @@ Scene loadScene(const std::string& nameOrPath);
 // up) just below the lowest point at options.time 0. Does nothing to an empty scene.
 void addGround(Scene& scene);
 
-// The size the scene's first shadow-casting light's map is drawn at (1024 with none): what
-// gnomon bench reports as the scene's map size, and where the viewer's override starts.
+// The map size of the scene's first shadow-casting light, shadowMapSizeOf (1024 with none; a
+// point light drawn as a cube may draw its faces smaller): what gnomon bench reports as the
+// scene's map size, and where the viewer's override starts.
 int firstCasterMapSize(const Scene& scene, const ShadowOptions& options);
 
 }  // namespace gnomon

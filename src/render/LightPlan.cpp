@@ -140,17 +140,9 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
             planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds(), g);
         } else if (shadowing) {
             Held* h = held(i);
-            int size = mapSize;
-            shadow::LightCameraFrame frame =
-                shadow::lightCameraFrame(light, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr);
-            // A point light that names no size: 2048 as one frustum, 1024 per face as a cube
-            // (Scene.h). The cube is fitted again at its size; cubes hold no window.
-            if (frame.valid && frame.kind == shadow::FrameKind::Cube && light.shadowMapSize == 0 &&
-                options.shadow.mapSize == 0) {
-                size = kDefaultCubeFaceSize;
-                frame = shadow::lightCameraFrame(light, mFitCamera, mFit, size,
-                                                 h ? &h->maps[0] : nullptr);
-            }
+            int size = 0;
+            const shadow::LightCameraFrame frame = shadow::sizedLightCameraFrame(
+                light, options.shadow, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr);
             if (frame.valid) {
                 fillShadowRecord(g, frame, light, options.shadow);
                 g.soft.w = float(i);

@@ -312,6 +312,22 @@ LightCameraFrame sampledCascadeFrame(const glm::vec3& direction, const FitScene&
                            mapSize);
 }
 
+LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& options,
+                                       const Camera& view, const FitScene& scene, int& size,
+                                       HeldExtent* held) {
+    size = shadowMapSizeOf(light, options);
+    LightCameraFrame frame = lightCameraFrame(light, view, scene, size, held);
+    // Fitted again at the cube's size: a frustum's fit quantises its window by the map size,
+    // and a fit that finds no frustum at 2048 finds none at the coarser 1024 either (its
+    // margins only grow), so this stays a cube.
+    if (frame.valid && frame.kind == FrameKind::Cube && light.shadowMapSize == 0 &&
+        options.mapSize == 0) {
+        size = kDefaultCubeFaceSize;
+        frame = lightCameraFrame(light, view, scene, size, held);
+    }
+    return frame;
+}
+
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const Aabb& bounds,
                                   int mapSize) {
     FitScene scene;

@@ -103,6 +103,12 @@ constexpr float kHoldSlack = 1.25f;
 // updated: a directional or area light's box, a spot's window, a point light's frustum.
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const FitScene& scene,
                                   int mapSize, HeldExtent* held = nullptr);
+// The frame at the size the light's map is drawn at, which `size` receives:
+// shadowMapSizeOf(light, options), except that a light naming no size (and no --map-size) that
+// the fit draws as a cube gets kDefaultCubeFaceSize per face (Scene.h), fitted again at it.
+LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& options,
+                                       const Camera& view, const FitScene& scene, int& size,
+                                       HeldExtent* held = nullptr);
 // The same with one box as every caster and receiver and no view (fit the whole box).
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
                                   const Aabb& casterAndReceiverBounds, int mapSize);

@@ -176,8 +176,8 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
         const Light& l = scene.lights[i];
         LightModel& lm = lights[i];
         lm.on = lightIsOn(scene, options, i);
-        const int size = shadowMapSizeOf(l, options.shadow);
-        lm.frame = shadow::lightCameraFrame(l, scene.camera, fit, size);
+        int size = 0;
+        lm.frame = shadow::sizedLightCameraFrame(l, options.shadow, scene.camera, fit, size);
         lm.shadowed = lm.on && l.castsShadows && lm.frame.valid && options.shadow.enabled;
         const glm::mat4 worldFromLight = glm::inverse(lm.frame.lightFromWorld);
         lm.eye = glm::vec3(worldFromLight[3]);
