@@ -161,10 +161,12 @@ int runRender(const RenderArgs& args, bool verbose) {
                          stats.transmittancePasses);
         }
         for (const gnomon::MapUsage& u : renderer.mapUsage()) {
-            std::fprintf(stderr, "gnomon: light %d%s: %d² %s, the view uses %.0f %% of it\n",
-                         u.light,
-                         u.cascade >= 0 ? (" cascade " + std::to_string(u.cascade)).c_str() : "",
-                         u.mapSize, u.cube ? "cube" : "map", 100.0 * double(u.share));
+            const std::string faces =
+                u.cube ? " (" + std::to_string(u.faces) + " of 6 faces drawn)" : "";
+            std::fprintf(
+                stderr, "gnomon: light %d%s: %d² %s%s, the view uses %.0f %% of it\n", u.light,
+                u.cascade >= 0 ? (" cascade " + std::to_string(u.cascade)).c_str() : "", u.mapSize,
+                u.cube ? "cube" : "map", faces.c_str(), 100.0 * double(u.share));
         }
     }
     return 0;
@@ -248,7 +250,8 @@ int main(int argc, char** argv) {
     renderCmd->add_option(
         "--shadow-maps", render.shadowMaps,
         "also write each light's shadow map as DIR/light-N.png (cascades: light-N-cascade-K.png; "
-        "cubes: six faces side by side; 16-bit grey, darker = nearer)");
+        "cubes: six faces side by side, white where the view looks none up; 16-bit grey, darker "
+        "= nearer)");
     render.flags.add(*renderCmd);
 
     gnomon::cli::ScoreArgs scoreArgs;

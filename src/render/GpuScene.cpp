@@ -251,7 +251,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
 }
 
 // The object-index attribute (sized to the objects) and the draw commands in item order,
-// for 1 and for 6 instances; true when the commands changed (and were uploaded).
+// for 1 to 6 instances; true when the commands changed (and were uploaded).
 bool GpuScene::uploadDrawCommands() {
     const std::size_t n = mItems.size();
     // Object indices, read as an instanced attribute: instance i of a draw with base
@@ -268,9 +268,9 @@ bool GpuScene::uploadDrawCommands() {
         glVertexArrayBindingDivisor(mVao.id(), 1, 1);
         mDivisor = 1;
     }
-    // Draw commands in item order, for 1 and for 6 instances, then the same for the stand-in
-    // casters; uploaded when they differ.
-    mCommandScratch.resize(4 * n);
+    // Draw commands in item order, for 1 to 6 instances (a cube draws the faces the view
+    // looks up), then the same for the stand-in casters; uploaded when they differ.
+    mCommandScratch.resize(2 * kMaxInstances * n);
     for (std::size_t i = 0; i < n; ++i) {
         const DrawItem& item = mItems[i];
         const DrawCommand c{GLuint(item.indexCount), 1,
@@ -279,20 +279,20 @@ bool GpuScene::uploadDrawCommands() {
         const DrawCommand s{GLuint(item.standInIndexCount), 1,
                             GLuint(item.standInFirstIndexByte / sizeof(std::uint32_t)),
                             item.baseVertex, item.object};
-        mCommandScratch[i] = c;
-        mCommandScratch[n + i] = c;
-        mCommandScratch[n + i].instanceCount = 6;
-        mCommandScratch[2 * n + i] = s;
-        mCommandScratch[3 * n + i] = s;
-        mCommandScratch[3 * n + i].instanceCount = 6;
+        for (std::size_t k = 0; k < kMaxInstances; ++k) {
+            mCommandScratch[k * n + i] = c;
+            mCommandScratch[k * n + i].instanceCount = GLuint(k + 1);
+            mCommandScratch[(kMaxInstances + k) * n + i] = s;
+            mCommandScratch[(kMaxInstances + k) * n + i].instanceCount = GLuint(k + 1);
+        }
     }
     if (!mCommands || mCommandScratch.size() != mCommandData.size() ||
         std::memcmp(mCommandScratch.data(), mCommandData.data(),
                     mCommandData.size() * sizeof(DrawCommand)) != 0) {
         mCommandData.swap(mCommandScratch);
-        mCommands =
-            gl::Buffer("draw commands", std::max<std::size_t>(n, 1) * 4 * sizeof(DrawCommand),
-                       n ? mCommandData.data() : nullptr, 0);
+        mCommands = gl::Buffer(
+            "draw commands", std::max<std::size_t>(n, 1) * 2 * kMaxInstances * sizeof(DrawCommand),
+            n ? mCommandData.data() : nullptr, 0);
         return true;
     }
     return false;
@@ -324,7 +324,7 @@ void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei insta
     if (count == 0) return;
     setInstanceDivisor(instances);
     const std::size_t command =
-        ((standIns ? 2 : 0) + (instances == 6 ? 1 : 0)) * mItems.size() + first;
+        ((standIns ? kMaxInstances : 0) + std::size_t(instances - 1)) * mItems.size() + first;
     glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(command * sizeof(DrawCommand)),
                                 GLsizei(count), 0);

@@ -78,10 +78,11 @@ public:
     bool sync(const Scene& scene, double seconds, float casterDetail = 1.0f);
     // Binds the vertex array, the object buffer (binding 0) and the draw commands.
     void bind() const;
-    // Issues one draw (`instances` copies: 1, or 6 for the cube faces of a point light).
+    // Issues one draw (`instances` copies: 1, or one per cube face a point light draws).
     void draw(const DrawItem& item, GLsizei instances = 1) const;
-    // Draws items [first, first + count) in one call (each 1 or 6 times), their stand-in
-    // casters when `standIns` (shadow passes).
+    // Draws items [first, first + count) in one call (each 1 to kMaxInstances times), their
+    // stand-in casters when `standIns` (shadow passes).
+    static constexpr std::size_t kMaxInstances = 6;
     void drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances = 1,
                    bool standIns = false) const;
     const std::vector<DrawItem>& items() const { return mItems; }

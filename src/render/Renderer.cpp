@@ -4,6 +4,7 @@
 #include "gnomon/Renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -413,7 +414,8 @@ std::vector<MapUsage> Renderer::mapUsage() {
         out.push_back(
             {sl.light, sl.cascade, sl.mapSize,
              shadow::mapShareUsed(samples, sl.frame, sl.mapSize, sl.depthFrom, sl.depthTo),
-             sl.frame.kind == shadow::FrameKind::Cube});
+             sl.frame.kind == shadow::FrameKind::Cube,
+             sl.frame.kind == shadow::FrameKind::Cube ? std::popcount(sl.frame.faces) : 1});
     }
     return out;
 }

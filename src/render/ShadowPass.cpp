@@ -1,8 +1,10 @@
 #include "render/ShadowPass.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstdio>
+#include <span>
 
 #include "gl/Program.h"
 #include "gnomon/Error.h"
@@ -215,6 +217,12 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
         });
 }
 
+bool ShadowPass::LayerState::serves(const LayerState& want) const {
+    LayerState same = want;
+    same.faces = faces;
+    return *this == same && (want.faces & ~faces) == 0;
+}
+
 void ShadowPass::invalidate() {
     for (LayerState& l : mLayers)
         l = LayerState{};
@@ -337,14 +345,21 @@ void ShadowPass::drawMap(const GpuScene& scene, const ShadowedLight& light,
         // Only this light's six faces are cleared; other cubes keep their maps.
         glClearTexSubImage(mCubes.id(), 0, 0, 0, 6 * light.layer, mCubes.width(), mCubes.height(),
                            6, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+        // Faces the view does not look up are cleared and left empty.
+        std::array<GLint, 6> faces{};
+        GLsizei count = 0;
+        for (int face = 0; face < 6; ++face) {
+            if (light.frame.faces & (1u << face)) faces[size_t(count++)] = face;
+        }
         if (mLayered) {
             glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());
-            drawCasters(scene, options, kCube, 6, [&] {
+            drawCasters(scene, options, kCube, count, [&] {
                 glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
                 glUniform1i(7, 6 * light.layer);
+                glUniform1iv(8, count, faces.data());
             });
         } else {
-            for (int face = 0; face < 6; ++face) {
+            for (int face : std::span(faces.data(), size_t(count))) {
                 glBindFramebuffer(GL_FRAMEBUFFER,
                                   mCubeFaceFramebuffers[size_t(6 * light.layer + face)].id());
                 drawCasters(scene, options, kPlain, 1,
@@ -378,7 +393,8 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
             options.biasUnits,
             light.depthClamp,
             format,
-            options.blendShadows};
+            options.blendShadows,
+            cube ? light.frame.faces : std::uint8_t(0x3F)};
         if (cube) {
             for (int face = 0; face < 6; ++face) {
                 want.clipFromWorld[size_t(face)] = light.frame.faceClipFromWorld(face);
@@ -387,7 +403,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
             want.clipFromWorld[0] = light.frame.clipFromWorld();
         }
         LayerState& have = cube ? mCubeLayers[size_t(light.layer)] : mLayers[index2D++];
-        if (have == want) continue;  // nothing changed: keep the map
+        if (have.serves(want)) continue;  // nothing changed: keep the map
         have = want;
         if (clock) clock->start();
         if (!any) {
@@ -401,7 +417,8 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         ++stats.rendered;
         std::uint64_t triangles = 0;
         for (std::uint32_t index : mVisible) {
-            triangles += std::uint64_t(scene.items()[index].standInIndexCount / 3) * (cube ? 6 : 1);
+            triangles += std::uint64_t(scene.items()[index].standInIndexCount / 3) *
+                         std::uint64_t(cube ? std::popcount(light.frame.faces) : 1);
         }
         stats.triangles += triangles;
         if (clock && timings) {

@@ -133,7 +133,10 @@ private:
         bool depthClamp = false;
         DepthFormat format = DepthFormat::Depth32F;
         BlendShadows blend = BlendShadows::Dithered;
+        std::uint8_t faces = 0x3F;  // cubes: the faces drawn
         bool operator==(const LayerState&) const = default;
+        // A map drawn as `this` serves `want`: the same, its faces a superset of want's.
+        bool serves(const LayerState& want) const;
     };
     void allocate2D(int size, int layers, DepthFormat format);
     void allocateCubes(int size, int cubes, DepthFormat format);

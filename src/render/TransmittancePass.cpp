@@ -96,7 +96,8 @@ void TransmittancePass::drawLight(const GpuScene& scene, const ShadowedLight& li
         glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
         glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
         glDisable(GL_SCISSOR_TEST);
-        if (mVisible.empty()) continue;
+        // A face no pixel of the view looks up (ShadowMath.h: faces) is left cleared.
+        if (mVisible.empty() || (cube && !(light.frame.faces & (1u << face)))) continue;
         const glm::mat4 m =
             cube ? light.frame.faceClipFromWorld(face) : light.frame.clipFromWorld();
         drawDepthRuns(

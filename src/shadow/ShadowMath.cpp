@@ -325,7 +325,39 @@ LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& 
         size = kDefaultCubeFaceSize;
         frame = lightCameraFrame(light, view, scene, size, held);
     }
+    // A cube draws only the faces the view's pixels look up (a face spans 90 degrees over
+    // `size` texels, each at most 2 / size radians wide, at its centre).
+    if (frame.valid && frame.kind == FrameKind::Cube && scene.samples && !scene.samples->empty()) {
+        const std::uint8_t seen = cubeFacesSeen(
+            *scene.samples, light.position, cubeLookupReachTexels(options) * 2.0f / float(size));
+        if (seen) frame.faces = seen;
+    }
     return frame;
+}
+
+float cubeLookupReachTexels(const ShadowOptions& options) {
+    // The filter's widest tap with its bilinear footprint (the moment filters' cubes take the
+    // default 3 x 3 PCF; PCSS searches and filters up to kPcssMaxTexels, 48).
+    float taps = 2.0f;
+    switch (options.filter) {
+        case ShadowFilter::None:
+        case ShadowFilter::Hw2x2:
+            taps = 1.0f;
+            break;
+        case ShadowFilter::Pcf:
+        case ShadowFilter::Poisson:
+            taps = float(options.pcfSize / 2) + 1.0f;
+            break;
+        case ShadowFilter::Pcss:
+            taps = 49.0f;
+            break;
+        default:
+            break;
+    }
+    // Moves of the point before its taps: the normal offset (texels x filter reach), the
+    // grazing planes' shift (at most the reach), the stand-in lift (at most 6 texels); and
+    // two texels to spare.
+    return taps * (2.0f + std::max(options.normalOffset, 0.0f)) + 6.0f + 2.0f;
 }
 
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const Aabb& bounds,

@@ -4,6 +4,7 @@
 // space.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -32,6 +33,9 @@ struct LightCameraFrame {
     // along the view axis (multiply by the distance).
     float texelWorldSize = 0.0f;
     bool valid = true;  // false: nothing to shadow (empty scene bounds)
+    // Cube frames: the faces drawn, bit f for face f; the others hold no pixel the view drew
+    // (cubeFacesSeen, ViewSamples.h), and no lookup reads them.
+    std::uint8_t faces = 0x3F;
 
     glm::mat4 clipFromWorld() const { return clipFromLight * lightFromWorld; }
     // Cube frames: face 0..5 = +X, -X, +Y, -Y, +Z, -Z, oriented as OpenGL samples cube maps.
@@ -109,6 +113,9 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
 LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& options,
                                        const Camera& view, const FitScene& scene, int& size,
                                        HeldExtent* held = nullptr);
+// How far from its point's own texel, in texels of a cube face, a point light's lookup may
+// read under `options` (shaders/cube_lookup.glsl): what the faces a view needs are widened by.
+float cubeLookupReachTexels(const ShadowOptions& options);
 // The same with one box as every caster and receiver and no view (fit the whole box).
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view,
                                   const Aabb& casterAndReceiverBounds, int mapSize);

@@ -24,6 +24,7 @@ void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, c
     static std::atomic<std::uint64_t> fillings{0};
     out.generation = ++fillings;
     out.points.clear();
+    out.farthestNext.clear();
     out.padConstant = out.padPerDepth = 0.0f;
     const glm::mat4 clip = clipFromView(camera, aspect);
     const glm::mat4 worldFromClip = glm::inverse(clip * viewFromWorld(camera));
@@ -49,6 +50,7 @@ void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, c
         if (!(std::abs(world.w) > 0.0f) || !(std::abs(viewPoint.w) > 0.0f)) return;
         const float viewDepth = -viewPoint.z / viewPoint.w;
         out.points.emplace_back(glm::vec3(world) / world.w, viewDepth);
+        out.farthestNext.push_back(false);
         out.nearest = std::min(out.nearest, viewDepth);
         out.farthest = std::max(out.farthest, viewDepth);
     };
@@ -60,8 +62,10 @@ void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, c
             const glm::vec2 first = glm::vec2(x, y) * float(grid.block);
             const glm::vec2 end = glm::min(first + float(grid.block), glm::vec2(grid.size));
             const glm::vec2 centre = (first + end) / glm::vec2(grid.size) - 1.0f;
+            const std::size_t before = out.points.size();
             add(centre, r.x);
             if (r.y > r.x) add(centre, r.y);
+            if (out.points.size() == before + 2) out.farthestNext[before] = true;
         }
     }
     if (out.points.empty()) out.nearest = 0.0f;
@@ -167,6 +171,85 @@ float mapShareUsed(const ViewSamples& samples, const LightCameraFrame& frame, in
     for (std::uint8_t u : used)
         count += u;
     return float(count) / float(used.size());
+}
+
+namespace {
+
+// Whether the segment a..b (light-relative) meets the pyramid of cube face `face` widened to
+// [-half, half] in the face's tan units. The part in front of the face's plane projects to a
+// segment of the face's plane, clipped to the square there (Liang and Barsky, 1984).
+bool segmentMeetsFace(glm::vec3 a, glm::vec3 b, int face, float half) {
+    const int axis = face / 2;
+    const float sign = face % 2 ? -1.0f : 1.0f;
+    const float eps = 1e-6f * std::max(glm::length(a), glm::length(b));
+    const float fa = sign * a[axis], fb = sign * b[axis];
+    if (fa < eps && fb < eps) return false;  // wholly behind the face's plane
+    if (fa < eps) a += (b - a) * ((eps - fa) / (fb - fa));
+    if (fb < eps) b += (a - b) * ((eps - fb) / (fa - fb));
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const glm::vec2 p(a[u] / (sign * a[axis]), a[v] / (sign * a[axis]));
+    const glm::vec2 q(b[u] / (sign * b[axis]), b[v] / (sign * b[axis]));
+    const glm::vec2 d = q - p;
+    float t0 = 0.0f, t1 = 1.0f;
+    for (int k = 0; k < 2; ++k) {
+        // half >= p[k] + t d[k] >= -half
+        for (const float s : {1.0f, -1.0f}) {
+            const float num = half - s * p[k], den = s * d[k];
+            if (den == 0.0f) {
+                if (num < 0.0f) return false;
+            } else if (den > 0.0f) {
+                t1 = std::min(t1, num / den);
+            } else {
+                t0 = std::max(t0, num / den);
+            }
+        }
+    }
+    return t0 <= t1;
+}
+
+// Nearest distance from the origin to the segment a..b.
+float distanceToSegment(const glm::vec3& a, const glm::vec3& b) {
+    const glm::vec3 d = b - a;
+    const float dd = glm::dot(d, d);
+    const float t = dd > 0.0f ? std::clamp(-glm::dot(a, d) / dd, 0.0f, 1.0f) : 0.0f;
+    return glm::length(a + t * d);
+}
+
+}  // namespace
+
+std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPosition,
+                           float marginRadians) {
+    constexpr std::uint8_t kAll = 0x3F;
+    // Past a tenth of a radian the widening below stops being a bound.
+    constexpr float kMaxAngle = 0.1f;
+    if (!(marginRadians >= 0.0f && marginRadians < kMaxAngle)) return kAll;
+    std::uint8_t faces = 0;
+    const std::size_t n = samples.points.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 a = glm::vec3(samples.points[i]) - lightPosition;
+        glm::vec3 b = a;
+        float pad = samples.pad(samples.points[i].w);
+        if (i + 1 < n && i < samples.farthestNext.size() && samples.farthestNext[i]) {
+            ++i;
+            b = glm::vec3(samples.points[i]) - lightPosition;
+            pad = std::max(pad, samples.pad(samples.points[i].w));
+        }
+        // Every direction within `angle` of the segment's: its pad seen from its nearest
+        // point to the light, and the lookups' margin.
+        const float distance = distanceToSegment(a, b);
+        if (!(distance > pad)) return kAll;
+        const float angle = std::asin(pad / distance) + marginRadians;
+        if (!(angle < kMaxAngle)) return kAll;
+        // Turning a direction by `angle` moves it at most 5 angle in a face's tan units while
+        // they stay within 1.5 (the gradient of y / x over the unit sphere is at most 4.2 there).
+        const float half = 1.0f + 5.0f * angle;
+        for (int face = 0; face < 6; ++face) {
+            if (!(faces & (1u << face)) && segmentMeetsFace(a, b, face, half))
+                faces = std::uint8_t(faces | (1u << face));
+        }
+        if (faces == kAll) break;
+    }
+    return faces;
 }
 
 }  // namespace gnomon::shadow

@@ -20,6 +20,10 @@ struct ViewSamples {
     // World position of each covered sample; w: its view depth (distance along the view
     // axis, what cascade splits are measured in).
     std::vector<glm::vec4> points;
+    // Per point: true when it is a cell's nearest depth and the next point the same cell's
+    // farthest. The view drew pixels of that cell at every depth between (a floor seen at a
+    // grazing angle): the segment joining the two holds them, each grown by its pad.
+    std::vector<bool> farthestNext;
     float nearest = 0.0f, farthest = 0.0f;  // view-depth range of the points (empty: 0, 0)
     // World distance between neighbouring samples at view depth d is padConstant +
     // padPerDepth * d: how far the surface they stand for may reach beyond a sample.
@@ -74,6 +78,14 @@ bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
                    SampleWindow& window, const SampleWindow* limit = nullptr);
 
 struct LightCameraFrame;
+
+// The faces of a point light's cube at `lightPosition` that hold some pixel the view drew
+// (bit f: face f, +X, -X, +Y, -Y, +Z, -Z): a cell's segment between its two depths, grown by
+// its pad and by `marginRadians` more (what a lookup reads around its point: filter taps,
+// offsets), meets the face's pyramid. The other faces need not be drawn: no lookup reads
+// them. All six when a pad or the margin is too wide for the test to stay exact.
+std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPosition,
+                           float marginRadians);
 
 // The share (0..1) of a light camera's map that the samples whose view depth lies in
 // [depthFrom, depthTo] land on: the map split into cells x cells squares (a cube's faces
