@@ -38,22 +38,34 @@ struct ShadowedLight {
 };
 
 // What a light's map sees, for culling what it need not draw: its clip volume (casters in
-// front of the near plane count when the depth is clamped), or its cube's.
+// front of the near plane count when the depth is clamped), or its cube's: within the far
+// sphere and, when only some faces are drawn, inside one of theirs.
 class LightVolume {
 public:
     explicit LightVolume(const ShadowedLight& light)
         : mLight(light),
           mCube(light.frame.kind == shadow::FrameKind::Cube),
-          mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()) {}
+          mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()) {
+        for (int face = 0; mCube && light.frame.faces != 0x3F && face < 6; ++face) {
+            if (light.frame.faces & (1u << face))
+                mFaces[std::size_t(mFaceCount++)] = light.frame.faceClipFromWorld(face);
+        }
+    }
     bool outside(const Aabb& box) const {
-        return mCube ? shadow::outsideCube(box, mLight.frame)
-                     : shadow::outsideClipVolume(box, mClipFromWorld, mLight.depthClamp);
+        if (!mCube) return shadow::outsideClipVolume(box, mClipFromWorld, mLight.depthClamp);
+        if (shadow::outsideCube(box, mLight.frame)) return true;
+        for (int i = 0; i < mFaceCount; ++i) {
+            if (!shadow::outsideClipVolume(box, mFaces[std::size_t(i)], true)) return false;
+        }
+        return mFaceCount > 0;
     }
 
 private:
     const ShadowedLight& mLight;
     bool mCube;
     glm::mat4 mClipFromWorld;
+    std::array<glm::mat4, 6> mFaces{};  // the drawn faces' clip volumes, when not all six
+    int mFaceCount = 0;
 };
 
 // A pass's name for one map in FrameStats::passes: "<what> light N[, cascade K]".
