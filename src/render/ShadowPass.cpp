@@ -394,7 +394,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
             light.depthClamp,
             format,
             options.blendShadows,
-            cube ? light.frame.faces : std::uint8_t(0x3F)};
+            cube ? light.frame.faces : shadow::kAllCubeFaces};
         if (cube) {
             for (int face = 0; face < 6; ++face) {
                 want.clipFromWorld[size_t(face)] = light.frame.faceClipFromWorld(face);

@@ -46,7 +46,8 @@ public:
         : mLight(light),
           mCube(light.frame.kind == shadow::FrameKind::Cube),
           mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()) {
-        for (int face = 0; mCube && light.frame.faces != 0x3F && face < 6; ++face) {
+        for (int face = 0; mCube && light.frame.faces != shadow::kAllCubeFaces && face < 6;
+             ++face) {
             if (light.frame.faces & (1u << face))
                 mFaces[std::size_t(mFaceCount++)] = light.frame.faceClipFromWorld(face);
         }
@@ -145,7 +146,7 @@ private:
         bool depthClamp = false;
         DepthFormat format = DepthFormat::Depth32F;
         BlendShadows blend = BlendShadows::Dithered;
-        std::uint8_t faces = 0x3F;  // cubes: the faces drawn
+        std::uint8_t faces = shadow::kAllCubeFaces;  // cubes: the faces drawn
         bool operator==(const LayerState&) const = default;
         // A map drawn as `this` serves `want`: the same, its faces a superset of want's.
         bool serves(const LayerState& want) const;

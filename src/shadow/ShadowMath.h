@@ -35,7 +35,7 @@ struct LightCameraFrame {
     bool valid = true;  // false: nothing to shadow (empty scene bounds)
     // Cube frames: the faces drawn, bit f for face f; the others hold no pixel the view drew
     // (cubeFacesSeen, ViewSamples.h), and no lookup reads them.
-    std::uint8_t faces = 0x3F;
+    std::uint8_t faces = kAllCubeFaces;
 
     glm::mat4 clipFromWorld() const { return clipFromLight * lightFromWorld; }
     // Cube frames: face 0..5 = +X, -X, +Y, -Y, +Z, -Z, oriented as OpenGL samples cube maps.

@@ -219,10 +219,9 @@ float distanceToSegment(const glm::vec3& a, const glm::vec3& b) {
 
 std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPosition,
                            float marginRadians) {
-    constexpr std::uint8_t kAll = 0x3F;
     // Past a tenth of a radian the widening below stops being a bound.
     constexpr float kMaxAngle = 0.1f;
-    if (!(marginRadians >= 0.0f && marginRadians < kMaxAngle)) return kAll;
+    if (!(marginRadians >= 0.0f && marginRadians < kMaxAngle)) return kAllCubeFaces;
     std::uint8_t faces = 0;
     const std::size_t n = samples.points.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -237,9 +236,9 @@ std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPos
         // Every direction within `angle` of the segment's: its pad seen from its nearest
         // point to the light, and the lookups' margin.
         const float distance = distanceToSegment(a, b);
-        if (!(distance > pad)) return kAll;
+        if (!(distance > pad)) return kAllCubeFaces;
         const float angle = std::asin(pad / distance) + marginRadians;
-        if (!(angle < kMaxAngle)) return kAll;
+        if (!(angle < kMaxAngle)) return kAllCubeFaces;
         // Turning a direction by `angle` moves it at most 5 angle in a face's tan units while
         // they stay within 1.5 (the gradient of y / x over the unit sphere is at most 4.2 there).
         const float half = 1.0f + 5.0f * angle;
@@ -247,7 +246,7 @@ std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPos
             if (!(faces & (1u << face)) && segmentMeetsFace(a, b, face, half))
                 faces = std::uint8_t(faces | (1u << face));
         }
-        if (faces == kAll) break;
+        if (faces == kAllCubeFaces) break;
     }
     return faces;
 }

@@ -83,7 +83,8 @@ struct LightCameraFrame;
 // (bit f: face f, +X, -X, +Y, -Y, +Z, -Z): a cell's segment between its two depths, grown by
 // its pad and by `marginRadians` more (what a lookup reads around its point: filter taps,
 // offsets), meets the face's pyramid. The other faces need not be drawn: no lookup reads
-// them. All six when a pad or the margin is too wide for the test to stay exact.
+// them. All six when a pad or the margin is too wide for the test to stay a bound.
+constexpr std::uint8_t kAllCubeFaces = 0x3F;  // bits 0 to 5
 std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPosition,
                            float marginRadians);
 

@@ -230,7 +230,7 @@ TEST(PointLights, SixPassFallbackWritesTheSameCubes) {
     ASSERT_EQ(frame.kind, shadow::FrameKind::Cube);
     // All six faces, then three of them (a view that looks up only those): each face drawn
     // holds its caster and plate, each other one stays cleared to the far plane.
-    for (const std::uint8_t faces : {std::uint8_t(0x3F), std::uint8_t(0x25)}) {
+    for (const std::uint8_t faces : {shadow::kAllCubeFaces, std::uint8_t(0x25)}) {
         frame.faces = faces;
         std::vector<render::ShadowedLight> a{{0, light.shadowMapSize, frame, true, 0}}, b = a;
         render::ShadowPass layered(true), sixPasses(false);

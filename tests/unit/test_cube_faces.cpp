@@ -62,9 +62,11 @@ TEST(CubeFacesSeen, ACellsDepthRangeNeedsTheFacesBetweenItsEnds) {
 
 TEST(CubeFacesSeen, PadsOrMarginsTooWideToBoundNeedEveryFace) {
     const glm::vec3 d(5.0f, 0.0f, 0.0f);
-    EXPECT_EQ(shadow::cubeFacesSeen(samplesAt({d}, 6.0f), glm::vec3(0.0f), 0.0f), 0x3F);
-    EXPECT_EQ(shadow::cubeFacesSeen(samplesAt({d}, 1.0f), glm::vec3(0.0f), 0.0f), 0x3F);
-    EXPECT_EQ(shadow::cubeFacesSeen(samplesAt({d}), glm::vec3(0.0f), 0.2f), 0x3F);
+    EXPECT_EQ(shadow::cubeFacesSeen(samplesAt({d}, 6.0f), glm::vec3(0.0f), 0.0f),
+              shadow::kAllCubeFaces);
+    EXPECT_EQ(shadow::cubeFacesSeen(samplesAt({d}, 1.0f), glm::vec3(0.0f), 0.0f),
+              shadow::kAllCubeFaces);
+    EXPECT_EQ(shadow::cubeFacesSeen(samplesAt({d}), glm::vec3(0.0f), 0.2f), shadow::kAllCubeFaces);
 }
 
 TEST(CubeFacesSeen, EveryPointWithinReachOfASampleLiesInAFaceDrawn) {
@@ -89,7 +91,7 @@ TEST(CubeFacesSeen, EveryPointWithinReachOfASampleLiesInAFaceDrawn) {
             pad);
         if (pair) s.farthestNext[0] = true;
         const std::uint8_t faces = shadow::cubeFacesSeen(s, light, margin);
-        skipped += faces != 0x3F;
+        skipped += faces != shadow::kAllCubeFaces;
         for (int k = 0; k < 50; ++k) {
             const glm::vec3 onSegment = pair ? glm::mix(a, b, 0.5f + 0.5f * u(rng)) : a;
             const glm::vec3 padded = onSegment + pad * std::abs(u(rng)) * direction();
