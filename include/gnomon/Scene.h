@@ -14,6 +14,13 @@
 
 namespace gnomon {
 
+// A coarser version of a mesh that its file gives (glTF's MSFT_lod), in the mesh's model
+// space: what shadow passes may draw instead of the mesh (--caster-detail).
+struct MeshLod {
+    std::vector<glm::vec3> positions;
+    std::vector<std::uint32_t> indices;  // triangle list into `positions`
+};
+
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;    // model space
@@ -21,6 +28,7 @@ struct Mesh {
     std::vector<glm::vec3> colours;      // optional per-vertex colour (empty: material colour)
     std::vector<glm::vec2> uvs;          // optional texture coordinates (empty: none)
     std::vector<std::uint32_t> indices;  // triangle list; 3 per triangle
+    std::vector<MeshLod> lods;           // the file's coarser versions, finest first (may be none)
 };
 
 // How a texture repeats outside [0,1] (glTF sampler wrap modes).

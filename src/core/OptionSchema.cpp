@@ -101,7 +101,8 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
     add({.name = "caster-detail",
          .group = "Shadow maps",
          .doc = "share of each mesh's triangles drawn into shadow maps: simplified stand-in "
-                "casters (meshoptimizer), made once per value; 1 = the full meshes",
+                "casters (meshoptimizer), made once per value, or the file's own coarser "
+                "version nearest that share (glTF MSFT_lod); 1 = the full meshes",
          .unit = "of the triangles",
          .kind = K::Real,
          .min = 0.001,

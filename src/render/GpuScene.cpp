@@ -33,6 +33,10 @@ std::uint64_t hashGeometry(const Scene& scene) {
         hashBytes(h, m.colours);
         hashBytes(h, m.uvs);
         hashBytes(h, m.indices);
+        for (const MeshLod& l : m.lods) {
+            hashBytes(h, l.positions);
+            hashBytes(h, l.indices);
+        }
     }
     return h;
 }
@@ -67,6 +71,13 @@ void GpuScene::uploadGeometry(const Scene& scene) {
             vertices.push_back({m.positions[i], m.normals[i],
                                 m.colours.empty() ? glm::vec3(1.0f) : m.colours[i],
                                 m.uvs.empty() ? glm::vec2(0.0f) : m.uvs[i]});
+        }
+        // The file's coarser versions follow the mesh's own vertices, in order, where its
+        // stand-ins index them (shadow/StandIn.h); only their positions are read.
+        for (const MeshLod& lod : m.lods) {
+            for (const glm::vec3& p : lod.positions)
+                vertices.push_back(
+                    {p, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(1.0f), glm::vec2(0.0f)});
         }
         indices.insert(indices.end(), m.indices.begin(), m.indices.end());
     }

@@ -184,9 +184,13 @@ tinygltf::Model parseModel(const std::vector<unsigned char>& bytes, const std::s
 void checkExtensions(Context& cx) {
     const tinygltf::Model& model = cx.model;
     Scene& scene = cx.scene;
-    static const std::set<std::string> kSupported = {
-        "KHR_lights_punctual",   "EXT_mesh_gpu_instancing", "KHR_materials_emissive_strength",
-        "KHR_texture_transform", "KHR_materials_ior",       "KHR_materials_specular"};
+    static const std::set<std::string> kSupported = {"KHR_lights_punctual",
+                                                     "EXT_mesh_gpu_instancing",
+                                                     "KHR_materials_emissive_strength",
+                                                     "KHR_texture_transform",
+                                                     "KHR_materials_ior",
+                                                     "KHR_materials_specular",
+                                                     "MSFT_lod"};
     for (const std::string& e : model.extensionsRequired) {
         if (!kSupported.count(e))
             cx.read.fail("requires extension " + e + ", which gnomon does not support");
@@ -279,7 +283,8 @@ std::vector<glm::mat4> instanceTransforms(const Context& cx, const tinygltf::Nod
 }
 
 // One object per instance and triangle primitive of nodes[n]'s mesh; mirrored instances
-// get the primitive's mesh with its winding flipped.
+// get the primitive's mesh with its winding flipped. The file's coarser versions of the
+// mesh (MSFT_lod) go with each primitive's mesh, for --caster-detail to draw into maps.
 void placeMesh(Context& cx, int n, const tinygltf::Node& node,
                const std::vector<glm::mat4>& instances) {
     const tinygltf::Model& model = cx.model;
@@ -288,11 +293,19 @@ void placeMesh(Context& cx, int n, const tinygltf::Node& node,
                      std::to_string(node.mesh) + "], which does not exist");
     }
     const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
+    const std::vector<int> lods = gltf::lodNodes(cx, n, node);
+    const glm::mat4 fromNode = glm::inverse(localMatrix(node));
     for (const glm::mat4& m : instances) {
         const bool mirrored = glm::determinant(glm::mat3(m)) < 0.0f;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::int64_t gm = gltf::primitiveMesh(cx, node.mesh, int(p), mirrored);
             if (gm < 0) continue;
+            Mesh& made = cx.scene.meshes[std::size_t(gm)];
+            for (std::size_t k = 0; made.lods.size() < lods.size() && k < lods.size(); ++k) {
+                const tinygltf::Node& lod = model.nodes[std::size_t(lods[k])];
+                made.lods.push_back(gltf::primitiveLod(cx, lod.mesh, int(p), mirrored,
+                                                       fromNode * localMatrix(lod)));
+            }
             const int mat = mesh.primitives[p].material;
             if (mat >= int(model.materials.size())) {
                 cx.read.fail("meshes[" + std::to_string(node.mesh) + "].primitives[" +
@@ -447,7 +460,8 @@ Scene loadGltf(const std::string& path) {
 // missing), COLOR_0 and the base colour texture's TEXCOORD_n; materials' base colour factor
 // and texture (with its sampler and KHR_texture_transform), alpha mode and cutoff,
 // roughness, metalness and double-sidedness; mirrored nodes (winding flipped),
-// EXT_mesh_gpu_instancing, KHR_lights_punctual and cameras. Skins and animations are left
+// EXT_mesh_gpu_instancing, MSFT_lod on nodes (coarser versions of their meshes, for stand-in
+// casters), KHR_lights_punctual and cameras. Skins and animations are left
 // at the rest pose. Errors name the file, the element (`accessors[3]`) and what is wrong.
 Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
                const std::string& folderPath) {

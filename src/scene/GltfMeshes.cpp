@@ -1,6 +1,7 @@
 // glTF accessors and mesh primitives: accessor reads with every bound checked, and each
 // triangle primitive (list, strip or fan) into a gnomon mesh with positions, normals (flat
-// ones made where missing), COLOR_0 and the material texture's TEXCOORD_n, all validated.
+// ones made where missing), COLOR_0 and the material texture's TEXCOORD_n, all validated;
+// and the coarser versions MSFT_lod names for a node's primitives.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -309,6 +310,64 @@ std::int64_t primitiveMesh(Context& cx, int meshIndex, int primIndex, bool flipp
     cx.scene.meshes.push_back(std::move(mesh));
     cx.meshOf[key] = std::uint32_t(cx.scene.meshes.size() - 1);
     return std::int64_t(cx.scene.meshes.size() - 1);
+}
+
+// The nodes MSFT_lod names as nodes[n]'s coarser versions, finest first (material LODs
+// change no shadow and are not read). A version whose mesh does not split into the same
+// primitives is left out with a warning: each primitive's version stands in for it alone.
+std::vector<int> lodNodes(Context& cx, int n, const tinygltf::Node& node) {
+    std::vector<int> out;
+    auto it = node.extensions.find("MSFT_lod");
+    if (it == node.extensions.end() || !it->second.IsObject() || !it->second.Has("ids")) return out;
+    const tinygltf::Value& ids = it->second.Get("ids");
+    const std::string where = "nodes[" + std::to_string(n) + "] MSFT_lod";
+    for (std::size_t i = 0; ids.IsArray() && i < ids.ArrayLen(); ++i) {
+        const tinygltf::Value& id = ids.Get(int(i));
+        const int lod = id.IsInt()      ? id.Get<int>()
+                        : id.IsNumber() ? int(id.GetNumberAsDouble())
+                                        : -1;
+        if (lod < 0 || std::size_t(lod) >= cx.model.nodes.size() ||
+            std::size_t(cx.model.nodes[std::size_t(lod)].mesh) >= cx.model.meshes.size()) {
+            cx.read.fail(where + " names nodes[" + std::to_string(lod) +
+                         "], which does not exist or has no mesh");
+        }
+        const std::size_t parts =
+            cx.model.meshes[std::size_t(cx.model.nodes[std::size_t(lod)].mesh)].primitives.size();
+        if (parts != cx.model.meshes[std::size_t(node.mesh)].primitives.size()) {
+            cx.scene.warnings.push_back(where + ": nodes[" + std::to_string(lod) + "]'s mesh has " +
+                                        std::to_string(parts) +
+                                        " primitives, not the node's: left out");
+            continue;
+        }
+        out.push_back(lod);
+    }
+    return out;
+}
+
+MeshLod primitiveLod(Context& cx, int meshIndex, int primIndex, bool flipped,
+                     const glm::mat4& toModel) {
+    const tinygltf::Primitive& p =
+        cx.model.meshes[std::size_t(meshIndex)].primitives[std::size_t(primIndex)];
+    const std::string where =
+        "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(primIndex) + "]";
+    MeshLod lod;
+    if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        p.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+        return lod;
+    }
+    const std::vector<float> pos = readPositions(cx.read, p, where);
+    const std::size_t vertices = pos.size() / 3;
+    const std::vector<std::uint32_t> tri =
+        triangleList(p.mode, vertexOrder(cx.read, p, where, vertices));
+    for (std::size_t v = 0; v < vertices; ++v) {
+        const glm::vec4 m = toModel * glm::vec4(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2], 1.0f);
+        lod.positions.push_back(glm::vec3(m) / m.w);
+    }
+    for (std::size_t t = 0; t + 2 < tri.size(); t += 3) {
+        lod.indices.insert(lod.indices.end(), {tri[t], flipped ? tri[t + 2] : tri[t + 1],
+                                               flipped ? tri[t + 1] : tri[t + 2]});
+    }
+    return lod;
 }
 
 }  // namespace gnomon::gltf

@@ -73,4 +73,16 @@ void readMaterials(Context& cx);
 // `flipped`), made on first use; -1 when it draws no triangles (GltfMeshes.cpp).
 std::int64_t primitiveMesh(Context& cx, int meshIndex, int primIndex, bool flipped);
 
+// The nodes MSFT_lod names as nodes[n]'s coarser versions, finest first (material LODs
+// change no shadow and are not read). A version whose mesh does not split into the same
+// primitives is left out with a warning: each primitive's version stands in for it alone
+// (GltfMeshes.cpp).
+std::vector<int> lodNodes(Context& cx, int n, const tinygltf::Node& node);
+
+// The positions and triangles of primitive `primIndex` of meshes[meshIndex] as a coarser
+// version of another mesh (glTF's MSFT_lod), taken into that mesh's model space by `toModel`
+// (winding reversed when `flipped`); empty when it draws no triangles (GltfMeshes.cpp).
+MeshLod primitiveLod(Context& cx, int meshIndex, int primIndex, bool flipped,
+                     const glm::mat4& toModel);
+
 }  // namespace gnomon::gltf

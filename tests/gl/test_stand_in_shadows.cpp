@@ -85,6 +85,29 @@ TEST(StandInCasters, TenthOfTheTrianglesCastsTheSameShadow) {
     EXPECT_LT(std::abs(darkA - darkB), darkA / 20) << darkA << " dark pixels against " << darkB;
 }
 
+// A mesh whose file gives a coarser version (MSFT_lod) draws that one at a detail near its
+// share: its triangles are the pass's, and the shadow stays where it was.
+TEST(StandInCasters, TheFilesOwnVersionCastsTheShadow) {
+    Scene s = sphereOverFloor();
+    s.lights[0].direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+    const Mesh lod = mesh::sphere("sphere, coarse", {0.0f, 1.5f, 0.0f}, 1.0f, 32, 16);
+    s.meshes[1].lods.push_back({lod.positions, lod.indices});
+    RenderOptions coarse = s.options;
+    coarse.shadow.casterDetail = 0.05f;
+    const Image b = sharedRenderer().render(s, coarse);
+    EXPECT_EQ(sharedRenderer().lastFrameStats().shadowTriangles, lod.indices.size() / 3);
+    const Image a = sharedRenderer().render(s, s.options);
+    long darkA = 0, darkB = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = kSize / 2 + kSize / 6; x < kSize; ++x) {
+            darkA += luminance(a.at(x, y)) < 200;
+            darkB += luminance(b.at(x, y)) < 200;
+        }
+    }
+    ASSERT_GT(darkA, 100);
+    EXPECT_LT(std::abs(darkA - darkB), darkA / 20) << darkA << " dark pixels against " << darkB;
+}
+
 // A bowl (the lower half of a finely tessellated sphere, its inside facing up) under a sun:
 // seen from inside, a coarser stand-in's flat triangles cut across the curve in front of the
 // surface they stand for and would shadow it where the full bowl does not. Its own lookups

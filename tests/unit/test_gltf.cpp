@@ -123,6 +123,26 @@ TEST(Gltf, OurTriangleLoads) {
     EXPECT_EQ(s.meshes[0].normals[0], glm::vec3(0, 0, 1));  // CCW in the xy plane
 }
 
+// MSFT_lod: the node's mesh keeps the coarser versions its node names, finest first, in
+// the mesh's model space; the extension is read, not ignored.
+TEST(Gltf, MsftLodVersionsGoWithTheirMesh) {
+    const Scene s = loadGltf(corpus("lod_spheres.gltf"));
+    ASSERT_EQ(s.objects.size(), 1u);  // the versions' nodes are not placed themselves
+    const Mesh& m = s.meshes[s.objects[0].mesh];
+    EXPECT_EQ(m.indices.size() / 3, 48u * 46u);
+    ASSERT_EQ(m.lods.size(), 2u);
+    EXPECT_EQ(m.lods[0].indices.size() / 3, 16u * 14u);
+    EXPECT_EQ(m.lods[1].indices.size() / 3, 8u * 6u);
+    for (const MeshLod& lod : m.lods) {
+        for (const glm::vec3& p : lod.positions)
+            EXPECT_NEAR(glm::length(p - glm::vec3(0.0f, 1.0f, 0.0f)), 0.5f, 1e-5f);
+        for (std::uint32_t i : lod.indices)
+            ASSERT_LT(i, lod.positions.size());
+    }
+    for (const std::string& w : s.warnings)
+        EXPECT_EQ(w.find("MSFT_lod"), std::string::npos) << w;
+}
+
 TEST(Gltf, TexturedMaskedQuadKeepsItsTextureAlphaAndTransform) {
     const Scene s = loadGltf(corpus("textured_quad.gltf"));
     EXPECT_TRUE(s.validate().empty());

@@ -1,6 +1,6 @@
 // Stand-in casters (src/shadow/StandIn.cpp): meshoptimizer's simplification of a mesh for
 // shadow passes keeps the share of triangles asked for, indexes the mesh's own vertices, and
-// keeps the caster's extent.
+// keeps the caster's extent; a file's own coarser versions are taken instead where given.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,6 +62,34 @@ TEST(StandIn, KeepsTheShareAskedForOnTheMeshesOwnVerticesAndItsExtent) {
             EXPECT_GT(hi[a], 0.85f) << "detail " << detail << ", axis " << a;
         }
     }
+}
+
+// A file's coarser versions (MSFT_lod): the one nearest the detail asked for stands in,
+// indexed past the mesh's own vertices (and the finer versions'); its error is how far its
+// vertices stray from the mesh's surface.
+TEST(StandIn, TheFilesVersionNearestTheDetailStandsIn) {
+    Mesh sphere = uvSphere(64, 32);
+    // Radius 1.1: every vertex 0.1 off the mesh's surface. Radius 1 with 8 x 4: on it.
+    for (const Mesh& lod : {mesh::sphere("medium", glm::vec3(0.0f), 1.1f, 16, 8),
+                            mesh::sphere("low", glm::vec3(0.0f), 1.0f, 8, 4)}) {
+        sphere.lods.push_back({lod.positions, lod.indices});
+    }
+    const std::size_t full = sphere.indices.size() / 3;
+    const double medium = double(sphere.lods[0].indices.size() / 3) / double(full);
+    const shadow::StandIn a = shadow::makeStandIn(sphere, float(medium));
+    ASSERT_EQ(a.indices.size(), sphere.lods[0].indices.size());
+    EXPECT_EQ(a.indices[0], sphere.lods[0].indices[0] + sphere.positions.size());
+    EXPECT_NEAR(a.error, 0.1f, 0.01f);
+    const shadow::StandIn b = shadow::makeStandIn(sphere, 0.001f);
+    ASSERT_EQ(b.indices.size(), sphere.lods[1].indices.size());
+    const std::size_t past = sphere.positions.size() + sphere.lods[0].positions.size();
+    for (std::uint32_t i : b.indices) {
+        ASSERT_GE(i, past);
+        ASSERT_LT(i, past + sphere.lods[1].positions.size());
+    }
+    EXPECT_LT(b.error, 1e-3f);
+    // Nearer the full mesh than any version: the mesh itself.
+    EXPECT_EQ(shadow::makeStandIn(sphere, 0.9f).indices, sphere.indices);
 }
 
 }  // namespace

@@ -96,6 +96,57 @@ def textured_quad(image_bytes):
     }
 
 
+def sphere(segments, rings, radius, centre):
+    """A UV sphere's positions, normals and uint16 indices (outward, counter-clockwise)."""
+    import math
+    pos, nrm, idx = [], [], []
+    for r in range(rings + 1):
+        phi = math.pi * r / rings
+        for s in range(segments + 1):
+            theta = 2 * math.pi * s / segments
+            n = (math.sin(phi) * math.cos(theta), math.cos(phi), math.sin(phi) * math.sin(theta))
+            nrm.append(n)
+            pos.append(tuple(centre[k] + radius * n[k] for k in range(3)))
+    for r in range(rings):
+        for s in range(segments):
+            a, b = r * (segments + 1) + s, (r + 1) * (segments + 1) + s
+            if r > 0:
+                idx += [a, a + 1, b]
+            if r < rings - 1:
+                idx += [a + 1, b + 1, b]
+    return pos, nrm, idx
+
+
+def lod_spheres():
+    """A sphere of radius 0.5 resting on nothing at (0, 1, 0) whose node names two coarser
+    spheres as its MSFT_lod versions (nodes 1 and 2, outside the scene's node list)."""
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+           "extensionsUsed": ["MSFT_lod"], "meshes": [], "accessors": [], "bufferViews": []}
+    raw = b""
+    for segments, rings in ((48, 24), (16, 8), (8, 4)):
+        pos, nrm, idx = sphere(segments, rings, 0.5, (0.0, 1.0, 0.0))
+        first = len(doc["accessors"])
+        for data, kind, fmt, comp in ((pos, "VEC3", "<3f", 5126), (nrm, "VEC3", "<3f", 5126),
+                                      (idx, "SCALAR", "<H", 5123)):
+            blob = b"".join(struct.pack(fmt, *(v if isinstance(v, tuple) else (v,))) for v in data)
+            blob += b"\0" * (-len(blob) % 4)
+            doc["bufferViews"].append({"buffer": 0, "byteOffset": len(raw), "byteLength": len(blob)})
+            accessor = {"bufferView": len(doc["bufferViews"]) - 1, "componentType": comp,
+                        "count": len(data), "type": kind}
+            if data is pos:
+                accessor["min"] = [min(p[k] for p in pos) for k in range(3)]
+                accessor["max"] = [max(p[k] for p in pos) for k in range(3)]
+            doc["accessors"].append(accessor)
+            raw += blob
+        doc["meshes"].append({"primitives": [{"attributes": {"POSITION": first, "NORMAL": first + 1},
+                                              "indices": first + 2}]})
+    doc["buffers"] = [{"byteLength": len(raw), "uri": data_uri(raw)}]
+    doc["nodes"] = [{"name": "sphere", "mesh": 0, "extensions": {"MSFT_lod": {"ids": [1, 2]}},
+                     "extras": {"MSFT_screencoverage": [0.5, 0.2, 0.01]}},
+                    {"name": "sphere medium", "mesh": 1}, {"name": "sphere low", "mesh": 2}]
+    return doc
+
+
 def write(name, doc):
     with open(os.path.join(HERE, name), "w") as f:
         f.write(doc if isinstance(doc, str) else json.dumps(doc, indent=1))
@@ -136,6 +187,7 @@ def main():
     write("textured_quad.gltf",
           textured_quad(png(2, 1, [bytes([255, 0, 0, 255, 0, 255, 0, 0])])))
     write("bad_image.gltf", textured_quad(b"\x89PNG\r\n\x1a\nnot really a png"))
+    write("lod_spheres.gltf", lod_spheres())
     with open(os.path.join(HERE, "truncated.glb"), "wb") as f:
         f.write(b"glTF" + struct.pack("<II", 2, 1000) + b"\x10\0\0\0JSON{")
 
