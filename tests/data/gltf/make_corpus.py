@@ -188,6 +188,9 @@ def main():
           textured_quad(png(2, 1, [bytes([255, 0, 0, 255, 0, 255, 0, 0])])))
     write("bad_image.gltf", textured_quad(b"\x89PNG\r\n\x1a\nnot really a png"))
     write("lod_spheres.gltf", lod_spheres())
+    d = triangle()
+    d["nodes"][0]["extensions"] = {"MSFT_lod": {"ids": [7]}}
+    write("lod_missing_node.gltf", d)
     with open(os.path.join(HERE, "truncated.glb"), "wb") as f:
         f.write(b"glTF" + struct.pack("<II", 2, 1000) + b"\x10\0\0\0JSON{")
 
