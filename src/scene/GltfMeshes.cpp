@@ -361,7 +361,14 @@ MeshLod primitiveLod(Context& cx, int meshIndex, int primIndex, bool flipped,
         triangleList(p.mode, vertexOrder(cx.read, p, where, vertices));
     for (std::size_t v = 0; v < vertices; ++v) {
         const glm::vec4 m = toModel * glm::vec4(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2], 1.0f);
-        lod.positions.push_back(glm::vec3(m) / m.w);
+        const glm::vec3 p3 = glm::vec3(m) / m.w;
+        if (!std::isfinite(p3.x) || !std::isfinite(p3.y) || !std::isfinite(p3.z)) {
+            // A node scaled to nothing has no model space to take the version into.
+            cx.scene.warnings.push_back(where + ": an MSFT_lod version that its node's " +
+                                        "transform cannot take into the mesh's space: left out");
+            return {};
+        }
+        lod.positions.push_back(p3);
     }
     for (std::size_t t = 0; t + 2 < tri.size(); t += 3) {
         lod.indices.insert(lod.indices.end(), {tri[t], flipped ? tri[t + 2] : tri[t + 1],
