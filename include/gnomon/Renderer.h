@@ -66,7 +66,7 @@ struct MapUsage {
     int mapSize = 0;   // texels per side (per face of a cube)
     float share = 0.0f;
     bool cube = false;  // a point light's six faces, not one map
-    int faces = 1;      // a cube's faces drawn: those some pixel of the view looks up
+    int faces = 1;      // a cube's faces the view looks up (and draws; a kept cube may hold more)
 };
 
 // Per pixel and light, what the main pass's shadow lookups returned (gnomon score): values at

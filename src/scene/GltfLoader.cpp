@@ -294,7 +294,7 @@ void placeMesh(Context& cx, int n, const tinygltf::Node& node,
     }
     const tinygltf::Mesh& mesh = model.meshes[std::size_t(node.mesh)];
     const std::vector<int> lods = gltf::lodNodes(cx, n, node);
-    const glm::mat4 fromNode = glm::inverse(localMatrix(node));
+    const glm::mat4 fromNode = lods.empty() ? glm::mat4(1.0f) : glm::inverse(localMatrix(node));
     for (const glm::mat4& m : instances) {
         const bool mirrored = glm::determinant(glm::mat3(m)) < 0.0f;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {

@@ -110,6 +110,8 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
 // The frame at the size the light's map is drawn at, which `size` receives:
 // shadowMapSizeOf(light, options), except that a light naming no size (and no --map-size) that
 // the fit draws as a cube gets kDefaultCubeFaceSize per face (Scene.h), fitted again at it.
+// With the view's samples (scene.samples), a cube's `faces` are those the view looks up
+// (cubeFacesSeen, widened by cubeLookupReachTexels).
 LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& options,
                                        const Camera& view, const FitScene& scene, int& size,
                                        HeldExtent* held = nullptr);
