@@ -23,7 +23,7 @@ out vec3 vColour;
 #endif
 
 void main() {
-    ObjectData o = objects[aObject];
+    ObjectData o = objectAt(aObject);
 #ifdef VIEW_CAMERA
     vec4 ws, vs;
     gl_Position = viewClip(o, msPosition, ws, vs);

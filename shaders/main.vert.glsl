@@ -35,7 +35,7 @@ out VertexOut {
 } vOut;
 
 void main() {
-    ObjectData o = objects[aObject];
+    ObjectData o = objectAt(aObject);
     vec4 wsPosition, vsPosition;  // vsPosition: unused here, the depth pass's chain
     gl_Position = viewClip(o, msPosition, wsPosition, vsPosition);
     vec3 wsNormal = normalize(mat3(o.worldFromModelNormal) * msNormal);

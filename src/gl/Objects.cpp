@@ -65,6 +65,14 @@ Texture Texture::layersView(const std::string& label, const Texture& source) {
     return Texture(n, source.format(), source.width(), source.height(), source.layers());
 }
 
+Texture Texture::bufferView(const std::string& label, const Buffer& buffer, GLenum format) {
+    GLuint n = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &n);
+    glTextureBuffer(n, format, buffer.id());
+    setLabel(GL_TEXTURE, n, label);
+    return Texture(n, format, 0, 0, 0);
+}
+
 Texture Texture::view2D(const std::string& label, const Texture& source, GLenum viewFormat) {
     GLuint n = 0;
     glGenTextures(1, &n);  // a view needs a name that has no texture object yet

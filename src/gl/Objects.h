@@ -74,6 +74,9 @@ public:
     // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
     // storage.
     static Texture layersView(const std::string& label, const Texture& source);
+    // A buffer texture over the whole of `buffer`, its bytes read as texels of `format`
+    // (texelFetch on a samplerBuffer).
+    static Texture bufferView(const std::string& label, const Buffer& buffer, GLenum format);
     // A 2D view of `source`'s first level in a compatible format (SRGB8_ALPHA8 as RGBA8:
     // the stored bytes, undecoded), sharing its storage; NEAREST filtering.
     static Texture view2D(const std::string& label, const Texture& source, GLenum viewFormat);

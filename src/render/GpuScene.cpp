@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 #include <string_view>
 #include <tuple>
 
+#include "gnomon/Error.h"
 #include "scene/MeshTopology.h"
 #include "scene/SceneUtil.h"
 #include "shadow/StandIn.h"
@@ -248,8 +250,10 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     if (uploadDrawCommands()) changed = true;
     if (dataChanged) {
         if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
+            checkObjectTexels(n);
             mObjects = gl::Buffer("scene objects", n * sizeof(GpaObject), mObjectData.data(),
                                   GL_DYNAMIC_STORAGE_BIT);
+            mObjectTexels = gl::Texture::bufferView("scene objects", mObjects, GL_RGBA32F);
         } else {
             mObjects.update(0, n * sizeof(GpaObject), mObjectData.data());
         }
@@ -259,6 +263,20 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     mSyncedRevision = scene.revision.value();
     mSyncedSeconds = seconds;
     return changed;
+}
+
+// A buffer texture holds at most GL_MAX_TEXTURE_BUFFER_SIZE texels (65 536 at least).
+void GpuScene::checkObjectTexels(std::size_t objects) {
+    GLint most = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+    const std::size_t texels = objects * (sizeof(GpaObject) / sizeof(glm::vec4));
+    if (texels > std::size_t(most)) {
+        throw Error(ErrorKind::Gl, "the scene has " + std::to_string(objects) +
+                                       " objects: their records need " + std::to_string(texels) +
+                                       " texels of a buffer texture, more than this driver's " +
+                                       std::to_string(most) +
+                                       "; merge objects that share a material");
+    }
 }
 
 // The object-index attribute (sized to the objects) and the draw commands in item order,
@@ -309,9 +327,14 @@ bool GpuScene::uploadDrawCommands() {
     return false;
 }
 
+// The vertex stages read the object records as texels of a buffer texture, not from a storage
+// buffer: llvmpipe (Mesa 22.3) reads a storage buffer one lane at a time behind a branch per
+// lane, where a texel fetch gathers. On the Stanford Dragon (871k triangles, 256^2) that cost
+// a fifth of the main pass, whose vertex stage reads a record per vertex
+// (docs/performance.md).
 void GpuScene::bind() const {
     glBindVertexArray(mVao.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mObjects.id());
+    glBindTextureUnit(kObjectTextureUnit, mObjectTexels.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
 }
 

@@ -1,6 +1,7 @@
 // The GPU copy of a Scene: all meshes in one vertex and one index buffer (uploaded once per
-// distinct geometry), the textures (uploaded once per distinct set), and one std430 record
-// per object (re-uploaded only when transforms or materials change, e.g. animation). Items
+// distinct geometry), the textures (uploaded once per distinct set), and one record per
+// object (re-uploaded only when transforms or materials change, e.g. animation; read by the
+// vertex stages as texels of a buffer texture). Items
 // are ordered opaque, then masked, then blended, and by texture and sidedness within each,
 // so passes bind each texture once and draw each run of like items with one
 // glMultiDrawElementsIndirect from a static command buffer (one command per item; the
@@ -29,6 +30,8 @@ struct GpaObject {
     glm::vec4 uvRow0;    // texture coordinates used: (dot(uvRow0.xyz, (u, v, 1)),
     glm::vec4 uvRow1;    //                            dot(uvRow1.xyz, (u, v, 1)))
 };
+// scene_data.glsl reads a record as kObjectTexels RGBA32F texels.
+static_assert(sizeof(GpaObject) == 13 * sizeof(glm::vec4), "scene_data.glsl's kObjectTexels");
 
 struct DrawItem {
     std::uint32_t object = 0;
@@ -76,8 +79,10 @@ public:
     // differ from the last call's; simplifies the meshes only when the geometry or
     // `casterDetail` changed.
     bool sync(const Scene& scene, double seconds, float casterDetail = 1.0f);
-    // Binds the vertex array, the object buffer (binding 0) and the draw commands.
+    // Binds the vertex array, the object records (texture unit kObjectTextureUnit, the
+    // uObjects buffer texture of scene_data.glsl) and the draw commands.
     void bind() const;
+    static constexpr GLuint kObjectTextureUnit = 15;
     // Issues one draw (`instances` copies: 1, or one per cube face a point light draws).
     void draw(const DrawItem& item, GLsizei instances = 1) const;
     // Draws items [first, first + count) in one call (each 1 to kMaxInstances times), their
@@ -119,6 +124,7 @@ private:
     bool makeStandIns(const Scene& scene, float casterDetail);
     void uploadTextures(const Scene& scene);
     bool uploadDrawCommands();
+    static void checkObjectTexels(std::size_t objects);
 
     std::uint64_t mGeometryHash = 0, mTextureHash = 0;
     bool mHaveTextures = false;
@@ -134,7 +140,8 @@ private:
         GLuint baseInstance;  // the object index, read through the instanced attribute
     };
     gl::Buffer mVertices, mIndices, mObjects;
-    gl::Buffer mObjectIds;  // 0..n-1: attribute 4, one per instance
+    gl::Texture mObjectTexels;  // mObjects as RGBA32F texels, 13 per record
+    gl::Buffer mObjectIds;      // 0..n-1: attribute 4, one per instance
     // One command per item, four times: drawing 1 instance, 6, then their stand-ins' 1 and 6.
     gl::Buffer mCommands;
     std::vector<DrawCommand> mCommandData, mCommandScratch;
