@@ -48,8 +48,8 @@ float evsmVisibility(vec4 m, float depth) {
 // the value common in implementations, 3e-5, leaks at contacts; with 32-bit float moments
 // 1e-5 misclassified less over scripts/quality-real.py's 29 views (3.65 points against 3.74;
 // the Lantern's base 0.072 % against 0.113 %), and over 270 random views of the broad check
-// (seed 77, suns and spots) 27.9 against 28.1; 3e-6 leaked less still but shadowed more
-// (horse-glmark2, dragon-spot and the spheres past 1.5x PCF's error).
+// (seed 77, suns and spots) 27.9 against 28.1 (both at --light-bleed 0.2); 3e-6 leaked less
+// still but shadowed more (horse-glmark2, dragon-spot and the spheres past 1.5x PCF's error).
 const float kMomentBias = 1e-5;
 float msmVisibility(vec4 moments, float depth) {
     float z = 2.0 * depth - 1.0;

@@ -126,7 +126,7 @@ struct ShadowOptions {
     // measured), and light-bleeding reduction: visibility below this share reads as shadow
     // and the rest is stretched over [0, 1] (0..0.99).
     int momentBlur = 0;
-    float lightBleed = 0.2f;
+    float lightBleed = 0.1f;
     float lightRadius = 0.25f;  // Pcss: emitter radius of spot, point and area lights, world units
     float lightAngle = 1.0f;    // Pcss: angular radius of directional lights, degrees, 0..20
     int mapSize = 0;            // texels per side for every light, 64..8192; 0 = each light's own
