@@ -265,18 +265,20 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     return changed;
 }
 
+std::string objectRecordsOverflow(std::size_t objects, std::size_t maxTexels) {
+    const std::size_t texels = objects * kObjectTexels;
+    if (texels <= maxTexels) return {};
+    return "the scene has " + std::to_string(objects) + " objects: their records need " +
+           std::to_string(texels) + " texels of a buffer texture, more than this driver's " +
+           std::to_string(maxTexels) + "; merge objects that share a material";
+}
+
 // A buffer texture holds at most GL_MAX_TEXTURE_BUFFER_SIZE texels (65 536 at least).
 void GpuScene::checkObjectTexels(std::size_t objects) {
     GLint most = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
-    const std::size_t texels = objects * (sizeof(GpaObject) / sizeof(glm::vec4));
-    if (texels > std::size_t(most)) {
-        throw Error(ErrorKind::Gl, "the scene has " + std::to_string(objects) +
-                                       " objects: their records need " + std::to_string(texels) +
-                                       " texels of a buffer texture, more than this driver's " +
-                                       std::to_string(most) +
-                                       "; merge objects that share a material");
-    }
+    const std::string overflow = objectRecordsOverflow(objects, std::size_t(std::max(most, 0)));
+    if (!overflow.empty()) throw Error(ErrorKind::Gl, overflow);
 }
 
 // The object-index attribute (sized to the objects) and the draw commands in item order,

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "core/Aabb.h"
@@ -31,7 +32,12 @@ struct GpaObject {
     glm::vec4 uvRow1;    //                            dot(uvRow1.xyz, (u, v, 1)))
 };
 // scene_data.glsl reads a record as kObjectTexels RGBA32F texels.
-static_assert(sizeof(GpaObject) == 13 * sizeof(glm::vec4), "scene_data.glsl's kObjectTexels");
+constexpr std::size_t kObjectTexels = 13;
+static_assert(sizeof(GpaObject) == kObjectTexels * sizeof(glm::vec4),
+              "scene_data.glsl's kObjectTexels");
+// Why `objects` records do not fit a buffer texture of `maxTexels` texels, in one sentence
+// naming both and what to do; empty when they fit.
+std::string objectRecordsOverflow(std::size_t objects, std::size_t maxTexels);
 
 struct DrawItem {
     std::uint32_t object = 0;

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include "GeometryShadows.h"
 #include "GlTest.h"
+#include "render/GpuScene.h"
 #include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
@@ -187,6 +188,22 @@ TEST(Renderer, ShadowsOffRendersNoShadowPass) {
     EXPECT_EQ(sharedRenderer().lastFrameStats().shadowPasses, 0);
     EXPECT_EQ(sharedRenderer().lastFrameStats().shadowMapBytes, 0u);
     EXPECT_TRUE(sharedRenderer().shadowMaps().empty());
+}
+
+// Object records reach the vertex stages as texels of a buffer texture (render::GpuScene): a
+// scene whose records outgrow the driver's limit is refused with one sentence naming the
+// counts, not a GL error or a wrong image. The limit itself (2^27 texels on llvmpipe) is out
+// of a test's reach, so the sentence is checked against a small one.
+TEST(Renderer, ObjectRecordsBeyondTheBufferTextureLimitAreNamed) {
+    EXPECT_EQ(render::objectRecordsOverflow(10, 130), "");
+    const std::string why = render::objectRecordsOverflow(11, 130);
+    EXPECT_NE(why.find("11 objects"), std::string::npos) << why;
+    EXPECT_NE(why.find("143 texels"), std::string::npos) << why;
+    EXPECT_NE(why.find("130"), std::string::npos) << why;
+    (void)sharedRenderer().glInfo();  // makes its context current
+    GLint most = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+    EXPECT_GE(most, 65536) << "GL 4.5's minimum";
 }
 
 }  // namespace
