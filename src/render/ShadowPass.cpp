@@ -349,7 +349,7 @@ void ShadowPass::drawMap(const GpuScene& scene, const ShadowedLight& light,
         std::array<GLint, 6> faces{};
         GLsizei count = 0;
         for (int face = 0; face < 6; ++face) {
-            if (light.frame.faces & (1u << face)) faces[size_t(count++)] = face;
+            if (light.frame.drawsFace(face)) faces[size_t(count++)] = face;
         }
         if (mLayered) {
             glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());

@@ -48,7 +48,7 @@ public:
           mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()) {
         for (int face = 0; mCube && light.frame.faces != shadow::kAllCubeFaces && face < 6;
              ++face) {
-            if (light.frame.faces & (1u << face))
+            if (light.frame.drawsFace(face))
                 mFaces[std::size_t(mFaceCount++)] = light.frame.faceClipFromWorld(face);
         }
     }

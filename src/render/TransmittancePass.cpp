@@ -97,7 +97,7 @@ void TransmittancePass::drawLight(const GpuScene& scene, const ShadowedLight& li
         glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
         glDisable(GL_SCISSOR_TEST);
         // A face no pixel of the view looks up (ShadowMath.h: faces) is left cleared.
-        if (mVisible.empty() || (cube && !(light.frame.faces & (1u << face)))) continue;
+        if (mVisible.empty() || (cube && !light.frame.drawsFace(face))) continue;
         const glm::mat4 m =
             cube ? light.frame.faceClipFromWorld(face) : light.frame.clipFromWorld();
         drawDepthRuns(

@@ -36,6 +36,7 @@ struct LightCameraFrame {
     // Cube frames: the faces drawn, bit f for face f; the others hold no pixel the view drew
     // (cubeFacesSeen, ViewSamples.h), and no lookup reads them.
     std::uint8_t faces = kAllCubeFaces;
+    bool drawsFace(int face) const { return (faces >> face) & 1u; }
 
     glm::mat4 clipFromWorld() const { return clipFromLight * lightFromWorld; }
     // Cube frames: face 0..5 = +X, -X, +Y, -Y, +Z, -Z, oriented as OpenGL samples cube maps.
