@@ -60,6 +60,21 @@ void printRow(const ShadowScore& s) {
                 100.0 * s.falseShadow, 100.0 * s.leak, 100.0 * s.falseShadowOutsideBand,
                 100.0 * s.leakOutsideBand, s.meanAbsError);
 }
+// The errors away from edges by cause (ErrorCauses), when there are any.
+void printCauses(const ScoreResult& r) {
+    const ErrorCauses& k = r.causes;
+    const long falseShadow = k.falseShadowGrazing + k.falseShadowOther;
+    const long leak = k.leakGrazing + k.leakContact + k.leakOther;
+    if (falseShadow + leak == 0) return;
+    std::printf(
+        "away from edges (pixel x light pairs): false shadow %ld (%ld on surfaces within 5.7 "
+        "degrees of edge-on to the light, %ld other); leak %ld (%ld within 5.7 degrees of "
+        "edge-on, %ld at contacts: occluder within 4 map texels of the surface, %ld other); every "
+        "error "
+        "in errors.csv\n",
+        falseShadow, k.falseShadowGrazing, k.falseShadowOther, leak, k.leakGrazing, k.leakContact,
+        k.leakOther);
+}
 // score(), with an activity line for the render and the tracing (the share of rows traced);
 // Ctrl-C stops the tracing at the next row.
 ScoreResult scoreWithProgress(Renderer& renderer, const Scene& scene, const RenderOptions& options,
@@ -151,13 +166,16 @@ int runScore(const ScoreArgs& args, bool verbose) {
     Renderer renderer(context);
     if (!args.path.empty()) return runScorePath(args, scene, options, renderer);
     if (args.errorMaps) throw Error(ErrorKind::InvalidInput, "--error-maps needs --path");
-    const ScoreResult r = scoreWithProgress(renderer, scene, options, args.options);
+    ScoreOptions scoreOptions = args.options;
+    scoreOptions.explain = true;
+    const ScoreResult r = scoreWithProgress(renderer, scene, options, scoreOptions);
 
     OutputSet out(args.outDir, "--out-dir");
     writePng(out.file("render.png"), r.render);
     writePng(out.file("errors.png"), r.errors);
     if (!r.tintErrors.empty()) writePng(out.file("tint-errors.png"), r.tintErrors);
     writeTextFile(out.file("score.json"), toJson(r, scene.name, options));
+    writeTextFile(out.file("errors.csv"), errorCellsCsv(r));
     out.keep();
 
     std::printf("gnomon score: %s, %dx%d, filter %s, %s; reference: %s shadows, traced in %.2f s\n",
@@ -185,13 +203,14 @@ int runScore(const ScoreArgs& args, bool verbose) {
             "them rendered lit\n",
             double(r.contactRange), r.overall.contactPixels, 100.0 * r.overall.contactLeak);
     }
+    printCauses(r);
     if (r.otherSurfacePixels > 0) {
         std::printf(
             "not scored: %ld pixels where the render drew another surface than the "
             "reference sees (or none)\n",
             r.otherSurfacePixels);
     }
-    std::printf("wrote %s/render.png, errors.png, %sscore.json\n", args.outDir.c_str(),
+    std::printf("wrote %s/render.png, errors.png, %sscore.json, errors.csv\n", args.outDir.c_str(),
                 r.tintErrors.empty() ? "" : "tint-errors.png, ");
     if (args.maxError >= 0.0 && r.overall.misclassified > args.maxError) {
         std::fprintf(stderr, "gnomon: misclassified %.4f%% exceeds --max-error %.4f%%\n",

@@ -25,6 +25,9 @@ struct ScoreOptions {
     // within this distance along the shadow ray (ShadowScore::contactLeak). 0: the options'
     // contact-length when contact shadows are on, else not scored.
     float contactRange = 0.0f;
+    // Explain the errors (ScoreResult::errorCells and causes): a few shadow rays per leak,
+    // worth it for one score, not for every trial of a search.
+    bool explain = false;
 };
 
 // Fractions are of the pixels where a light's shadow can show (`pixels`): the light reaches
@@ -61,6 +64,32 @@ struct TintScore {
     double meanColourError = 0.0;
 };
 
+// One pixel x light the render got wrong (ScoreResult::errorCells; gnomon score's
+// errors.csv), with the facts that explain most errors.
+struct ErrorCell {
+    int x = 0, y = 0;          // pixel, rows top first
+    int light = 0;             // index into Scene::lights
+    bool leak = false;         // reference shadowed, rendered lit; else false shadow
+    bool inBand = false;       // inside the aliasing band around a reference shadow boundary
+    float lightCosine = 0.0f;  // cos of the angle between the surface's normal and the light
+    // Leaks: distance along the shadow ray to the first occluder, world units; -1 for false
+    // shadow and where the hard ray is clear (a soft reference's leak).
+    float occluderDistance = -1.0f;
+    float texelWorld = 0.0f;  // world size of the map texel the lookup used
+    float visibility = 0.0f;  // the rendered visibility (0 shadowed .. 1 lit)
+};
+
+// The errors away from shadow edges (outside the aliasing band), pixel x light pairs, by
+// what explains them (ScoreResult::causes; src/truth/ErrorCauses.h gives the thresholds):
+// grazing, the surface within 5.7 degrees of edge-on to the light (the map's resolution
+// limit, under a tenth of the light); at a contact, a leak whose occluder lies within four
+// map texels of the surface's plane (what moves a lookup off its surface reaches past it);
+// other, the rest.
+struct ErrorCauses {
+    long falseShadowGrazing = 0, falseShadowOther = 0;
+    long leakGrazing = 0, leakContact = 0, leakOther = 0;
+};
+
 struct ScoreResult {
     std::vector<ShadowScore> lights;  // one per shadowed light
     ShadowScore overall;
@@ -75,6 +104,10 @@ struct ScoreResult {
     Image render;               // the frame scored
     Image errors;               // the error map (see truth/Metrics.h)
     Image tintErrors;           // --blend-shadows coloured: the transmitted-light error map
+    // With ScoreOptions::explain: every misclassified pixel x light, rows top first, and the
+    // ones away from edges counted by cause.
+    std::vector<ErrorCell> errorCells;
+    ErrorCauses causes;
 };
 
 // score() in two halves, so that the ray tracing can run off the GL thread (gnomon view):
@@ -103,6 +136,12 @@ ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& o
 // The result as JSON (every field, fractions as numbers in [0, 1]).
 std::string toJson(const ScoreResult& result, const std::string& scene,
                    const RenderOptions& options);
+// ScoreResult::errorCells as CSV, a header and one row per cell (gnomon score's errors.csv):
+// x, y, light, kind (leak or false-shadow), in_band (0 or 1), light_cosine,
+// occluder_distance (along the shadow ray, world units, -1: none), occluder_height_texels
+// (its height above the surface's plane, distance x light_cosine, in map texels),
+// texel_world, visibility.
+std::string errorCellsCsv(const ScoreResult& result);
 
 // Temporal stability over a path (gnomon score --path): every frame scored as score() does,
 // and between each frame and the one before it the flicker: the previous frame's view drawn

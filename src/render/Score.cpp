@@ -3,12 +3,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "gnomon/Error.h"
 #include "gnomon/Renderer.h"
 #include "render/ScoreDetail.h"
+#include "truth/ErrorCauses.h"
 #include "truth/Metrics.h"
 
 namespace gnomon {
@@ -104,6 +106,12 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
         truth::scoreTint(same, visibility.visibility, visibility.tint, band, result.softReference);
     result.errors =
         truth::errorMap(same, visibility.visibility, band, result.softReference, result.render);
+    if (scoreOptions.explain) {
+        truth::Explained explained = truth::explainErrors(
+            same, visibility.visibility, visibility.texelWorld, band, result.softReference);
+        result.errorCells = std::move(explained.cells);
+        result.causes = explained.causes;
+    }
     if (options.shadow.blendShadows == BlendShadows::Coloured) {
         result.tintErrors = truth::tintErrorMap(same, visibility.visibility, visibility.tint,
                                                 result.softReference, result.render);
@@ -166,6 +174,14 @@ std::string toJson(const ScoreResult& r, const std::string& scene, const RenderO
     j["lights"] = nlohmann::json::array();
     for (const ShadowScore& s : r.lights)
         j["lights"].push_back(toJson(s, contacts));
+    if (!r.errorCells.empty()) {
+        const ErrorCauses& k = r.causes;
+        j["causes_outside_band"] = {{"false_shadow_grazing", k.falseShadowGrazing},
+                                    {"false_shadow_other", k.falseShadowOther},
+                                    {"leak_grazing", k.leakGrazing},
+                                    {"leak_contact", k.leakContact},
+                                    {"leak_other", k.leakOther}};
+    }
     if (o.shadow.blendShadows == BlendShadows::Coloured) {
         j["tint"] = {{"cells", r.tint.cells},
                      {"cells_outside_band", r.tint.cellsOutsideBand},
@@ -175,6 +191,24 @@ std::string toJson(const ScoreResult& r, const std::string& scene, const RenderO
                      {"mean_colour_error", r.tint.meanColourError}};
     }
     return j.dump(2) + "\n";
+}
+
+std::string errorCellsCsv(const ScoreResult& r) {
+    std::string out =
+        "x,y,light,kind,in_band,light_cosine,occluder_distance,occluder_height_texels,texel_world,"
+        "visibility\n";
+    char line[256];
+    for (const ErrorCell& e : r.errorCells) {
+        const float height = e.occluderDistance >= 0.0f && e.texelWorld > 0.0f
+                                 ? e.occluderDistance * e.lightCosine / e.texelWorld
+                                 : -1.0f;
+        std::snprintf(line, sizeof line, "%d,%d,%d,%s,%d,%.5f,%.6g,%.4g,%.6g,%.4f\n", e.x, e.y,
+                      e.light, e.leak ? "leak" : "false-shadow", e.inBand ? 1 : 0,
+                      double(e.lightCosine), double(e.occluderDistance), double(height),
+                      double(e.texelWorld), double(e.visibility));
+        out += line;
+    }
+    return out;
 }
 
 }  // namespace gnomon
