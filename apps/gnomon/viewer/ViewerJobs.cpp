@@ -22,7 +22,9 @@ void Viewer::startScore() {
     auto scene = std::make_shared<Scene>(mState.scene);
     job->thread = std::thread([raw, scene, options, frame = std::move(frame)]() mutable {
         try {
-            raw->result = scoreFrame(std::move(frame), *scene, options, {}, &raw->progress);
+            ScoreOptions explain;
+            explain.explain = true;  // the causes line of the score panel
+            raw->result = scoreFrame(std::move(frame), *scene, options, explain, &raw->progress);
         } catch (const std::exception& e) {
             raw->error = e.what();
         }

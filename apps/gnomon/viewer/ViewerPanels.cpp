@@ -281,6 +281,18 @@ void Viewer::scorePanel() {
     ImGui::TextWrapped("false shadow %.2f%%   leak %.2f%%", 100.0 * o.falseShadow, 100.0 * o.leak);
     ImGui::TextWrapped("away from edges: false shadow %.2f%%, leak %.2f%%",
                        100.0 * o.falseShadowOutsideBand, 100.0 * o.leakOutsideBand);
+    const ErrorCauses& k = mScore->causes;
+    if (k.falseShadowGrazing + k.falseShadowOther + k.leakGrazing + k.leakContact + k.leakOther >
+        0) {
+        ImGui::TextWrapped(
+            "  of them, pixels: false shadow %ld grazed, %ld other; leak %ld grazed, %ld at "
+            "contacts, %ld other",
+            k.falseShadowGrazing, k.falseShadowOther, k.leakGrazing, k.leakContact, k.leakOther);
+        tooltip(
+            "grazed: the surface within 5.7 degrees of edge-on to the light (the map's "
+            "resolution limit); at contacts: the occluder within 4 map texels of the surface; "
+            "gnomon score writes every error to errors.csv");
+    }
     if (mScore->tint.cells > 0) {
         ImGui::TextWrapped(
             "tinted light (coloured shadows): off by %.2f/255 on average, its colour %.2f/255",
