@@ -69,9 +69,8 @@ void printCauses(const ScoreResult& r) {
     std::printf(
         "away from edges (pixel x light pairs): false shadow %ld (%ld on surfaces within 5.7 "
         "degrees of edge-on to the light, %ld other); leak %ld (%ld within 5.7 degrees of "
-        "edge-on, %ld at contacts: occluder within 4 map texels of the surface, %ld other); every "
-        "error "
-        "in errors.csv\n",
+        "edge-on, %ld at contacts: occluder within 4 map texels of the surface, %ld other); "
+        "every error in errors.csv\n",
         falseShadow, k.falseShadowGrazing, k.falseShadowOther, leak, k.leakGrazing, k.leakContact,
         k.leakOther);
 }

@@ -28,7 +28,8 @@ constexpr float kContactTexels = 4.0f;
 // the hard reference, or with `soft` the soft one), rows top first, explained; `causes`
 // counts the ones outside `band`. `texelWorld` as for aliasingBand. The occluder's distance
 // is found along the hard shadow ray (the centre of a soft light), by bisection on
-// `reference.rays`: where that ray is clear (a soft leak) it is -1, and so is the cause.
+// `reference.rays`; where that ray is clear (a leak of the soft reference's penumbra) it is
+// -1 and the leak counts as other.
 struct Explained {
     std::vector<ErrorCell> cells;
     ErrorCauses causes;

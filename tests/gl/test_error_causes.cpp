@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "GlTest.h"
 
 namespace gnomon::test {
@@ -87,7 +89,7 @@ TEST(ErrorCauses, AcneIsFalseShadowWithNoOccluder) {
 }
 
 // A score without explain lists nothing (a search's trials do not pay for the rays); the CSV
-// has a header and one row per cell.
+// has a header and one row per cell, and score.json the counts.
 TEST(ErrorCauses, OnlyWhenAskedAndCsvHasEveryCell) {
     const Scene s = builtinScene("tutorial-room-thin");
     RenderOptions o = s.options;
@@ -106,6 +108,11 @@ TEST(ErrorCauses, OnlyWhenAskedAndCsvHasEveryCell) {
         EXPECT_EQ(std::count(line.begin(), line.end(), ','), 9) << line;
     }
     EXPECT_EQ(rows, r.errorCells.size());
+    const nlohmann::json j = nlohmann::json::parse(toJson(r, s.name, o));
+    const ErrorCauses& k = r.causes;
+    EXPECT_EQ(j["causes_outside_band"]["leak_other"], k.leakOther);
+    EXPECT_EQ(j["causes_outside_band"]["leak_contact"], k.leakContact);
+    EXPECT_EQ(j["causes_outside_band"]["false_shadow_other"], k.falseShadowOther);
 }
 
 }  // namespace
