@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "truth/Metrics.h"
 #include "truth/ShadowRays.h"
 
 namespace gnomon::truth {
@@ -52,7 +53,7 @@ Explained explainErrors(const Reference& r, const std::vector<float>& visibility
             for (int l = 0; l < r.lights; ++l) {
                 const std::size_t c = r.at(x, y, l);
                 if (!r.applies[c]) continue;
-                const bool refShadowed = soft ? r.soft[c] < 0.5f : r.hard[c] < 0.5f;
+                const bool refShadowed = occludedRef(r, c, soft);
                 const bool shadowed = visibility[c] < 0.5f;
                 if (shadowed == refShadowed) continue;
                 ErrorCell e;

@@ -51,10 +51,6 @@ void distance1D(const float* f, float* d, int n, std::vector<int>& v, std::vecto
     }
 }
 
-bool occludedRef(const Reference& r, std::size_t cell, bool soft) {
-    return soft ? r.soft[cell] < 0.5f : r.hard[cell] < 0.5f;
-}
-
 // Which side of a shadow edge a cell lies on: 1 lit, 0 occluded or facing away from the
 // light (the terminator, where a surface turns into its own attached shadow, is a shadow
 // edge as much as a cast shadow's outline is), -1 neither (no surface, no light there).
@@ -77,6 +73,10 @@ float bandReach(const Reference& r, const std::vector<float>& texelWorld, float 
 }
 
 }  // namespace
+
+bool occludedRef(const Reference& r, std::size_t cell, bool soft) {
+    return soft ? r.soft[cell] < 0.5f : r.hard[cell] < 0.5f;
+}
 
 void extendBandAlongSurfaces(const Scene& scene, const Reference& r,
                              const std::vector<float>& visibility,

@@ -45,6 +45,10 @@ void extendBandAlongSurfaces(const Scene& scene, const Reference& reference,
 Reference onSameSurfaces(const Reference& reference, const std::vector<int>& object,
                          long& excluded);
 
+// Whether the reference shadows `cell` (pixel x light): its hard answer, or with `soft` its
+// soft visibility under one half.
+bool occludedRef(const Reference& reference, std::size_t cell, bool soft);
+
 // `visibility` holds the renderer's visibility per pixel x light (0 shadowed .. 1 lit). Hard
 // metrics threshold it at 0.5; with `soft`, the reference is the soft one (thresholded at
 // 0.5 for the hard metrics).
