@@ -46,6 +46,24 @@ glm::vec4 viewZFromDepth(const glm::mat4& clipFromView) {
     const glm::mat4 m = glm::inverse(clipFromView);
     return {2.0f * m[2][2], m[3][2] - m[2][2], 2.0f * m[2][3], m[3][3] - m[2][3]};
 }
+
+// A draw's lights of each kind (unshadowed, single maps, cubes, cascaded) for its program, or
+// all -1 when its loops stay loops. `ends` and `first`: the draw's range of the light order.
+glm::ivec4 unrolledCounts(glm::ivec4 ends, int first, bool shadows) {
+    const glm::ivec4 counts =
+        shadows ? glm::ivec4(ends.x - first, ends.y - ends.x, ends.z - ends.y, ends.w - ends.z)
+                : glm::ivec4(ends.w - first, 0, 0, 0);
+    const int total = counts.x + counts.y + counts.z + counts.w;
+    return total <= MainPass::kMaxUnrolledLights ? counts : glm::ivec4(-1);
+}
+
+// `name`(BODY, first, LOOKUP, KIND) as BODY(first + i, LOOKUP, KIND) for i below `count`.
+std::string unrolledLoop(const char* name, int count) {
+    std::string d = std::string(name) + "(BODY, first, LOOKUP, KIND)";
+    for (int i = 0; i < count; ++i)
+        d += " BODY((first) + " + std::to_string(i) + ", LOOKUP, KIND)";
+    return d;
+}
 }  // namespace
 
 static_assert(sizeof(GpuLight) == 192, "GpuLight must match LightData in lights.glsl");
@@ -61,7 +79,8 @@ MainPass::MainPass() {
 }
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
-                                     bool visibilityPass, bool material, bool floor) {
+                                     glm::ivec4 counts, bool visibilityPass, bool material,
+                                     bool floor) {
     // Every choice that selects a variant, packed in one number: looking a program up costs
     // no allocation; the defines are spelled out only to build a new one.
     const ShadowOptions& so = options.shadow;
@@ -79,7 +98,10 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(in.transmittance != nullptr) << 31 |
         std::uint64_t(nearestHandCompare(so)) << 32 |
         std::uint64_t(in.singleMapKind + 1) << 33 |  // 0..4: 3 bits
-        std::uint64_t(standInLift(so)) << 36;
+        std::uint64_t(standInLift(so)) << 36 | std::uint64_t(counts.x >= 0) << 37 |
+        std::uint64_t(std::max(counts.x, 0)) << 38 | std::uint64_t(std::max(counts.y, 0)) << 42 |
+        std::uint64_t(std::max(counts.z, 0)) << 46 | std::uint64_t(std::max(counts.w, 0)) << 50;
+    static_assert(kMaxUnrolledLights < 16, "a count must fit the key's four bits");
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
     std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(mMaxLights)};
@@ -156,6 +178,15 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     std::string name;
     for (const auto& d : defines)
         name += d + ";";
+    if (counts.x >= 0) {
+        defines.push_back("UNROLLED_LIGHTS");
+        defines.push_back(unrolledLoop("UNSHADOWED_LIGHTS", counts.x));
+        defines.push_back(unrolledLoop("MAP_LIGHTS", counts.y));
+        defines.push_back(unrolledLoop("CUBE_LIGHTS", counts.z));
+        defines.push_back(unrolledLoop("CASCADED_LIGHTS", counts.w));
+        name += "UNROLLED_LIGHTS " + std::to_string(counts.x) + "," + std::to_string(counts.y) +
+                "," + std::to_string(counts.z) + "," + std::to_string(counts.w) + ";";
+    }
     return mPrograms
         .emplace(key, gl::buildProgram("main [" + name + "]",
                                        {{GL_VERTEX_SHADER, "main.vert.glsl"},
@@ -276,15 +307,16 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
 void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
                          const FrameUniforms& u, bool visibilityPass, bool floor) {
     const MainPassInputs& in = *u.in;
+    const glm::ivec4 counts = unrolledCounts(u.ranges, u.first, options.shadow.enabled);
     bool culling = false, material = false;
     glDisable(GL_CULL_FACE);
-    useProgram(program(options, in, visibilityPass, false, floor), u);
+    useProgram(program(options, in, counts, visibilityPass, false, floor), u);
     GLuint texture = ~0u;
     // Sets the state `item` needs.
     auto setState = [&](const DrawItem& item) {
         if (item.materialPath != material) {
             material = item.materialPath;
-            useProgram(program(options, in, visibilityPass, material && !floor, floor), u);
+            useProgram(program(options, in, counts, visibilityPass, material && !floor, floor), u);
         }
         if (material && scene.textureOf(item) != texture) {
             texture = scene.textureOf(item);

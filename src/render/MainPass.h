@@ -81,6 +81,10 @@ public:
                 const VisibilityTarget* visibility = nullptr, bool floor = false);
     // Lights one frame can hold: the uniform block size limit / the record size, at most 256.
     int maxLights() const { return mMaxLights; }
+    // Draws with at most this many lights get a program whose light loops are written out
+    // (main.frag.glsl, UNROLLED_LIGHTS); more would make a long program to build for each
+    // count of each kind a frame or tile has (15 lights: 12 s to build mixed-lights' tiles).
+    static constexpr int kMaxUnrolledLights = 8;
 
 private:
     // What every program of one frame's draws is given (the shaders' uniform locations).
@@ -97,9 +101,10 @@ private:
     void useProgram(const gl::Program& p, const FrameUniforms& u);
     void drawItems(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
                    bool visibilityPass, bool floor);
-    // `material`: the MATERIAL_PATH variant (textures, masks, blending).
+    // `material`: the MATERIAL_PATH variant (textures, masks, blending). `counts`: the draw's
+    // lights of each kind when its loops are written out per light, or all -1.
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
-                               bool visibilityPass, bool material, bool floor);
+                               glm::ivec4 counts, bool visibilityPass, bool material, bool floor);
     void uploadLights(const std::vector<GpuLight>& lights, const std::vector<std::int32_t>& order);
     bool bindMaps(const MainPassInputs& in, const ShadowOptions& so);
 
