@@ -13,7 +13,13 @@ layout(location = 13) uniform mat4 uClipFromWorld;
 layout(location = 8) uniform vec4 uViewZFromDepth;
 layout(location = 9) uniform float uContactLength;  // world units (= view units)
 
-const int kContactSteps = 8;
+// At most this many steps, written out (the compiler unrolls a constant count): llvmpipe
+// keeps what a loop changes in memory behind its mask, and each step costs a depth read on
+// every pixel. Four steps instead of eight and a start at the fragment itself cut what the
+// march adds to tutorial-room's main pass from 4.2 to 2.6 ms (alternating builds), for
+// the same leak at contacts on tutorial-room, tutorial-room-thin, glmark2's horse, the
+// Lantern on a ground and Sponza (docs/performance.md).
+const int kContactSteps = 4;
 
 // The receiver's own plane in the depth buffer: window depth is affine in screen space (for
 // perspective and orthographic views alike), so its depth at the fragment and its change
@@ -34,20 +40,22 @@ float viewZPerDepth(float d) {
 }
 
 // `visible` (the map's visibility) when nothing in the depth buffer lies between the
-// fragment and the march's length towards the light, 0 when something does; a fragment the
-// map already shadows (visible 0) does not march. The point `p`, its normal `n` and the
-// direction `toLight` are in world space (the view's rotation keeps lengths).
+// fragment and the march's length towards the light, 0 when something does. The point `p`
+// and the direction `toLight` are in world space (the view's rotation keeps lengths).
 // `lightDistance` is the light's distance for point and spot lights (the march stops
 // there), or a large number for directional ones.
-float contactShadow(vec3 p, vec3 n, vec3 toLight, float lightDistance, float visible) {
+float contactShadow(vec3 p, vec3 toLight, float lightDistance, float visible) {
     float len = min(uContactLength, 0.95 * lightDistance);
     if (!(len > 0.0)) return visible;
-    // Steps start off the surface and are staggered per pixel (interleaved gradient noise,
-    // Jimenez 2014), so a short march leaves no bands.
+    // Steps are staggered per pixel (interleaved gradient noise, Jimenez 2014), so a short
+    // march leaves no bands.
     float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    vec3 start = p + n * (0.02 * len);
-    vec4 clipStart = uClipFromWorld * vec4(start, 1.0);
-    vec4 clipEnd = clipStart + uClipFromWorld * vec4(toLight * len, 0.0);
+    // The march starts at the fragment, whose clip coordinates its window position and
+    // 1 / w give without a matrix product, and ends `len` towards the light.
+    vec2 size = vec2(textureSize(uViewDepth, 0));
+    float w0 = 1.0 / gl_FragCoord.w;
+    vec4 clipStart = vec4((vec3(gl_FragCoord.xy / size, gl_FragCoord.z) * 2.0 - 1.0) * w0, w0);
+    vec4 clipEnd = uClipFromWorld * vec4(p + toLight * len, 1.0);
     // A march towards the camera stops before the camera's plane, where it would not project.
     float wMin = 0.1 * clipStart.w;
     if (clipEnd.w < wMin) {
@@ -57,13 +65,11 @@ float contactShadow(vec3 p, vec3 n, vec3 toLight, float lightDistance, float vis
     }
     // A segment stays a segment on screen, with window depth linear along it: the march
     // steps evenly in pixels and window depth, with no division per step.
-    vec2 size = vec2(textureSize(uViewDepth, 0));
-    vec3 from = vec3(clipStart.xy / clipStart.w * 0.5 + 0.5, clipStart.z / clipStart.w * 0.5 + 0.5);
-    vec3 to = vec3(clipEnd.xy / clipEnd.w * 0.5 + 0.5, clipEnd.z / clipEnd.w * 0.5 + 0.5);
-    from.xy *= size;
-    to.xy *= size;
+    vec3 from = gl_FragCoord.xyz;
+    float toW = 1.0 / clipEnd.w;
+    vec3 to = vec3((clipEnd.xy * toW * 0.5 + 0.5) * size, clipEnd.z * toW * 0.5 + 0.5);
     // One step per pixel crossed, up to kContactSteps: more would read the same pixels again,
-    // so a short march (a contact is a few pixels wide) costs a step or two.
+    // so a short march (a contact is a few pixels wide) reads a pixel or two.
     int steps = int(clamp(ceil(max(abs(to.x - from.x), abs(to.y - from.y))), 1.0,
                           float(kContactSteps)));
     // The tolerances in window depth at the fragment. A surface nearer the camera than the
@@ -77,11 +83,13 @@ float contactShadow(vec3 p, vec3 n, vec3 toLight, float lightDistance, float vis
     float perDepth = viewZPerDepth(gl_FragCoord.z);
     float tolerance = 0.04 * len / perDepth + exp2(-22.0);
     float thickness = 0.5 * len / perDepth;
-    // The march ends at its first occluder; a block of pixels leaves the loop once all of
-    // its pixels have (llvmpipe skips a loop only when no pixel of the block is in it).
-    for (int i = 0; i < steps && visible > 0.0; ++i) {
-        vec3 q = mix(from, to, (float(i) + jitter) / float(steps));
-        if (any(lessThan(q.xy, vec2(0.0))) || any(greaterThanEqual(q.xy, size))) break;
+    float stepShare = 1.0 / float(steps);
+    for (int i = 0; i < kContactSteps; ++i) {
+        vec3 q = mix(from, to, (float(i) + jitter) * stepShare);
+        // A step past the march's own count or off the screen reads a clamped pixel and
+        // counts for nothing (a segment that leaves the screen does not come back).
+        bool counts = i < steps && all(greaterThanEqual(q.xy, vec2(0.0))) &&
+                      all(lessThan(q.xy, size));
         // The buffer holds each pixel's depth at its centre, not where the step's ray meets
         // the surface: the receiver seen or lit at a grazing angle is there nearer the camera
         // than the step by up to half a pixel's depth change. It is told apart by lying on
@@ -89,11 +97,13 @@ float contactShadow(vec3 p, vec3 n, vec3 toLight, float lightDistance, float vis
         // of a short march, inside the fragment's own pixel, for occluders wherever the
         // light came from behind the surface as the camera sees it (LightsPunctualLamp, sun
         // at 200,20, a march of 0.01: 66 % false shadow).
-        vec2 centre = floor(q.xy) + 0.5;
+        vec2 centre = floor(clamp(q.xy, vec2(0.0), size - 1.0)) + 0.5;
         float scene = texelFetch(uViewDepth, ivec2(centre), 0).r;
         float own = gContactPlane.x + dot(gContactPlane.yz, centre - gl_FragCoord.xy);
         float inFront = q.z - scene;  // > 0: the scene is nearer the camera than the step
-        if (inFront > tolerance && inFront < thickness && own - scene > tolerance) visible = 0.0;
+        if (counts && inFront > tolerance && inFront < thickness && own - scene > tolerance) {
+            visible = 0.0;
+        }
     }
     return visible;
 }

@@ -219,7 +219,7 @@ void recordVisibility(LightData light, float visibility) {
         float reach = kind == kDirectional || kind == kArea                             \
                           ? 1e30                                                        \
                           : length(light.position.xyz - vIn.wsPosition);                \
-        visibility = contactShadow(vIn.wsPosition, s.n, toLight, reach, visibility);    \
+        visibility = contactShadow(vIn.wsPosition, toLight, reach, visibility);         \
     }
 #else
 #define CONTACT(light, visibility, toLight)
