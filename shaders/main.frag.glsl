@@ -16,7 +16,8 @@
 // (contact_shadows.glsl). COLOURED_SHADOWS: light through blended casters tinted
 // (transmittance_lookup.glsl). DITHER_LINEAR / DITHER_SRGB: ordered dithering of the output.
 // STAND_IN_LIFT: shadow passes draw stand-in casters; their objects' lookups start off the
-// surface by the stand-in's error (shadow_lookup.glsl).
+// surface by the stand-in's error (shadow_lookup.glsl). UNROLLED_LIGHTS: the light loops
+// written out per light (below).
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
