@@ -126,8 +126,9 @@ vec3 normalOffset(LightData light, vec3 wsNormal, vec3 wsToLight, float texelWor
 // per fragment; 0 on unsimplified receivers such as a ground) start that far towards the
 // light, twice the simplifier's error: meshoptimizer measures it at the vertices it removes,
 // and a triangle's centre sags further (up to 2.2 times on a sphere: see
-// tests/unit/test_stand_in.cpp). At most six texels: a stand-in that strays further (grid-simplified
-// parts of the ToyCar stray 5 % of the car) would otherwise lift lookups past real casters.
+// tests/unit/test_stand_in.cpp). At most six texels: a stand-in that strays further
+// (grid-simplified parts of the ToyCar stray 5 % of the car) would otherwise lift lookups
+// past real casters.
 // At --caster-detail 0.1, on the Dragon under a sun: 0.065 % misclassified against 0.242 %
 // without the lift and 0.061 % with the full mesh; summed over scripts/quality-real.py's
 // views at 0.3: 27.6 points against 61.0.
