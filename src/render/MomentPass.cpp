@@ -22,14 +22,16 @@ int filterIndex(ShadowFilter f) {
 }
 }  // namespace
 
-const gl::Program& MomentPass::program(ShadowFilter filter, bool rows) {
-    gl::Program& p = mPrograms[filterIndex(filter)][rows ? 1 : 0];
+const gl::Program& MomentPass::program(ShadowFilter filter, bool rows, int radius) {
+    gl::Program& p = mPrograms[(filterIndex(filter) * 2 + (rows ? 1 : 0)) * 64 + radius];
     if (p) return p;
     static const char* const kDefines[] = {"MOMENTS_EVSM2", "MOMENTS_EVSM4", "MOMENTS_MSM"};
-    std::vector<std::string> defines = {kDefines[filterIndex(filter)]};
+    std::vector<std::string> defines = {kDefines[filterIndex(filter)],
+                                        "MOMENT_RADIUS " + std::to_string(radius)};
     if (rows) defines.push_back("ROWS");
     p = gl::buildProgram(
-        std::string("moments ") + toString(filter) + (rows ? " rows" : " columns"),
+        std::string("moments ") + toString(filter) + (rows ? " rows" : " columns") + " radius " +
+            std::to_string(radius),
         {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"}, {GL_FRAGMENT_SHADER, "moments.frag.glsl"}},
         defines);
     return p;
@@ -66,9 +68,8 @@ int MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int rad
     // moments array (one pass).
     const GLuint layerTarget = mLayerTargets[std::size_t(light.layer)].id();
     glBindFramebuffer(GL_FRAMEBUFFER, radius > 0 ? mRowTarget.id() : layerTarget);
-    glUseProgram(program(mFilter, true).id());
+    glUseProgram(program(mFilter, true, radius).id());
     glUniform4iv(0, 1, &square[0]);
-    glUniform1i(1, radius);
     glUniform3f(2, light.frame.near, light.frame.far, light.frame.orthographic ? 0.0f : 1.0f);
     glBindTextureUnit(0, pass.maps().id());
     glBindSampler(0, mStored.id());
@@ -76,9 +77,8 @@ int MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int rad
     if (radius == 0) return 1;
     // Columns: into the map's square of the moments array.
     glBindFramebuffer(GL_FRAMEBUFFER, layerTarget);
-    glUseProgram(program(mFilter, false).id());
+    glUseProgram(program(mFilter, false, radius).id());
     glUniform4iv(0, 1, &square[0]);
-    glUniform1i(1, radius);
     glBindTextureUnit(0, mRows.id());
     glBindSampler(0, 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -4,6 +4,7 @@
 // blur, box-blurred in two passes (rows into a scratch texture, then columns). Point lights' cubes
 // have no moments: their lookups keep the default 3x3 PCF.
 #pragma once
+#include <map>
 #include <vector>
 
 #include "gl/Objects.h"
@@ -33,14 +34,16 @@ private:
     void allocateRows(int size);
     // One map's moments, blurred by `radius`: the passes drawn (1 without a blur, else 2).
     int blur(const ShadowPass& pass, const ShadowedLight& light, int radius);
-    const gl::Program& program(ShadowFilter filter, bool rows);
+    // The pass for `filter`, rows or columns, with `radius` built in (a variant per radius
+    // used: 0 to the option's 16).
+    const gl::Program& program(ShadowFilter filter, bool rows, int radius);
 
     gl::Texture mMoments, mRows;
     std::vector<gl::Framebuffer> mLayerTargets;  // one per layer of mMoments
     gl::Framebuffer mRowTarget;
     gl::Sampler mStored;  // the depth maps as stored: NEAREST, no comparison
     gl::VertexArray mEmpty;
-    gl::Program mPrograms[3][2];  // EVSM2, EVSM4, MSM x columns, rows
+    std::map<int, gl::Program> mPrograms;  // by (filter x rows or columns) x 64 + radius
     ShadowFilter mFilter = ShadowFilter::Pcf;
     int mRadius = -1;
 };
