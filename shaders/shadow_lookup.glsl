@@ -361,10 +361,14 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 int gCascade = -1;
 
 // Cascaded directional light: the first cascade whose far split lies beyond the
-// fragment's view depth; within the last `blend` fraction of a cascade, a mix with the next
-// one hides the seam. Beyond the last cascade nothing is shadowed.
-// The cascade is chosen first and looked up after: llvmpipe would run a lookup placed in
-// the selection loop for every cascade.
+// fragment's view depth; within the last `blend` fraction of a cascade, the next one takes
+// over pixel by pixel, a share t of them rising from 0 to 1 across the band (interleaved
+// gradient noise, Jimenez 2014, against t), which hides the seam. Beyond the last cascade
+// nothing is shadowed. The cascade is chosen first and looked up after: llvmpipe runs both
+// sides of a branch and every pass of a loop, so a lookup in the selection loop would run
+// for every cascade, and a mix of two lookups in the band (as before) ran both on every
+// pixel: Sponza's atrium (two cascades) measured a main pass of 42 ms with the mix, 35 ms
+// with the pixels dithered between cascades, its score unchanged (0.275 % misclassified).
 float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
                         float vsDepth) {
     int first = int(light.placement.x), count = int(light.placement.y);
@@ -383,16 +387,8 @@ float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 ws
         previousSplit = split;
     }
     if (chosen < 0) return 1.0;
+    float noise = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    if (noise < t) chosen += 1;  // t > 0 only where a next cascade exists
     gCascade = chosen;
-    float v = mapVisibility(lights[first + chosen], wsPosition, wsNormal, wsToLight);
-    if (t > 0.0) {
-#if defined(COLOURED_SHADOWS)
-        vec3 tint = gTint;
-        v = mix(v, mapVisibility(lights[first + chosen + 1], wsPosition, wsNormal, wsToLight), t);
-        gTint = mix(tint, gTint, t);
-#else
-        v = mix(v, mapVisibility(lights[first + chosen + 1], wsPosition, wsNormal, wsToLight), t);
-#endif
-    }
-    return v;
+    return mapVisibility(lights[first + chosen], wsPosition, wsNormal, wsToLight);
 }

@@ -285,7 +285,7 @@ void addCascades(std::vector<OptionSpec>& s) {
          NUMBER(shadow.cascadeLambda, float)});
     add({.name = "cascade-blend",
          .group = "Cascades",
-         .doc = "fraction of each cascade blended into the next",
+         .doc = "fraction of each cascade handed to the next pixel by pixel (dithered)",
          .kind = K::Real,
          .max = 0.5,
          NUMBER(shadow.cascadeBlend, float)});
