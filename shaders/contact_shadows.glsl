@@ -47,9 +47,9 @@ float viewZPerDepth(float d) {
 float contactShadow(vec3 p, vec3 toLight, float lightDistance, float visible) {
     float len = min(uContactLength, 0.95 * lightDistance);
     if (!(len > 0.0)) return visible;
-    // Steps are staggered per pixel (interleaved gradient noise, Jimenez 2014), so a short
-    // march leaves no bands.
-    float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    // Steps are staggered per pixel (shadow_lookup.glsl's interleaved gradient noise), so a
+    // short march leaves no bands.
+    float jitter = interleavedGradientNoise();
     // The march starts at the fragment, whose clip coordinates its window position and
     // 1 / w give without a matrix product, and ends `len` towards the light.
     vec2 size = vec2(textureSize(uViewDepth, 0));

@@ -59,6 +59,13 @@ layout(binding = 3) uniform samplerCubeArray uShadowCubeDepths;
 #include "transmittance_lookup.glsl"
 #endif
 
+// Interleaved gradient noise (Jimenez 2014): a value in [0, 1) per pixel, fixed in screen
+// space, that neighbouring pixels spread evenly. Poisson taps turn by it, cascades hand over
+// by it, contact shadows stagger their steps by it.
+float interleavedGradientNoise() {
+    return fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+}
+
 // Texels a lookup reaches from its centre, plus the bilinear footprint's one.
 #if defined(FILTER_PCF) || defined(FILTER_POISSON)
 const float kFilterReach = float(PCF_SIZE / 2) + 1.0;
@@ -94,8 +101,7 @@ const vec2 kPoissonDisc[16] = vec2[](
     vec2(-0.0715, -0.7930), vec2(0.7927, 0.3246), vec2(0.5396, 0.6871), vec2(0.3871, -0.7529));
 
 mat2 poissonRotation() {
-    float noise = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    float a = 6.2831853 * noise;
+    float a = 6.2831853 * interleavedGradientNoise();
     return mat2(cos(a), sin(a), -sin(a), cos(a));
 }
 #endif
@@ -363,7 +369,7 @@ int gCascade = -1;
 // Cascaded directional light: the first cascade whose far split lies beyond the
 // fragment's view depth; within the last `blend` fraction of a cascade, the next one takes
 // over pixel by pixel, a share t of them rising from 0 to 1 across the band (interleaved
-// gradient noise, Jimenez 2014, against t), which hides the seam. Beyond the last cascade
+// gradient noise against t), which hides the seam. Beyond the last cascade
 // nothing is shadowed. The cascade is chosen first and looked up after: llvmpipe runs both
 // sides of a branch and every pass of a loop, so a lookup in the selection loop would run
 // for every cascade, and a mix of two lookups in the band (as before) ran both on every
@@ -387,8 +393,7 @@ float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 ws
         previousSplit = split;
     }
     if (chosen < 0) return 1.0;
-    float noise = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    if (noise < t) chosen += 1;  // t > 0 only where a next cascade exists
+    if (interleavedGradientNoise() < t) chosen += 1;  // t > 0 only where a next cascade is
     gCascade = chosen;
     return mapVisibility(lights[first + chosen], wsPosition, wsNormal, wsToLight);
 }
