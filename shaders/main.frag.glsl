@@ -183,13 +183,17 @@ void recordVisibility(LightData light, float visibility) {
     for (int k = first; k < last; ++k) BODY(k, LOOKUP, KIND)
 #endif
 
+// Declares `light` (record k of the light order), `toLight` and `falloff` at this fragment.
+#define LIGHT_AT(k, KIND)                          \
+    LightData light = lights[lightRecord(k)];      \
+    vec3 toLight;                                  \
+    float falloff;                                 \
+    lightAt(light, KIND, toLight, falloff);
+
 // Record k of the light order, shaded with its LOOKUP's visibility.
 #define SHADOWED_LIGHT(k, LOOKUP, KIND)                                                 \
     {                                                                                   \
-        LightData light = lights[lightRecord(k)];                                       \
-        vec3 toLight;                                                                   \
-        float falloff;                                                                  \
-        lightAt(light, KIND, toLight, falloff);                                         \
+        LIGHT_AT(k, KIND)                                                               \
         float visibility = 1.0;                                                         \
         if (s.receives) {                                                               \
             gTexelWorld = 0.0;                                                          \
@@ -205,10 +209,7 @@ void recordVisibility(LightData light, float visibility) {
 // Record k of the light order, unshadowed (the arguments after it are unused).
 #define UNSHADOWED_LIGHT(k, LOOKUP, KIND)                              \
     {                                                                  \
-        LightData light = lights[lightRecord(k)];                      \
-        vec3 toLight;                                                  \
-        float falloff;                                                 \
-        lightAt(light, kAnyKind, toLight, falloff);                    \
+        LIGHT_AT(k, kAnyKind)                                          \
         shade(light, s, toLight, falloff, vec3(1.0), lit, factor);     \
     }
 
