@@ -139,7 +139,7 @@ struct ShadowOptions {
     // (each map uses its texels a little better, and its shadows shimmer).
     bool stabilise = true;
     float cascadeLambda = 0.75f;  // splits: 0 uniform .. 1 logarithmic
-    float cascadeBlend = 0.1f;    // fraction of each cascade blended into the next, 0..0.5
+    float cascadeBlend = 0.1f;    // fraction of each cascade handed to the next (dithered), 0..0.5
     DepthFormat depthFormat = DepthFormat::Depth32F;  // storage of the maps
     MapFilter mapFilter = MapFilter::Nearest;         // hand-compared lookups: filtering of depth
     BlendShadows blendShadows = BlendShadows::Coloured;  // shadows of blended materials
