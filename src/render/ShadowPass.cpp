@@ -311,6 +311,20 @@ void ShadowPass::layOut(std::vector<ShadowedLight>& lights, const ShadowOptions&
                           mCubes.layers() != 6 * countCube || mCubes.format() != cubeFormat)) {
         allocateCubes(sizeCube, countCube, format);
     }
+    // A kind of map no light has this frame gives its memory back: a point light switched
+    // off kept its 24 MiB of cubes, and the frame's statistics counted them.
+    if (countCube == 0 && mCubes) {
+        mCubes = gl::Texture();
+        mCubeFramebuffer = gl::Framebuffer();
+        mCubeFaceFramebuffers.clear();
+        mCubeLayers.clear();
+    }
+    if (count2D == 0 && mMaps) {
+        mMaps = gl::Texture();
+        mColourDepth = gl::Texture();
+        mFramebuffers.clear();
+        mLayers.clear();
+    }
 }
 
 // Clears `light`'s map and draws its casters into it through `m` (a cube's six faces).

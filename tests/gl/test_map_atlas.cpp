@@ -58,5 +58,19 @@ TEST(MapAtlas, SmallMapsShareALayerAndShadowAsIfAlone) {
     EXPECT_GT(shadowed, 500);  // the lights do shadow something
 }
 
+// A kind of map the frame does not use gives its memory back: after a point light's frame,
+// a frame with none holds (and counts) no cubes.
+TEST(MapAtlas, CubesUnusedAreReleased) {
+    Renderer& r = sharedRenderer();
+    RenderOptions o;
+    o.width = o.height = 64;
+    r.render(builtinScene("tutorial-point"), o);
+    ASSERT_GT(r.lastFrameStats().shadowMapBytes, 0u);
+    Scene fives = fiveSpots();
+    r.render(fives, o);
+    EXPECT_EQ(r.lastFrameStats().shadowMapBytes, std::size_t(2) * 1024 * 1024 * 4)
+        << "the point light's cubes are still held";
+}
+
 }  // namespace
 }  // namespace gnomon::test
