@@ -16,7 +16,7 @@ layout(location = 9) uniform float uContactLength;  // world units (= view units
 // At most this many steps, written out (the compiler unrolls a constant count): llvmpipe
 // keeps what a loop changes in memory behind its mask, and each step costs a depth read on
 // every pixel. Four steps instead of eight and a start at the fragment itself cut what the
-// march adds to tutorial-room's main pass from 4.2 to 2.6 ms (alternating builds), for
+// march adds to tutorial-room's main pass from about 4.4 to 2.6 ms (docs/performance.md), for
 // the same leak at contacts on tutorial-room, tutorial-room-thin, glmark2's horse, the
 // Lantern on a ground and Sponza (docs/performance.md).
 const int kContactSteps = 4;

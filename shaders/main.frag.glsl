@@ -174,8 +174,8 @@ void recordVisibility(LightData light, float visibility) {
 // (UNSHADOWED_LIGHTS, MAP_LIGHTS, CUBE_LIGHTS, CASCADED_LIGHTS: NAME(BODY, first, LOOKUP,
 // KIND) is BODY(first + i, LOOKUP, KIND) for each of its i). llvmpipe keeps every value a
 // loop changes in memory, per pixel, behind the loop's mask, and the compiler does not
-// unroll a loop whose body holds a lookup: glmark2's horse scene, one light, measured a main
-// pass of 13.6 ms looped and 8.2 ms written out; with two lights, 19.7 and 13.1 ms.
+// unroll a loop whose body holds a lookup: written out, tutorial-room's main pass took 0.56
+// and glmark2's horse's 0.60 of the looped one (docs/performance.md, scripts/ab-bench.sh).
 #ifdef UNROLLED_LIGHTS
 #define EACH_LIGHT(NAME, first, last, BODY, LOOKUP, KIND) NAME(BODY, first, LOOKUP, KIND)
 #else
