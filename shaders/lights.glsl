@@ -13,6 +13,9 @@ const float kFramePerspective = 0.0;
 const float kFrameOrthographic = 1.0;
 const float kFrameCube = 2.0;
 const float kFrameCascaded = 3.0;  // placement: x first cascade record, y count, z blend
+// A point light's faces as maps of their own: placement x the first face record, y six 3-bit
+// slots (face f's record at x + slot, 7: no map; faceVisibility in shadow_lookup.glsl).
+const float kFrameFaces = 4.0;
 
 struct LightData {
     mat4 textureFromWorld;  // world -> light clip -> [0,1] map coordinates and depth

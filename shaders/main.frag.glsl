@@ -241,7 +241,9 @@ void recordVisibility(LightData light, float visibility) {
 #define SHADOWED_KINDS(LOOP)
 #else
 #define UNSHADOWED_END uLightRanges.x
-#ifdef HAS_CUBES
+#if defined(POINT_FACES)
+#define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, faceLookup, kPoint)
+#elif defined(HAS_CUBES)
 #define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, cubeLookup, kPoint)
 #else
 #define CUBE_KIND(LOOP)
@@ -262,6 +264,9 @@ float mapLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
 }
 float cubeLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
     return cubeVisibility(light, p, n, l);
+}
+float faceLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
+    return faceVisibility(light, p, n, l);
 }
 
 // The receiver's plane for the lookups. Before any discard: derivatives need the whole 2x2

@@ -397,3 +397,18 @@ float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 ws
     gCascade = chosen;
     return mapVisibility(lights[first + chosen], wsPosition, wsNormal, wsToLight);
 }
+
+// A point light whose faces are maps of their own (kFrameFaces): the face the direction from
+// the light leaves through, as a cube map picks it, then that face's map. A face without a map
+// holds nothing the view drew: lit.
+float faceVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
+    vec3 d = wsPosition - light.position.xyz;
+    vec3 a = abs(d);
+    int face = a.x >= a.y && a.x >= a.z ? (d.x < 0.0 ? 1 : 0)
+               : a.y >= a.z            ? (d.y < 0.0 ? 3 : 2)
+                                       : (d.z < 0.0 ? 5 : 4);
+    int slot = (int(light.placement.y) >> (3 * face)) & 7;
+    float visible = mapVisibility(lights[int(light.placement.x) + min(slot, 5)], wsPosition,
+                                  wsNormal, wsToLight);
+    return slot == 7 ? 1.0 : visible;
+}

@@ -81,7 +81,8 @@ void writeOutputs(const RenderArgs& args, gnomon::Renderer& renderer, const gnom
          maps ? renderer.shadowMaps() : std::vector<gnomon::ShadowMapImage>{}) {
         const std::string path = files.file(
             "light-" + std::to_string(map.light) +
-            (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") + ".png");
+            (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") +
+            (map.face >= 0 ? "-face-" + std::to_string(map.face) : "") + ".png");
         gnomon::writePng(path, map.depth);
         if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
     }
@@ -160,13 +161,17 @@ int runRender(const RenderArgs& args, bool verbose) {
             std::fprintf(stderr, "gnomon: %d transmittance pass(es) for the coloured shadows\n",
                          stats.transmittancePasses);
         }
+        static const char* const kFaceNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
         for (const gnomon::MapUsage& u : renderer.mapUsage()) {
             const std::string faces =
                 u.cube ? " (" + std::to_string(u.faces) + " of 6 faces drawn)" : "";
-            std::fprintf(
-                stderr, "gnomon: light %d%s: %d² %s%s, the view uses %.0f %% of it\n", u.light,
-                u.cascade >= 0 ? (" cascade " + std::to_string(u.cascade)).c_str() : "", u.mapSize,
-                u.cube ? "cube" : "map", faces.c_str(), 100.0 * double(u.share));
+            const std::string part =
+                u.cascade >= 0 ? " cascade " + std::to_string(u.cascade)
+                : u.face >= 0  ? " face " + std::to_string(u.face) + " (" + kFaceNames[u.face] + ")"
+                               : "";
+            std::fprintf(stderr, "gnomon: light %d%s: %d² %s%s, the view uses %.0f %% of it\n",
+                         u.light, part.c_str(), u.mapSize, u.cube ? "cube" : "map", faces.c_str(),
+                         100.0 * double(u.share));
         }
     }
     return 0;

@@ -77,6 +77,13 @@ enum class FitTo {
     Boxes,      // the bounding boxes of the receivers inside the view frustum
 };
 
+// How a fitted point light that the view sees in more than one cube face is mapped.
+enum class PointMaps {
+    Faces,  // each face the view looks up, a perspective map fitted to what it sees there
+            // (with FitTo::ViewDepth; else a cube)
+    Cube,   // one cube map: every direction at the same density
+};
+
 // Where a render's options start (CLI --preset); flags given after it override.
 enum class Preset {
     Default,   // gnomon's best: the scene's authored options with gnomon's bias defaults
@@ -134,6 +141,7 @@ struct ShadowOptions {
     // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
     int cascades = 0;
     FitTo fitTo = FitTo::ViewDepth;  // what fitted lights cover (docs/techniques.md)
+    PointMaps pointMaps = PointMaps::Cube;  // Faces needs fitTo ViewDepth (docs/techniques.md)
     // Fitted maps that follow the view keep a quantised size and move in whole texels, so
     // their edges hold still while the camera moves; false refits them exactly every frame
     // (each map uses its texels a little better, and its shadows shimmer).
@@ -211,6 +219,7 @@ const char* toString(Preset v);
 const char* toString(DebugView v);
 const char* toString(BlendShadows v);
 const char* toString(FitTo v);
+const char* toString(PointMaps v);
 const char* toString(OutputEncoding v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
@@ -222,6 +231,7 @@ std::optional<Preset> parsePreset(const std::string& s);
 std::optional<DebugView> parseDebugView(const std::string& s);
 std::optional<BlendShadows> parseBlendShadows(const std::string& s);
 std::optional<FitTo> parseFitTo(const std::string& s);
+std::optional<PointMaps> parsePointMaps(const std::string& s);
 std::optional<OutputEncoding> parseOutputEncoding(const std::string& s);
 // True for the formats stored in colour channels (r8 and the RGBA8 packings).
 bool isColourFormat(DepthFormat v);

@@ -26,6 +26,7 @@ struct ContextOptions {
 struct ShadowMapImage {
     int light = 0;     // index into Scene::lights
     int cascade = -1;  // cascade index for cascaded directional lights, else -1
+    int face = -1;     // a point light's face with a map of its own (0..5: +X, -X, +Y, ...)
     Image16 depth;     // stored depth 0..1 scaled to 0..65535
 };
 
@@ -67,6 +68,7 @@ struct MapUsage {
     float share = 0.0f;
     bool cube = false;  // a point light's six faces, not one map
     int faces = 1;      // a cube's faces the view looks up (and draws; a kept cube may hold more)
+    int face = -1;      // a point light's face with a map of its own (0..5: +X, -X, +Y, ...)
 };
 
 // Per pixel and light, what the main pass's shadow lookups returned (gnomon score): values at

@@ -123,6 +123,14 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          .kind = K::Choice,
          .choices = namesOf<FitTo>(),
          ENUM(shadow.fitTo, FitTo)});
+    add({.name = "point-maps",
+         .group = "Shadow maps",
+         .doc = "a fitted point light the view sees in more than one cube face: one cube (every "
+                "direction at one density), or, with --fit-to view-depth, a map per face fitted "
+                "to what the view sees there (finer; not yet the default, docs/techniques.md)",
+         .kind = K::Choice,
+         .choices = namesOf<PointMaps>(),
+         ENUM(shadow.pointMaps, PointMaps)});
     add({.name = "stabilise",
          .group = "Shadow maps",
          .doc = "fitted maps that follow the view keep a quantised size and move in whole "

@@ -62,6 +62,9 @@ const std::pair<const char*, BlendShadows> kBlendShadows[] = {{"opaque", BlendSh
 const std::pair<const char*, FitTo> kFitTo[] = {{"view-depth", FitTo::ViewDepth},
                                                 {"boxes", FitTo::Boxes}};
 
+const std::pair<const char*, PointMaps> kPointMaps[] = {{"faces", PointMaps::Faces},
+                                                        {"cube", PointMaps::Cube}};
+
 const std::pair<const char*, OutputEncoding> kOutputs[] = {{"linear", OutputEncoding::Linear},
                                                            {"srgb", OutputEncoding::Srgb}};
 
@@ -126,6 +129,12 @@ const char* toString(FitTo v) {
 }
 std::optional<FitTo> parseFitTo(const std::string& s) {
     return lookup(s, kFitTo);
+}
+const char* toString(PointMaps v) {
+    return nameOf(v, kPointMaps);
+}
+std::optional<PointMaps> parsePointMaps(const std::string& s) {
+    return lookup(s, kPointMaps);
 }
 const char* toString(OutputEncoding v) {
     return nameOf(v, kOutputs);

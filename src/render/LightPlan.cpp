@@ -87,9 +87,31 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
     if (unchanged(s, options, scene, samples, fitCamera)) return;
     mMade.valid = false;  // until this plan is whole
     mFitCamera = fitCamera ? *fitCamera : s.camera;
+    // Faces of their own only with the view's samples to fit them to (a face fitted to boxes
+    // is no finer than the cube's), and while their records fit the main pass.
+    const bool faces =
+        samples && !samples->empty() && options.shadow.pointMaps == PointMaps::Faces;
+    planLights(s, options, scene, samples, faces);
+    if (mHasFaces && int(mLights.size() + mCascadeRecords.size()) > mRecordLimit)
+        planLights(s, options, scene, samples, false);
+    orderLights(s.lights.size());
+    mMade.geometry = scene.revision();
+    mMade.samples = samples ? samples->generation : 0;
+    mMade.lights = s.lights;
+    mMade.camera = s.camera;
+    mMade.hasFitCamera = fitCamera != nullptr;
+    if (fitCamera) mMade.fitCamera = *fitCamera;
+    mMade.following = mFollowing;
+    mMade.options = options;
+    mMade.valid = true;
+}
+
+void LightPlan::planLights(const Scene& s, const RenderOptions& options, const GpuScene& scene,
+                           const shadow::ViewSamples* samples, bool faces) {
     mShadowed.clear();
     mLights.clear();
     mCascadeRecords.clear();
+    mHasCascades = mHasFaces = false;
     const float aspect = float(options.width) / float(options.height);
     // What fitted light cameras look at: the items' boxes, the view and what it sees.
     mFit.casters.clear();
@@ -143,7 +165,9 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
             int size = 0;
             const shadow::LightCameraFrame frame = shadow::sizedLightCameraFrame(
                 light, options.shadow, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr);
-            if (frame.valid) {
+            if (frame.valid && frame.kind == shadow::FrameKind::Cube && faces) {
+                planFaces(s, options, i, frame.faces, size, g);
+            } else if (frame.valid) {
                 fillShadowRecord(g, frame, light, options.shadow);
                 g.soft.w = float(i);
                 mShadowed.push_back({int(i), size, frame,
@@ -153,16 +177,6 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
         }
         mLights.push_back(g);
     }
-    orderLights(s.lights.size());
-    mMade.geometry = scene.revision();
-    mMade.samples = samples ? samples->generation : 0;
-    mMade.lights = s.lights;
-    mMade.camera = s.camera;
-    mMade.hasFitCamera = fitCamera != nullptr;
-    if (fitCamera) mMade.fitCamera = *fitCamera;
-    mMade.following = mFollowing;
-    mMade.options = options;
-    mMade.valid = true;
 }
 
 // Orders the records by kind for the main pass's loops (shaders/lights.glsl): lights that
@@ -181,7 +195,8 @@ void LightPlan::orderLights(std::size_t sceneLights) {
         const GpuLight& g = mLights[i];
         if (g.direction.w == 0.0f) return -1;
         if (!mHasMap[i]) return 0;
-        return g.shadow.z == gpu::kFrameCube ? 2 : g.shadow.z == gpu::kFrameCascaded ? 3 : 1;
+        if (g.shadow.z == gpu::kFrameCube || g.shadow.z == gpu::kFrameFaces) return 2;
+        return g.shadow.z == gpu::kFrameCascaded ? 3 : 1;
     };
     for (int kind = 0; kind < 4; ++kind) {
         for (std::size_t i = 0; i < sceneLights; ++i) {
@@ -193,12 +208,13 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     }
     const int base = int(mOrdered.size());
     for (GpuLight& g : mOrdered) {
-        if (g.shadow.z == gpu::kFrameCascaded) g.placement.x += float(base) - float(sceneLights);
+        if (g.shadow.z == gpu::kFrameCascaded || g.shadow.z == gpu::kFrameFaces)
+            g.placement.x += float(base) - float(sceneLights);
     }
     mOrdered.insert(mOrdered.end(), mCascadeRecords.begin(), mCascadeRecords.end());
     for (ShadowedLight& sl : mShadowed) {
-        sl.record =
-            sl.cascade >= 0 ? sl.record - int(sceneLights) + base : mRemap[std::size_t(sl.record)];
+        sl.record = sl.cascade >= 0 || sl.face >= 0 ? sl.record - int(sceneLights) + base
+                                                    : mRemap[std::size_t(sl.record)];
     }
     mLights.swap(mOrdered);
 }
@@ -256,6 +272,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
     const std::vector<float> splits =
         shadow::cascadeSplits(near, far, count, options.shadow.cascadeLambda);
     const int first = int(s.lights.size() + mCascadeRecords.size());
+    mHasCascades = true;
     g.shadow.z = gpu::kFrameCascaded;
     g.colour.w = 0.0f;  // has shadows; the maps are the cascade records'
     g.placement = glm::vec4(float(first), float(count), blend, 0.0f);
@@ -287,6 +304,42 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         mShadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k, reach,
                              k + 1 == count ? std::numeric_limits<float>::max() : to});
     }
+}
+
+// Each face the view looks up (`faces`, bit f for face f) a perspective map fitted to the
+// samples in it, its record after the scene's lights like a cascade's. The light's own record
+// says where they are (lights.glsl, kFrameFaces): placement.x the first, placement.y a table
+// of six 3-bit slots, face f's record at first + slot, 7 for a face with no map (no pixel
+// the view drew looks it up).
+void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
+                          std::uint8_t faces, int mapSize, GpuLight& g) {
+    const Light& light = s.lights[lightIndex];
+    const int first = int(s.lights.size() + mCascadeRecords.size());
+    int table = 0, count = 0;
+    for (int face = 0; face < 6; ++face) {
+        int slot = 7;
+        if ((faces >> face) & 1u) {
+            Held* h = held(lightIndex);
+            const shadow::LightCameraFrame frame = shadow::pointFaceFrame(
+                light, face, options.shadow, mFit, mapSize, h ? &h->maps[1 + face] : nullptr);
+            if (frame.valid) {
+                GpuLight c = g;
+                fillShadowRecord(c, frame, light, options.shadow);
+                c.placement = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
+                mCascadeRecords.push_back(c);
+                ShadowedLight sl{int(lightIndex), mapSize, frame, true, 0, first + count};
+                sl.face = face;
+                mShadowed.push_back(sl);
+                slot = count++;
+            }
+        }
+        table |= slot << (3 * face);
+    }
+    if (count == 0) return;  // no face holds a caster over what the view sees: no shadow
+    mHasFaces = true;
+    g.shadow.z = gpu::kFrameFaces;
+    g.colour.w = 0.0f;  // has shadows; the maps are the face records'
+    g.placement = glm::vec4(float(first), float(table), 0.0f, 0.0f);
 }
 
 void LightPlan::finish(const ShadowPass& pass) {

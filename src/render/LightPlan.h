@@ -44,7 +44,13 @@ public:
     std::vector<ShadowedLight>& shadowed() { return mShadowed; }
     const std::vector<GpuLight>& records() const { return mLights; }
     glm::ivec4 ranges() const { return mRanges; }  // ends of the record kinds
-    bool hasCascades() const { return !mCascadeRecords.empty(); }
+    bool hasCascades() const { return mHasCascades; }
+    // Some point light's faces are maps of their own this frame (kFrameFaces: the cube
+    // range's lookups pick a face's record). Never with cubes in the same frame.
+    bool hasPointFaces() const { return mHasFaces; }
+    // The most records the main pass holds: a plan whose point lights' faces would need more
+    // gives them cubes instead.
+    void setRecordLimit(int records) { mRecordLimit = records; }
     // The type code (shaders/lights.glsl) all single-map records share, or -1 when they
     // mix kinds or there are none.
     int singleMapKind() const;
@@ -55,11 +61,19 @@ private:
                       const glm::vec3& direction, int mapSize, int count, float aspect,
                       const Aabb& sceneBounds, GpuLight& g);
 
+    // Point lights the view sees all around: a map per face it looks up, as records after
+    // the light's own (like cascades), in place of a cube.
+    void planFaces(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
+                   std::uint8_t faces, int mapSize, GpuLight& g);
+    void planLights(const Scene& s, const RenderOptions& options, const GpuScene& scene,
+                    const shadow::ViewSamples* samples, bool faces);
+
     static constexpr int kMaxCascades = 4;
     // What a following frame keeps of the previous one, per scene light: its single map's
-    // extent or its cascades', and the depth range its cascades split.
+    // extent (maps[0]), its cascades' (0..3) or its faces' (1..6), and the depth range its
+    // cascades split.
     struct Held {
-        shadow::HeldExtent maps[kMaxCascades];
+        shadow::HeldExtent maps[7];
         glm::vec2 splitRange{0.0f};
         int cascades = 0;  // 0: no range held
     };
@@ -90,6 +104,8 @@ private:
     std::vector<int> mRemap;                // scene light -> record, reused
     std::vector<std::uint8_t> mHasMap;      // scene light has a map this frame
     glm::ivec4 mRanges{0};
+    bool mHasCascades = false, mHasFaces = false;
+    int mRecordLimit = 1 << 30;
     Camera mFitCamera;
     shadow::FitScene mFit;  // reused every frame
 };

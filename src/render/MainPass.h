@@ -20,7 +20,7 @@ namespace gnomon::render {
 namespace gpu {
 constexpr int kDirectional = 0, kSpot = 1, kPoint = 2, kArea = 3;
 constexpr float kFramePerspective = 0.0f, kFrameOrthographic = 1.0f, kFrameCube = 2.0f,
-                kFrameCascaded = 3.0f;
+                kFrameCascaded = 3.0f, kFrameFaces = 4.0f;
 }  // namespace gpu
 
 // The std140 light record of shaders/lights.glsl (every member 16-byte aligned).
@@ -52,6 +52,7 @@ struct MainPassInputs {
     // cascaded records).
     const TiledLights* tiled = nullptr;
     bool hasCascades = false;  // some light is cascaded this frame
+    bool pointFaces = false;   // point lights' faces are maps of their own (LightPlan)
     // The kind (lights.glsl's type code) every single-map record shares, or -1 when they mix
     // (LightPlan::singleMapKind): the program drops the other kinds' light code.
     int singleMapKind = -1;

@@ -186,6 +186,7 @@ struct Renderer::Impl {
         }
         // Drawn for the tiles alone, the samples do not fit the lights.
         const bool fitSamples = render::LightPlan::wantsViewSamples(s, options) || contact;
+        plan.setRecordLimit(mainPass.maxLights());
         plan.plan(s, options, scene, fitSamples ? samples : nullptr, fitCamera);
         if (fitCamera) {
             // The samples were the fit camera's view: contact shadows need the drawn one's,
@@ -259,6 +260,7 @@ struct Renderer::Impl {
         in.tiled = &tiled;
         stats.lightTiles = int(tiled.tiles().size());
         in.hasCascades = plan.hasCascades();
+        in.pointFaces = plan.hasPointFaces();
         in.singleMapKind = plan.singleMapKind();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
@@ -394,7 +396,7 @@ std::vector<ShadowMapImage> Renderer::shadowMaps() {
     mImpl->makeCurrent();
     std::vector<ShadowMapImage> out;
     for (const render::ShadowedLight& sl : mImpl->plan.shadowed()) {
-        out.push_back({sl.light, sl.cascade, mImpl->shadowPass.readBack(sl)});
+        out.push_back({sl.light, sl.cascade, sl.face, mImpl->shadowPass.readBack(sl)});
     }
     return out;
 }
@@ -415,7 +417,8 @@ std::vector<MapUsage> Renderer::mapUsage() {
             {sl.light, sl.cascade, sl.mapSize,
              shadow::mapShareUsed(samples, sl.frame, sl.mapSize, sl.depthFrom, sl.depthTo),
              sl.frame.kind == shadow::FrameKind::Cube,
-             sl.frame.kind == shadow::FrameKind::Cube ? std::popcount(sl.frame.faces) : 1});
+             sl.frame.kind == shadow::FrameKind::Cube ? std::popcount(sl.frame.faces) : 1,
+             sl.face});
     }
     return out;
 }

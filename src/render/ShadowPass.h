@@ -35,6 +35,7 @@ struct ShadowedLight {
     // cascade's blend band; every depth for the others).
     float depthFrom = 0.0f, depthTo = std::numeric_limits<float>::max();
     glm::ivec2 origin{0};  // 2D maps: the map's lower-left texel in its layer (shadow pass)
+    int face = -1;  // a point light's face drawn as a map of its own (0..5), else -1
 };
 
 // What a light's map sees, for culling what it need not draw: its clip volume (casters in
@@ -69,10 +70,11 @@ private:
     int mFaceCount = 0;
 };
 
-// A pass's name for one map in FrameStats::passes: "<what> light N[, cascade K]".
+// A pass's name for one map in FrameStats::passes: "<what> light N[, cascade K | face F]".
 inline std::string mapPassName(const char* what, const ShadowedLight& light) {
     return std::string(what) + " light " + std::to_string(light.light) +
-           (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : "");
+           (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : "") +
+           (light.face >= 0 ? ", face " + std::to_string(light.face) : "");
 }
 
 // The passes that follow the shadow pass per map (moments, transmittance) run for the maps

@@ -188,6 +188,26 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
     return f.valid ? f : fitCube(position, boxes, mapSize);
 }
 
+// One face of a point light's cube as a frustum of its own: the face's pyramid, widened by
+// `marginTan` (what a lookup at the face's rim reads beyond it), narrowed to the window of the
+// view's samples it holds. A cube spends the same texels on every direction; a model on a
+// ground under a close lamp lands on a few percent of the faces it appears in (Stanford
+// Dragon, a point light 0.3 above it: 2 % of the cube, 2.2 % of the view misclassified).
+// Without a window (a sample's footprint reaches the light), the whole widened face.
+LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginTan,
+                              const ViewSamples* samples, const FitBoxes& boxes, int mapSize) {
+    const glm::mat4 lightFromWorld =
+        cubeFaceRotation(face) * glm::translate(glm::mat4(1.0f), -position);
+    const float t = 1.0f + std::max(marginTan, 0.0f);
+    const SampleWindow faceWindow{glm::vec2(-t), glm::vec2(t), 0.0f};
+    SampleWindow window;
+    if (samples && samplesWindow(*samples, lightFromWorld, window, &faceWindow)) {
+        const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
+        if (f.valid) return f;
+    }
+    return fitFrustum(lightFromWorld, faceWindow.lo, faceWindow.hi, boxes, mapSize);
+}
+
 // A spot light: its cone's square window, narrowed to the part of it where the view's samples
 // lie (a spot over a room's corner spends its map on the corner the camera sees, not on the
 // whole cone). Without samples, or when they do not narrow it, the whole cone.

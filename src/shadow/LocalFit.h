@@ -32,6 +32,11 @@ float quantizeUp(float x);
 // around their mean direction, else six faces around the light.
 LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
                           const FitBoxes& boxes, int mapSize);
+// Face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z, as cubeFaceRotation) of a point light as one
+// perspective frustum: the face's pyramid widened by `marginTan` tan units, narrowed to the
+// window of the view's samples in it.
+LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginTan,
+                              const ViewSamples* samples, const FitBoxes& boxes, int mapSize);
 // A spot light: its cone's window (fovy twice the outer cone angle), narrowed to the part the
 // view's samples lie in.
 LightCameraFrame fitSpot(const glm::vec3& position, const glm::vec3& axis, float fovyRadians,

@@ -335,6 +335,16 @@ LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& 
     return frame;
 }
 
+LightCameraFrame pointFaceFrame(const Light& light, int face, const ShadowOptions& options,
+                                const FitScene& scene, int mapSize, HeldExtent* held) {
+    FitBoxes boxes = visibleReceivers(scene, true);
+    boxes.held = held;
+    // The face's texels at its rim are 2 / mapSize tan units wide, as a cube's: a lookup
+    // there reads as far past the rim as a cube's lookup reads into the next face.
+    const float margin = cubeLookupReachTexels(options) * 2.0f / float(std::max(mapSize, 1));
+    return fit::fitPointFace(light.position, face, margin, scene.samples, boxes, mapSize);
+}
+
 float cubeLookupReachTexels(const ShadowOptions& options) {
     // The filter's widest tap with its bilinear footprint (the moment filters' cubes take the
     // default 3 x 3 PCF; PCSS searches and filters up to kPcssMaxTexels, 48).

@@ -116,6 +116,12 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
 LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& options,
                                        const Camera& view, const FitScene& scene, int& size,
                                        HeldExtent* held = nullptr);
+// A point light's face `face` (0..5, as cubeFaceRotation) as a map of its own, a perspective
+// frustum over the face's pyramid (widened by what a lookup at its rim reads, from
+// cubeLookupReachTexels) narrowed to the view's samples in it (fit::fitPointFace). What a
+// point light the view sees all around gets instead of a cube when view samples exist.
+LightCameraFrame pointFaceFrame(const Light& light, int face, const ShadowOptions& options,
+                                const FitScene& scene, int mapSize, HeldExtent* held = nullptr);
 // How far from its point's own texel, in texels of a cube face, a point light's lookup may
 // read under `options` (shaders/cube_lookup.glsl): what the faces a view needs are widened by.
 float cubeLookupReachTexels(const ShadowOptions& options);

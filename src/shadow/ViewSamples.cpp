@@ -110,6 +110,15 @@ bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
         const float depth = -v.z, pad = samples.pad(p.w);
         // Wholly behind the camera's plane: outside any limit (a cone narrower than 180°).
         if (limit && depth + pad < 0.0f) continue;
+        // Wholly beside the limit's pyramid (x / -z beyond its widest tan on some side, with
+        // the pad): a sample near the camera's plane but far to one side, which another of a
+        // point light's faces holds (fitPointFace), does not make the window impossible.
+        if (limit) {
+            const float widest = std::max({std::abs(limit->lo.x), std::abs(limit->hi.x),
+                                           std::abs(limit->lo.y), std::abs(limit->hi.y)});
+            const float beside = std::max(std::abs(v.x), std::abs(v.y)) - pad;
+            if (beside > widest * std::max(depth + pad, 0.0f)) continue;
+        }
         if (!(depth > pad)) return false;
         const glm::vec2 t = glm::vec2(v) / depth;
         // A move by `pad` changes x / -z by at most pad (1 + |t|) / (depth - pad).

@@ -251,7 +251,7 @@ cascades)
     ;;
 map_sizes)
     # A light without a map size takes its default: 2048 for a sun, a spot and a point light
-    # drawn as one map, 1024 per face for a point light drawn as a cube.
+    # drawn as one map, 1024 per face for a point light drawn as a cube or as maps per face.
     cat >"$work/lights.json" <<'JSON'
 {"gnomon-scene": 1, "include": [{"scene": "book-triangle"}],
  "lights": [{"type": "directional", "direction": [0, -1, 0.2]},
@@ -268,6 +268,9 @@ JSON
     expect 0 "light 2: 512² map"
     expect 0 "light 3: 1024² cube"
     expect 0 "light 4: 2048² map"
+    run --verbose render --scene "$work/lights.json" --cascades 1 --point-maps faces --size 64x64 \
+        --out "$work/m.png"
+    expect 0 "light 3 face 3 (-Y): 1024² map"
     # The same point light far above the triangle, whose view then fits one frustum.
     sed 's/"position": \[0, 1, 0\]/"position": [0, 40, 0.1]/' "$work/lights.json" >"$work/far.json"
     run --verbose render --scene "$work/far.json" --cascades 1 --size 64x64 --out "$work/m.png"

@@ -41,6 +41,7 @@ TEST(DebugViews, ShadowMapUnfoldsACubeInTwoRows) {
     o.width = 3 * 128;
     o.height = 2 * 128;
     o.shadow.mapSize = 128;
+    o.shadow.pointMaps = PointMaps::Cube;
     o.debugView = DebugView::ShadowMap;
     const Image view = sharedRenderer().render(s, o);
     const auto maps = sharedRenderer().shadowMaps();

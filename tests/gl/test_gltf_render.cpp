@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 
 #include "GlTest.h"
 
@@ -19,6 +20,7 @@ TEST(GltfRender, LampsFivePointLightsCastShadows) {
     const Scene s = loadScene(file);
     RenderOptions o = s.options;
     o.width = o.height = 128;
+    o.shadow.pointMaps = PointMaps::Cube;
     sharedRenderer().render(s, o);
     auto maps = sharedRenderer().shadowMaps();
     EXPECT_EQ(maps.size(), 5u);
@@ -26,6 +28,16 @@ TEST(GltfRender, LampsFivePointLightsCastShadows) {
     // fitted to boxes, every point light gets a cube.
     for (const ShadowMapImage& m : maps)
         EXPECT_TRUE(m.depth.width == m.depth.height || m.depth.width == 6 * m.depth.height);
+    // With faces of their own, every light still has a map, and only squares.
+    o.shadow.pointMaps = PointMaps::Faces;
+    sharedRenderer().render(s, o);
+    maps = sharedRenderer().shadowMaps();
+    std::set<int> lights;
+    for (const ShadowMapImage& m : maps) {
+        lights.insert(m.light);
+        EXPECT_EQ(m.depth.width, m.depth.height);
+    }
+    EXPECT_EQ(lights.size(), 5u);
     o.shadow.fitTo = FitTo::Boxes;
     sharedRenderer().render(s, o);
     maps = sharedRenderer().shadowMaps();

@@ -13,6 +13,7 @@ TEST(PassTiming, ListsEveryPassInOrder) {
     const Scene s = builtinScene("mixed-lights");
     RenderOptions o = s.options;
     o.width = o.height = 64;
+    o.shadow.pointMaps = PointMaps::Cube;  // one map per light
     r.setPassTiming(true);
     r.invalidateShadowMaps();
     r.render(s, o);
@@ -62,6 +63,7 @@ TEST(PassTiming, BareDepthPassNeedsASingleFrustumMap) {
     r.render(s, o);
     EXPECT_GT(r.measureBareDepthPass(256), 0.0);
     s = builtinScene("tutorial-point");
+    o.shadow.pointMaps = PointMaps::Cube;
     r.render(s, o);
     EXPECT_EQ(r.measureBareDepthPass(256), -1.0);
     EXPECT_THROW(r.measureBareDepthPass(0), Error);
