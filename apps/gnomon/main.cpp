@@ -79,10 +79,10 @@ void writeOutputs(const RenderArgs& args, gnomon::Renderer& renderer, const gnom
     gnomon::writeImage(files.add(args.out), image);
     for (const gnomon::ShadowMapImage& map :
          maps ? renderer.shadowMaps() : std::vector<gnomon::ShadowMapImage>{}) {
-        const std::string path = files.file(
-            "light-" + std::to_string(map.light) +
-            (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") +
-            (map.face >= 0 ? "-face-" + std::to_string(map.face) : "") + ".png");
+        const std::string path =
+            files.file("light-" + std::to_string(map.light) +
+                       (map.cascade >= 0 ? "-cascade-" + std::to_string(map.cascade) : "") +
+                       (map.face >= 0 ? "-face-" + std::to_string(map.face) : "") + ".png");
         gnomon::writePng(path, map.depth);
         if (verbose) std::fprintf(stderr, "gnomon: wrote %s\n", path.c_str());
     }

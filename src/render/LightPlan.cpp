@@ -89,8 +89,7 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
     mFitCamera = fitCamera ? *fitCamera : s.camera;
     // Faces of their own only with the view's samples to fit them to (a face fitted to boxes
     // is no finer than the cube's), and while their records fit the main pass.
-    const bool faces =
-        samples && !samples->empty() && options.shadow.pointMaps == PointMaps::Faces;
+    const bool faces = samples && !samples->empty() && options.shadow.pointMaps == PointMaps::Faces;
     planLights(s, options, scene, samples, faces);
     if (mHasFaces && int(mLights.size() + mCascadeRecords.size()) > mRecordLimit)
         planLights(s, options, scene, samples, false);

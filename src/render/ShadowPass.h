@@ -35,7 +35,7 @@ struct ShadowedLight {
     // cascade's blend band; every depth for the others).
     float depthFrom = 0.0f, depthTo = std::numeric_limits<float>::max();
     glm::ivec2 origin{0};  // 2D maps: the map's lower-left texel in its layer (shadow pass)
-    int face = -1;  // a point light's face drawn as a map of its own (0..5), else -1
+    int face = -1;         // a point light's face drawn as a map of its own (0..5), else -1
 };
 
 // What a light's map sees, for culling what it need not draw: its clip volume (casters in

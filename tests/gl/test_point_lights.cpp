@@ -170,7 +170,6 @@ TEST_P(Octants, DrawOnlyTheFacesTheViewLooksUp) {
     }
 }
 
-
 // A lamp close above a thin bar on a wide ground, seen from near the bar's shadow with the
 // horizon in view: the view needs several faces, so one frustum cannot hold it, and a cube
 // spends each face's texels on the whole 90 degrees. Maps per face fitted to what the view
@@ -178,9 +177,11 @@ TEST_P(Octants, DrawOnlyTheFacesTheViewLooksUp) {
 // ground under a close lamp: 2.2 % of the view misclassified with the cube, 1.1 % with faces).
 TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
     Scene s = greyScene("bar on a ground");
-    s.meshes.push_back(mesh::box("ground", glm::vec3(0.0f, -0.05f, 0.0f), glm::vec3(20, 0.05f, 20)));
+    s.meshes.push_back(
+        mesh::box("ground", glm::vec3(0.0f, -0.05f, 0.0f), glm::vec3(20, 0.05f, 20)));
     s.objects.push_back({"ground", 0, 0, glm::mat4(1.0f), {}, true, true});
-    s.meshes.push_back(mesh::box("bar", glm::vec3(0.3f, 0.5f, 0.0f), glm::vec3(0.01f, 0.01f, 0.3f)));
+    s.meshes.push_back(
+        mesh::box("bar", glm::vec3(0.3f, 0.5f, 0.0f), glm::vec3(0.01f, 0.01f, 0.3f)));
     s.objects.push_back({"bar", 1, 0, glm::mat4(1.0f), {}, true, true});
     Light l;
     l.type = LightType::Point;
