@@ -5,6 +5,8 @@
 // the layered single pass.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "GeometryShadows.h"
 #include "GlTest.h"
 #include "render/GpuScene.h"
@@ -218,6 +220,44 @@ TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
     EXPECT_LT(faces.misclassified, 0.5 * cube.misclassified)
         << "faces " << faces.misclassified << ", cube " << cube.misclassified;
     EXPECT_LT(faces.falseShadowOutsideBand + faces.leakOutsideBand, 0.0005);
+}
+
+// Each face map takes a light record, as a cascade does. A frame whose point lights' faces
+// would pass the main pass's records gives them cubes instead, rather than failing: 48
+// lamps low over a floor, each seen in five faces, would need 288 of the 256 records.
+TEST(PointLights, TooManyFaceRecordsFallBackToCubes) {
+    Scene s = greyScene("48 lamps");
+    s.meshes.push_back(mesh::box("floor", glm::vec3(0.0f, -0.05f, 0.0f), glm::vec3(10, 0.05f, 10)));
+    s.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, true, true});
+    s.meshes.push_back(mesh::box("post", glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0.1f, 0.5f, 0.1f)));
+    s.objects.push_back({"post", 1, 0, glm::mat4(1.0f), {}, true, true});
+    for (int i = 0; i < 48; ++i) {
+        Light l;
+        l.type = LightType::Point;
+        const float a = 0.1309f * float(i);  // 2 pi / 48
+        l.position = glm::vec3(3.0f * std::cos(a), 0.3f, 3.0f * std::sin(a));
+        l.intensity = 0.05f;
+        l.shadowMapSize = 64;
+        s.lights.push_back(l);
+    }
+    s.camera.eye = glm::vec3(0.0f, 6.0f, 8.0f);
+    s.camera.centre = glm::vec3(0.0f);
+    RenderOptions o;
+    o.width = o.height = 64;
+    Renderer& r = sharedRenderer();
+    const Image all = r.render(s, o);
+    int cubes = 0;
+    for (const MapUsage& u : r.mapUsage())
+        cubes += u.cube;
+    EXPECT_EQ(cubes, 48);
+    // The first ten alone fit: maps per face.
+    s.lights.resize(10);
+    r.render(s, o);
+    const std::vector<MapUsage> usage = r.mapUsage();
+    EXPECT_GT(usage.size(), 10u);
+    for (const MapUsage& u : usage)
+        EXPECT_FALSE(u.cube) << "light " << u.light;
+    EXPECT_EQ(all.width, 64);
 }
 
 INSTANTIATE_TEST_SUITE_P(PointLights, Octants, testing::Range(0, 8));
