@@ -307,8 +307,8 @@ void Viewer::filterControls() {
                  "blend-shadows", "contact-length"});
     }
     if (ImGui::CollapsingHeader("Cascades", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"cascades", "fit-to", "point-maps", "stabilise", "cascade-lambda",
-                 "cascade-blend"});
+        options(
+            {"cascades", "fit-to", "point-maps", "stabilise", "cascade-lambda", "cascade-blend"});
     }
     if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) {
         options({"shadowed", "shadow-factor", "output-encoding", "dither", "light-tiles",
