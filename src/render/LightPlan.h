@@ -69,11 +69,13 @@ private:
                     const shadow::ViewSamples* samples, bool faces);
 
     static constexpr int kMaxCascades = 4;
-    // What a following frame keeps of the previous one, per scene light: its single map's
-    // extent (maps[0]), its cascades' (0..3) or its faces' (1..6), and the depth range its
-    // cascades split.
+    // Extents a light may hold: its single map's (0, also where a point light tries one
+    // frustum), its cascades' (0..3) or its faces' (1..6, apart from the frustum it tried).
+    static constexpr int kHeldMaps = 7;
+    // What a following frame keeps of the previous one, per scene light: its maps' extents
+    // and the depth range its cascades split.
     struct Held {
-        shadow::HeldExtent maps[7];
+        shadow::HeldExtent maps[kHeldMaps];
         glm::vec2 splitRange{0.0f};
         int cascades = 0;  // 0: no range held
     };
