@@ -193,19 +193,23 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
 // view's samples it holds. A cube spends the same texels on every direction; a model on a
 // ground under a close lamp lands on a few percent of the faces it appears in (Stanford
 // Dragon, a point light 0.3 above it: 2 % of the cube, 2.2 % of the view misclassified).
-// Without a window (a sample's footprint reaches the light), the whole widened face.
+// Without a window (a sample's footprint reaches the light), or where the window, with its
+// margin and quantised size, would be no finer than the whole widened face (the view sees
+// all of the face), the whole face: it never moves, so it needs no steadying either.
 LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginTan,
                               const ViewSamples* samples, const FitBoxes& boxes, int mapSize) {
     const glm::mat4 lightFromWorld =
         cubeFaceRotation(face) * glm::translate(glm::mat4(1.0f), -position);
     const float t = 1.0f + std::max(marginTan, 0.0f);
     const SampleWindow faceWindow{glm::vec2(-t), glm::vec2(t), 0.0f};
+    const LightCameraFrame whole =
+        fitFrustum(lightFromWorld, faceWindow.lo, faceWindow.hi, boxes, mapSize);
     SampleWindow window;
     if (samples && samplesWindow(*samples, lightFromWorld, window, &faceWindow)) {
         const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
-        if (f.valid) return f;
+        if (f.valid && !(whole.valid && f.texelWorldSize >= whole.texelWorldSize)) return f;
     }
-    return fitFrustum(lightFromWorld, faceWindow.lo, faceWindow.hi, boxes, mapSize);
+    return whole;
 }
 
 // A spot light: its cone's square window, narrowed to the part of it where the view's samples

@@ -320,6 +320,47 @@ TEST(ViewSamples, HeldFrustumsStayPutWhileTheCameraMovesALittle) {
     }
 }
 
+// A lamp low over the ground, which the view sees all around it: a cube. Each face the view
+// looks up, as a map of its own, holds every sample whose direction from the lamp leaves
+// through that face, within its clip volume; a face the view sees whole is no coarser than
+// the cube's (but for the margin its rim reads past), and the downward face, which the view
+// sees part of, is finer.
+TEST(ViewSamples, PointLightFacesHoldTheirSamples) {
+    Light lamp;
+    lamp.type = LightType::Point;
+    lamp.position = {0.5f, 1.5f, 4.5f};  // its downward face partly behind the camera
+    const Camera camera = groundCamera();
+    shadow::ViewSamples samples;
+    const shadow::FitScene scene = groundWithPost(camera, samples);
+    ShadowOptions options;
+    const int size = 1024;
+    const shadow::LightCameraFrame cube = shadow::lightCameraFrame(lamp, camera, scene, size);
+    ASSERT_EQ(cube.kind, shadow::FrameKind::Cube);
+    float finest = 1e9f;
+    for (int face = 0; face < 6; ++face) {
+        const shadow::LightCameraFrame f = shadow::pointFaceFrame(lamp, face, options, scene, size);
+        int held = 0;
+        for (const glm::vec4& p : samples.points) {
+            const glm::vec3 d = glm::vec3(p) - lamp.position, a = glm::abs(d);
+            const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+            if (2 * axis + (d[axis] < 0.0f ? 1 : 0) != face) continue;
+            ASSERT_TRUE(f.valid) << "face " << face;
+            ++held;
+            const glm::vec4 c = f.clipFromWorld() * glm::vec4(glm::vec3(p), 1.0f);
+            EXPECT_GT(c.w, 0.0f);
+            EXPECT_LE(std::abs(c.x), c.w) << "face " << face;
+            EXPECT_LE(std::abs(c.y), c.w) << "face " << face;
+            // A sample stands for the surface within its pad (here up to a cell below it).
+            EXPECT_LE(c.w, f.far + samples.pad(p.w)) << "beyond far, face " << face;
+        }
+        if (!held) continue;
+        EXPECT_EQ(f.kind, shadow::FrameKind::Perspective);
+        EXPECT_LE(f.texelWorldSize, 1.05f * cube.texelWorldSize) << "face " << face;
+        finest = std::min(finest, f.texelWorldSize);
+    }
+    EXPECT_LT(finest, 0.9f * cube.texelWorldSize);
+}
+
 TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
     shadow::ViewSamples samples;
     samples.points = {{1.0f, 0.0f, -2.0f, 1.0f}, {-1.0f, 0.5f, -4.0f, 1.0f}};
@@ -357,6 +398,15 @@ TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
     // A sample within its pad of the camera's plane: no window.
     samples.points.emplace_back(2.0f, 0.0f, -0.05f, 1.0f);
     EXPECT_FALSE(shadow::samplesWindow(samples, glm::mat4(1.0f), w));
+    // Unless a limit leaves it out: beside a point light's face (|x| <= |z|, widened a
+    // little), the sample near the plane belongs to another face and this one still fits.
+    const shadow::SampleWindow face{glm::vec2(-1.05f), glm::vec2(1.05f), 0.0f};
+    ASSERT_TRUE(shadow::samplesWindow(samples, glm::mat4(1.0f), w, &face));
+    EXPECT_FLOAT_EQ(w.farthest, 4.1f);
+    EXPECT_LT(w.hi.x, 1.0f);
+    // Near the plane and within the face's sides (its pad reaches into the face): no window.
+    samples.points.back() = {0.02f, 0.0f, -0.05f, 1.0f};
+    EXPECT_FALSE(shadow::samplesWindow(samples, glm::mat4(1.0f), w, &face));
 }
 
 TEST(ViewSamples, MapShareCountsTheSquaresTheSamplesLandOn) {
