@@ -140,8 +140,8 @@ struct ShadowOptions {
     // Fitted directional lights: 1..4 maps along the view; 0 = auto: with fitTo ViewDepth,
     // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
     int cascades = 0;
-    FitTo fitTo = FitTo::ViewDepth;          // what fitted lights cover (docs/techniques.md)
-    PointMaps pointMaps = PointMaps::Faces;  // Faces needs fitTo ViewDepth (docs/techniques.md)
+    FitTo fitTo = FitTo::ViewDepth;         // what fitted lights cover (docs/techniques.md)
+    PointMaps pointMaps = PointMaps::Cube;  // Faces needs fitTo ViewDepth (docs/techniques.md)
     // Fitted maps that follow the view keep a quantised size and move in whole texels, so
     // their edges hold still while the camera moves; false refits them exactly every frame
     // (each map uses its texels a little better, and its shadows shimmer).

@@ -125,9 +125,10 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          ENUM(shadow.fitTo, FitTo)});
     add({.name = "point-maps",
          .group = "Shadow maps",
-         .doc = "a fitted point light the view sees in more than one cube face: with --fit-to "
-                "view-depth, a map per face fitted to what the view sees there, or one cube "
-                "(every direction at one density; always with --fit-to boxes)",
+         .doc = "a fitted point light the view sees in more than one cube face: one cube (every "
+                "direction at one density), or, with --fit-to view-depth, a map per face fitted "
+                "to what the view sees there (finer on real scenes; not the default: "
+                "docs/techniques.md)",
          .kind = K::Choice,
          .choices = namesOf<PointMaps>(),
          ENUM(shadow.pointMaps, PointMaps)});

@@ -71,7 +71,7 @@ struct Agreement {
     int shadowed = 0, darker = 0, lit = 0, same = 0;
 };
 
-Agreement agreementWithRays(const Scene& s, PointMaps maps = PointMaps::Faces) {
+Agreement agreementWithRays(const Scene& s, PointMaps maps) {
     RenderOptions o;
     o.width = o.height = 256;
     o.shadow.pointMaps = maps;
@@ -118,8 +118,8 @@ std::string faceName(const testing::TestParamInfo<int>& info) {
 
 // A wide view from beside the light into one octant (three plates, each in its own face)
 // needs a cube but looks up only the octant's three faces: only those are drawn (fitted to
-// boxes, with no view to go by, all six are), or only those get maps of their own (the
-// default, --point-maps faces), and the shadows still agree with rays either way.
+// boxes, with no view to go by, all six are), or only those get maps of their own
+// (--point-maps faces), and the shadows still agree with rays either way.
 class Octants : public testing::TestWithParam<int> {};
 
 TEST_P(Octants, DrawOnlyTheFacesTheViewLooksUp) {
@@ -243,6 +243,7 @@ TEST(PointLights, TooManyFaceRecordsFallBackToCubes) {
     s.camera.eye = glm::vec3(0.0f, 6.0f, 8.0f);
     s.camera.centre = glm::vec3(0.0f);
     RenderOptions o;
+    o.shadow.pointMaps = PointMaps::Faces;
     o.width = o.height = 64;
     Renderer& r = sharedRenderer();
     const Image all = r.render(s, o);
@@ -299,7 +300,7 @@ Scene towardsAFaceCorner() {
 
 TEST(PointLights, CasterTowardsAFaceCornerShadowsTheReceiverBehindIt) {
     const Scene s = towardsAFaceCorner();
-    const Agreement n = agreementWithRays(s);
+    const Agreement n = agreementWithRays(s, RenderOptions{}.shadow.pointMaps);
     EXPECT_GE(n.shadowed, 100);
     EXPECT_GE(n.lit, 1000);
     EXPECT_EQ(n.darker, n.shadowed) << "the caster's shadow leaks: near plane behind the caster";
