@@ -202,14 +202,13 @@ LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginT
         cubeFaceRotation(face) * glm::translate(glm::mat4(1.0f), -position);
     const float t = 1.0f + std::max(marginTan, 0.0f);
     const SampleWindow faceWindow{glm::vec2(-t), glm::vec2(t), 0.0f};
-    const LightCameraFrame whole =
-        fitFrustum(lightFromWorld, faceWindow.lo, faceWindow.hi, boxes, mapSize);
     SampleWindow window;
     if (samples && samplesWindow(*samples, lightFromWorld, window, &faceWindow)) {
         const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
-        if (f.valid && !(whole.valid && f.texelWorldSize >= whole.texelWorldSize)) return f;
+        // The whole face's texel, as fitFrustum sizes it, without fitting it.
+        if (f.valid && f.texelWorldSize < 2.0f * t / float(mapSize)) return f;
     }
-    return whole;
+    return fitFrustum(lightFromWorld, faceWindow.lo, faceWindow.hi, boxes, mapSize);
 }
 
 // A spot light: its cone's square window, narrowed to the part of it where the view's samples
