@@ -80,7 +80,7 @@ enum class FitTo {
 // How a fitted point light that the view sees in more than one cube face is mapped.
 enum class PointMaps {
     Faces,  // each face the view looks up, a perspective map fitted to what it sees there
-            // (with FitTo::ViewDepth; else a cube)
+            // (with FitTo::ViewDepth and a filter other than PCSS; else a cube)
     Cube,   // one cube map: every direction at the same density
 };
 
@@ -140,8 +140,8 @@ struct ShadowOptions {
     // Fitted directional lights: 1..4 maps along the view; 0 = auto: with fitTo ViewDepth,
     // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
     int cascades = 0;
-    FitTo fitTo = FitTo::ViewDepth;         // what fitted lights cover (docs/techniques.md)
-    PointMaps pointMaps = PointMaps::Cube;  // Faces needs fitTo ViewDepth (docs/techniques.md)
+    FitTo fitTo = FitTo::ViewDepth;          // what fitted lights cover (docs/techniques.md)
+    PointMaps pointMaps = PointMaps::Faces;  // needs fitTo ViewDepth (docs/techniques.md)
     // Fitted maps that follow the view keep a quantised size and move in whole texels, so
     // their edges hold still while the camera moves; false refits them exactly every frame
     // (each map uses its texels a little better, and its shadows shimmer).

@@ -125,10 +125,9 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          ENUM(shadow.fitTo, FitTo)});
     add({.name = "point-maps",
          .group = "Shadow maps",
-         .doc = "a fitted point light the view sees in more than one cube face: one cube (every "
-                "direction at one density), or, with --fit-to view-depth, a map per face fitted "
-                "to what the view sees there (finer on real scenes; not the default: "
-                "docs/techniques.md)",
+         .doc = "a fitted point light the view sees in more than one cube face: with --fit-to "
+                "view-depth, a map per face fitted to what the view sees there (finer on real "
+                "scenes; pcss keeps cubes), or one cube (every direction at one density)",
          .kind = K::Choice,
          .choices = namesOf<PointMaps>(),
          ENUM(shadow.pointMaps, PointMaps)});

@@ -88,8 +88,13 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
     mMade.valid = false;  // until this plan is whole
     mFitCamera = fitCamera ? *fitCamera : s.camera;
     // Faces of their own only with the view's samples to fit them to (a face fitted to boxes
-    // is no finer than the cube's), and while their records fit the main pass.
-    const bool faces = samples && !samples->empty() && options.shadow.pointMaps == PointMaps::Faces;
+    // is no finer than the cube's), and while their records fit the main pass. Not under PCSS:
+    // its 48-texel search widens each face by ~150 texels a side (cubeLookupReachTexels), a
+    // face map 1.3x coarser than the cube's, and on tutorial-point it shadowed 0.055 % of
+    // the view away from edges where the cube shadowed none.
+    const bool faces = samples && !samples->empty() &&
+                       options.shadow.pointMaps == PointMaps::Faces &&
+                       options.shadow.filter != ShadowFilter::Pcss;
     planLights(s, options, scene, samples, faces);
     if (mHasFaces && int(mLights.size() + mCascadeRecords.size()) > mRecordLimit)
         planLights(s, options, scene, samples, false);

@@ -52,6 +52,7 @@ RenderOptions textbookSettings(RenderOptions o, DepthFormat format, MapFilter lo
     o.shadow.normalOffset = 0.0f;
     o.shadow.receiverPlane = false;
     o.shadow.cull = CullMode::None;
+    o.shadow.pointMaps = PointMaps::Cube;  // the tutorial's point light is one cube map
     return o;
 }
 

@@ -161,6 +161,13 @@ TEST_P(Octants, DrawOnlyTheFacesTheViewLooksUp) {
         const int axis = u.face / 2;
         EXPECT_EQ(u.face % 2 == 1, octant[axis] < 0.0f) << "face " << u.face;
     }
+    // PCSS keeps the cube (its search would widen each face's map by ~150 texels a side).
+    RenderOptions pcss = o;
+    pcss.shadow.filter = ShadowFilter::Pcss;
+    r.render(s, pcss);
+    usage = r.mapUsage();
+    ASSERT_EQ(usage.size(), 1u);
+    EXPECT_TRUE(usage[0].cube);
     for (PointMaps maps : {PointMaps::Cube, PointMaps::Faces}) {
         const Agreement n = agreementWithRays(s, maps);
         SCOPED_TRACE(toString(maps));
