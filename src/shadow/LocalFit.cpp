@@ -153,6 +153,44 @@ LightCameraFrame fitWindow(const glm::mat4& lightFromWorld, const SampleWindow& 
     return fitFrustum(lightFromWorld, lo, hi, boxes, mapSize, farthest);
 }
 
+// Narrows `window` (tan units of `lightFromWorld`, as samplesWindow gives it) to where a
+// caster could shadow what it holds: the casters' boxes clipped to its pyramid, out to its
+// farthest sample, seen from the light, grown by `marginTan`. A point the window then leaves
+// out lies beside every caster seen from the light, so it is lit, as a lookup outside the map
+// reads it (a model on a wide ground under a close lamp: the ground the view sees around the
+// model's shadow took most of the map). False when no caster reaches into the window.
+bool narrowToCasters(const glm::mat4& lightFromWorld, SampleWindow& window,
+                     const std::vector<Aabb>& casters, float marginTan) {
+    const float far = window.farthest, near = far * 1e-4f;  // fitFrustum clamps at 1e-3
+    const glm::mat4 volume = glm::frustum(window.lo.x * near, window.hi.x * near,
+                                          window.lo.y * near, window.hi.y * near, near, far) *
+                             lightFromWorld;
+    const std::array<glm::vec3, 8> corners = frustumCorners(volume);
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const Aabb& c : casters) {
+        if (c.empty() || outsideClipVolume(c, volume, false)) continue;
+        const ClippedPoints inside = clipToFrustum(c, volume, corners);
+        for (int i = 0; i < inside.count; ++i) {
+            const glm::vec3 v =
+                glm::vec3(lightFromWorld * glm::vec4(inside.points[size_t(i)], 1.0f));
+            if (!(-v.z > 0.0f)) continue;
+            lo = glm::min(lo, glm::vec2(v) / -v.z);
+            hi = glm::max(hi, glm::vec2(v) / -v.z);
+        }
+    }
+    window.lo = glm::max(window.lo, lo - marginTan);
+    window.hi = glm::min(window.hi, hi + marginTan);
+    return glm::all(glm::lessThan(window.lo, window.hi));
+}
+
+// The margin narrowToCasters leaves around the casters of a spot's or a point light's
+// frustum: 16 of the samples' window's texels (what a lookup's taps and offsets may read past
+// a caster's box, with room to spare).
+float windowMargin(const SampleWindow& window, int mapSize) {
+    return 16.0f * std::max(window.hi.x - window.lo.x, window.hi.y - window.lo.y) /
+           float(std::max(mapSize, 1));
+}
+
 }  // namespace
 
 // A point light: when the view's samples all lie in a window no wider than a cube face's
@@ -171,7 +209,8 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
     if (held && held->valid &&
         glm::length(glm::vec3(held->rotation * glm::vec4(position, 1.0f))) <=
             1e-5f * (1.0f + glm::length(position)) &&
-        samplesWindow(*samples, held->rotation, window)) {
+        samplesWindow(*samples, held->rotation, window) &&
+        narrowToCasters(held->rotation, window, *boxes.casters, windowMargin(window, mapSize))) {
         const LightCameraFrame f = fitWindow(held->rotation, window, boxes, mapSize, 2.0f, true);
         if (f.valid) return f;
     }
@@ -183,7 +222,10 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
         axis = {std::cos(pitch) * std::sin(yaw), std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
     }
     const glm::mat4 lightFromWorld = safeLookAt(position, position + axis, glm::vec3(0, 1, 0));
-    if (!samplesWindow(*samples, lightFromWorld, window)) return fitCube(position, boxes, mapSize);
+    if (!samplesWindow(*samples, lightFromWorld, window) ||
+        !narrowToCasters(lightFromWorld, window, *boxes.casters, windowMargin(window, mapSize))) {
+        return fitCube(position, boxes, mapSize);
+    }
     const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 2.0f);
     return f.valid ? f : fitCube(position, boxes, mapSize);
 }
@@ -204,6 +246,11 @@ LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginT
     const SampleWindow faceWindow{glm::vec2(-t), glm::vec2(t), 0.0f};
     SampleWindow window;
     if (samples && samplesWindow(*samples, lightFromWorld, window, &faceWindow)) {
+        if (!narrowToCasters(lightFromWorld, window, *boxes.casters, marginTan)) {
+            LightCameraFrame none;
+            none.valid = false;  // nothing the view sees through this face can be shadowed
+            return none;
+        }
         const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
         // The whole face's texel, as fitFrustum sizes it, without fitting it.
         if (f.valid && f.texelWorldSize < 2.0f * t / float(mapSize)) return f;
@@ -222,8 +269,11 @@ LightCameraFrame fitSpot(const glm::vec3& position, const glm::vec3& axis, float
     SampleWindow window;
     if (samples && samplesWindow(*samples, lightFromWorld, window, &cone)) {
         // The window lies in the cone; its margin may take it a few texels past the cone.
-        const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
-        if (f.valid) return f;
+        if (narrowToCasters(lightFromWorld, window, *boxes.casters,
+                            windowMargin(window, mapSize))) {
+            const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
+            if (f.valid) return f;
+        }
     }
     return fitFrustum(lightFromWorld, cone.lo, cone.hi, boxes, mapSize);
 }

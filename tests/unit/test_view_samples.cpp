@@ -361,6 +361,75 @@ TEST(ViewSamples, PointLightFacesHoldTheirSamples) {
     EXPECT_LT(finest, 0.9f * cube.texelWorldSize);
 }
 
+// Whether the segment from `a` to `b` passes through `box` (slabs).
+bool segmentCrosses(const glm::vec3& a, const glm::vec3& b, const Aabb& box) {
+    float from = 0.0f, to = 1.0f;
+    for (int k = 0; k < 3; ++k) {
+        const float d = b[k] - a[k];
+        if (std::abs(d) < 1e-9f) {
+            if (a[k] < box.min[k] || a[k] > box.max[k]) return false;
+            continue;
+        }
+        float t0 = (box.min[k] - a[k]) / d, t1 = (box.max[k] - a[k]) / d;
+        if (t0 > t1) std::swap(t0, t1);
+        from = std::max(from, t0);
+        to = std::min(to, t1);
+    }
+    return from <= to;
+}
+
+// Over a ground that casts nothing (a receiver only), a light's map need only hold what the
+// post can shadow: a point seen from the light beside every caster is lit, as a lookup
+// outside the map reads it. The lamp's face towards the post maps a window around the post,
+// several times finer than over all it sees; its downward face, with no caster between it
+// and the ground it sees, gets no map; every sample whose way to the lamp crosses the post
+// lies in the map of the face it leaves through. A spot over the ground narrows the same way.
+TEST(ViewSamples, MapsNarrowToWhereCastersCanShadow) {
+    const Camera camera = groundCamera();
+    shadow::ViewSamples samples;
+    shadow::FitScene scene = groundWithPost(camera, samples);
+    const Aabb post = scene.casters[1];
+    shadow::FitScene postOnly = scene;
+    postOnly.casters = {post};
+    Light lamp;
+    lamp.type = LightType::Point;
+    lamp.position = {0.5f, 1.5f, 4.5f};
+    ShadowOptions options;
+    const int size = 1024;
+    int crossing = 0;
+    for (int face = 0; face < 6; ++face) {
+        const shadow::LightCameraFrame all =
+            shadow::pointFaceFrame(lamp, face, options, scene, size);
+        const shadow::LightCameraFrame narrow =
+            shadow::pointFaceFrame(lamp, face, options, postOnly, size);
+        if (face == 5) {  // -Z, towards the post
+            ASSERT_TRUE(all.valid && narrow.valid);
+            EXPECT_LT(narrow.texelWorldSize, 0.5f * all.texelWorldSize);
+        }
+        if (face == 3) {  // -Y: the ground around the lamp, nothing above it
+            EXPECT_TRUE(all.valid);
+            EXPECT_FALSE(narrow.valid);
+        }
+        for (const glm::vec4& p : samples.points) {
+            const glm::vec3 d = glm::vec3(p) - lamp.position, a = glm::abs(d);
+            const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+            if (2 * axis + (d[axis] < 0.0f ? 1 : 0) != face) continue;
+            if (!segmentCrosses(glm::vec3(p), lamp.position, post)) continue;
+            ++crossing;
+            ASSERT_TRUE(narrow.valid) << "face " << face;
+            const glm::vec4 c = narrow.clipFromWorld() * glm::vec4(glm::vec3(p), 1.0f);
+            EXPECT_LE(std::abs(c.x), c.w) << "face " << face;
+            EXPECT_LE(std::abs(c.y), c.w) << "face " << face;
+        }
+    }
+    EXPECT_GT(crossing, 20);  // the post's shadow is in view
+    const Light spot = wideSpot();
+    const shadow::LightCameraFrame wide = shadow::lightCameraFrame(spot, camera, scene, size);
+    const shadow::LightCameraFrame narrow = shadow::lightCameraFrame(spot, camera, postOnly, size);
+    ASSERT_TRUE(wide.valid && narrow.valid);
+    EXPECT_LT(narrow.texelWorldSize, 0.5f * wide.texelWorldSize);
+}
+
 TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
     shadow::ViewSamples samples;
     samples.points = {{1.0f, 0.0f, -2.0f, 1.0f}, {-1.0f, 0.5f, -4.0f, 1.0f}};
