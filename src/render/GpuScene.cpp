@@ -188,6 +188,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     const size_t n = scene.objects.size();
     const bool resized = mObjectData.size() != n;
     mObjectData.resize(n);
+    mCasts.resize(n);
     mItems.resize(n);
     bool dataChanged = resized;
     mBounds = Aabb();
@@ -218,6 +219,10 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         if (resized || std::memcmp(&g, &mObjectData[i], sizeof g) != 0) {
             mObjectData[i] = g;
             dataChanged = true;
+        }
+        if (mCasts[i] != std::uint8_t(o.castsShadows)) {
+            mCasts[i] = std::uint8_t(o.castsShadows);
+            changed = true;
         }
         const Aabb box = mMeshBounds[o.mesh].transformed(g.worldFromModel);
         mBounds.extend(box);

@@ -154,6 +154,9 @@ private:
     mutable GLsizei mDivisor = 1;
     gl::VertexArray mVao;
     std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
+    // Each object's castsShadows as last synced: not in its record, yet a change must redraw
+    // the maps and refit the lights (a new revision).
+    std::vector<std::uint8_t> mCasts;
     std::vector<DrawItem> mItems;
     std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
     // Stand-in casters by detail: the ones made for the current geometry (empty indices: the
