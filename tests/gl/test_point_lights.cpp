@@ -229,6 +229,42 @@ TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
     EXPECT_LT(faces.falseShadowOutsideBand + faces.leakOutsideBand, 0.0005);
 }
 
+// The same bar over a ground that casts nothing (a receiver only, as --ground's is): what the
+// view sees of the ground beyond the bar's shadow cannot be shadowed, so the maps hold only
+// the bar's footprint seen from the lamp (narrowToCasters), which reads lit outside them.
+// The shadows are those of the casting ground's scene (a flat ground under the lamp shadows
+// nothing), drawn from much finer maps, and still agree with rays away from edges.
+TEST(PointLights, AGroundThatCastsNothingLeavesTheMapsToTheBar) {
+    Scene s = greyScene("bar on a ground");
+    s.meshes.push_back(
+        mesh::box("ground", glm::vec3(0.0f, -0.05f, 0.0f), glm::vec3(20, 0.05f, 20)));
+    s.objects.push_back({"ground", 0, 0, glm::mat4(1.0f), {}, true, true});
+    s.meshes.push_back(
+        mesh::box("bar", glm::vec3(0.3f, 0.5f, 0.0f), glm::vec3(0.01f, 0.01f, 0.3f)));
+    s.objects.push_back({"bar", 1, 0, glm::mat4(1.0f), {}, true, true});
+    Light l;
+    l.type = LightType::Point;
+    l.position = glm::vec3(0.0f, 1.0f, 0.0f);
+    l.shadowMapSize = 128;
+    s.lights.push_back(l);
+    s.camera.eye = glm::vec3(0.6f, 0.25f, 0.6f);
+    s.camera.centre = glm::vec3(0.6f, 0.0f, -0.1f);
+    s.camera.fovyDegrees = 60.0f;
+    s.camera.near = 0.01f;
+    s.camera.far = 50.0f;
+    RenderOptions o;
+    o.width = o.height = 128;
+    Scene receiveOnly = s;
+    receiveOnly.objects[0].castsShadows = false;
+    const ShadowScore receiving = score(sharedRenderer(), receiveOnly, o).overall;
+    const ShadowScore casting = score(sharedRenderer(), s, o).overall;
+    EXPECT_GT(casting.misclassified, 0.002)
+        << "the bar's shadow is sharp already: the test shows nothing";
+    EXPECT_LT(receiving.misclassified, 0.5 * casting.misclassified)
+        << "narrowed " << receiving.misclassified << ", whole " << casting.misclassified;
+    EXPECT_LT(receiving.falseShadowOutsideBand + receiving.leakOutsideBand, 0.0005);
+}
+
 // Each face map takes a light record, as a cascade does. A frame whose point lights' faces
 // would pass the main pass's records gives them cubes instead, rather than failing: 48
 // lamps low over a floor, each seen in five faces, would need 288 of the 256 records.
