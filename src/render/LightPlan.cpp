@@ -89,8 +89,8 @@ void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScen
     mFitCamera = fitCamera ? *fitCamera : s.camera;
     // Faces of their own only with the view's samples to fit them to (a face fitted to boxes
     // is no finer than the cube's), and while their records fit the main pass. Not under PCSS:
-    // its 48-texel search widens each face by ~150 texels a side (cubeLookupReachTexels), a
-    // face map 1.3x coarser than the cube's, and on tutorial-point it shadowed 0.055 % of
+    // its 48-texel search widens each face by ~106 texels a side (cubeLookupReachTexels), a
+    // face map 1.2x coarser than the cube's, and on tutorial-point it shadowed 0.055 % of
     // the view away from edges where the cube shadowed none.
     const bool faces = samples && !samples->empty() &&
                        options.shadow.pointMaps == PointMaps::Faces &&

@@ -161,7 +161,7 @@ TEST_P(Octants, DrawOnlyTheFacesTheViewLooksUp) {
         const int axis = u.face / 2;
         EXPECT_EQ(u.face % 2 == 1, octant[axis] < 0.0f) << "face " << u.face;
     }
-    // PCSS keeps the cube (its search would widen each face's map by ~150 texels a side).
+    // PCSS keeps the cube (its search would widen each face's map by ~106 texels a side).
     RenderOptions pcss = o;
     pcss.shadow.filter = ShadowFilter::Pcss;
     r.render(s, pcss);
