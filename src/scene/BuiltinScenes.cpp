@@ -429,7 +429,7 @@ const std::vector<Builtin>& builtins() {
              return tutorialLight(LightType::Area, n, d);
          }},
         {"tutorial-point",
-         "tutorial's point light at (0, 3, -1.5): six-face cube shadow, intensity 20",
+         "tutorial's point light at (0, 3, -1.5): shadowed all around, intensity 20",
          [](const std::string& n, const std::string& d) {
              return tutorialLight(LightType::Point, n, d);
          }},
