@@ -268,12 +268,15 @@ LightCameraFrame fitSpot(const glm::vec3& position, const glm::vec3& axis, float
     const SampleWindow cone{glm::vec2(-t), glm::vec2(t), 0.0f};
     SampleWindow window;
     if (samples && samplesWindow(*samples, lightFromWorld, window, &cone)) {
-        // The window lies in the cone; its margin may take it a few texels past the cone.
-        if (narrowToCasters(lightFromWorld, window, *boxes.casters,
-                            windowMargin(window, mapSize))) {
-            const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
-            if (f.valid) return f;
+        if (!narrowToCasters(lightFromWorld, window, *boxes.casters,
+                             windowMargin(window, mapSize))) {
+            LightCameraFrame none;
+            none.valid = false;  // no caster can shadow what the view sees in the cone: no map
+            return none;
         }
+        // The window lies in the cone; its margin may take it a few texels past the cone.
+        const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 4.0f * t);
+        if (f.valid) return f;
     }
     return fitFrustum(lightFromWorld, cone.lo, cone.hi, boxes, mapSize);
 }

@@ -428,6 +428,11 @@ TEST(ViewSamples, MapsNarrowToWhereCastersCanShadow) {
     const shadow::LightCameraFrame narrow = shadow::lightCameraFrame(spot, camera, postOnly, size);
     ASSERT_TRUE(wide.valid && narrow.valid);
     EXPECT_LT(narrow.texelWorldSize, 0.5f * wide.texelWorldSize);
+    // With its one caster in the cone but behind the camera (its shadow falls further away),
+    // the spot can shadow nothing the view sees: no map, where the whole cone was mapped.
+    shadow::FitScene farCaster = postOnly;
+    farCaster.casters = {Aabb{{-9.5f, 0.0f, 8.0f}, {-9.0f, 0.5f, 9.0f}}};
+    EXPECT_FALSE(shadow::lightCameraFrame(spot, camera, farCaster, size).valid);
 }
 
 TEST(ViewSamples, WindowHoldsEverySampleWithItsPad) {
