@@ -196,7 +196,9 @@ float windowMargin(const SampleWindow& window, int mapSize) {
 // A point light: when the view's samples all lie in a window no wider than a cube face's
 // (2 x 2 tan units) around their mean direction, one frustum over that window: never
 // coarser than a cube face on its axis and often many times finer (a lamp over a small model
-// spends a few percent of a cube on what the view sees). Else the cube.
+// spends a few percent of a cube on what the view sees). The window is first narrowed to
+// where casters can shadow it (narrowToCasters), so a model on a wide ground may fit one
+// frustum where the ground alone would not. Else the cube.
 LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
                           const FitBoxes& boxes, int mapSize) {
     glm::vec3 axis(0.0f);
@@ -232,12 +234,12 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
 
 // One face of a point light's cube as a frustum of its own: the face's pyramid, widened by
 // `marginTan` (what a lookup at the face's rim reads beyond it), narrowed to the window of the
-// view's samples it holds. A cube spends the same texels on every direction; a model on a
-// ground under a close lamp lands on a few percent of the faces it appears in (Stanford
-// Dragon, a point light 0.3 above it: 2 % of the cube, 2.2 % of the view misclassified).
-// Without a window (a sample's footprint reaches the light), or where the window, with its
-// margin and quantised size, would be no finer than the whole widened face (the view sees
-// all of the face), the whole face: it never moves, so it needs no steadying either.
+// view's samples it holds and to where casters can shadow them (none: no map). A cube spends the
+// same texels on every direction; a model on a ground under a close lamp lands on a few percent of
+// the faces it appears in (Stanford Dragon, a point light 0.3 above it: 2 % of the cube, 2.2 % of
+// the view misclassified). Without a window (a sample's footprint reaches the light), or where the
+// window, with its margin and quantised size, would be no finer than the whole widened face (the
+// view sees all of the face), the whole face: it never moves, so it needs no steadying either.
 LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginTan,
                               const ViewSamples* samples, const FitBoxes& boxes, int mapSize) {
     const glm::mat4 lightFromWorld =
@@ -260,7 +262,8 @@ LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginT
 
 // A spot light: its cone's square window, narrowed to the part of it where the view's samples
 // lie (a spot over a room's corner spends its map on the corner the camera sees, not on the
-// whole cone). Without samples, or when they do not narrow it, the whole cone.
+// whole cone), and to where casters can shadow them (none: no map). Without samples, or when
+// they do not narrow it, the whole cone.
 LightCameraFrame fitSpot(const glm::vec3& position, const glm::vec3& axis, float fovyRadians,
                          const ViewSamples* samples, const FitBoxes& boxes, int mapSize) {
     const float t = std::tan(0.5f * fovyRadians);

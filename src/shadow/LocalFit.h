@@ -28,17 +28,19 @@ void depthRange(const Aabb& bounds, const glm::mat4& lightFromWorld, float& near
 // Rounds `x` up to a step of 1/16 of its power of two: few distinct sizes, at most 1/16 more.
 float quantizeUp(float x);
 
-// A point light: one frustum over the view's samples when they fit a cube face's angle
-// around their mean direction, else six faces around the light.
+// A point light: one frustum over the view's samples (narrowed to where casters can shadow
+// them) when they fit a cube face's angle around their mean direction, else six faces around
+// the light.
 LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
                           const FitBoxes& boxes, int mapSize);
 // Face `face` (0..5: +X, -X, +Y, -Y, +Z, -Z, as cubeFaceRotation) of a point light as one
 // perspective frustum: the face's pyramid widened by `marginTan` tan units, narrowed to the
-// window of the view's samples in it.
+// window of the view's samples in it and to where casters can shadow them; invalid when no
+// caster can.
 LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginTan,
                               const ViewSamples* samples, const FitBoxes& boxes, int mapSize);
 // A spot light: its cone's window (fovy twice the outer cone angle), narrowed to the part the
-// view's samples lie in.
+// view's samples lie in and to where casters can shadow them (invalid when none can).
 LightCameraFrame fitSpot(const glm::vec3& position, const glm::vec3& axis, float fovyRadians,
                          const ViewSamples* samples, const FitBoxes& boxes, int mapSize);
 

@@ -118,8 +118,9 @@ LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& 
                                        HeldExtent* held = nullptr);
 // A point light's face `face` (0..5, as cubeFaceRotation) as a map of its own, a perspective
 // frustum over the face's pyramid (widened by what a lookup at its rim reads, from
-// cubeLookupReachTexels) narrowed to the view's samples in it (fit::fitPointFace). What a
-// point light the view sees all around gets instead of a cube when view samples exist.
+// cubeLookupReachTexels) narrowed to the view's samples in it and to where casters can shadow
+// them (fit::fitPointFace; invalid when none can). What a point light the view sees all
+// around gets instead of a cube when view samples exist.
 LightCameraFrame pointFaceFrame(const Light& light, int face, const ShadowOptions& options,
                                 const FitScene& scene, int mapSize, HeldExtent* held = nullptr);
 // How far from its point's own texel, in texels of a cube face, a point light's lookup may

@@ -320,6 +320,13 @@ TEST(ViewSamples, HeldFrustumsStayPutWhileTheCameraMovesALittle) {
     }
 }
 
+// The cube face (0..5: +X, -X, +Y, -Y, +Z, -Z) a direction from the light leaves through.
+int cubeFaceOf(const glm::vec3& d) {
+    const glm::vec3 a = glm::abs(d);
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    return 2 * axis + (d[axis] < 0.0f ? 1 : 0);
+}
+
 // A lamp low over the ground, which the view sees all around it: a cube. Each face the view
 // looks up, as a map of its own, holds every sample whose direction from the lamp leaves
 // through that face, within its clip volume; a face the view sees whole is no coarser than
@@ -341,9 +348,7 @@ TEST(ViewSamples, PointLightFacesHoldTheirSamples) {
         const shadow::LightCameraFrame f = shadow::pointFaceFrame(lamp, face, options, scene, size);
         int held = 0;
         for (const glm::vec4& p : samples.points) {
-            const glm::vec3 d = glm::vec3(p) - lamp.position, a = glm::abs(d);
-            const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-            if (2 * axis + (d[axis] < 0.0f ? 1 : 0) != face) continue;
+            if (cubeFaceOf(glm::vec3(p) - lamp.position) != face) continue;
             ASSERT_TRUE(f.valid) << "face " << face;
             ++held;
             const glm::vec4 c = f.clipFromWorld() * glm::vec4(glm::vec3(p), 1.0f);
@@ -411,9 +416,7 @@ TEST(ViewSamples, MapsNarrowToWhereCastersCanShadow) {
             EXPECT_FALSE(narrow.valid);
         }
         for (const glm::vec4& p : samples.points) {
-            const glm::vec3 d = glm::vec3(p) - lamp.position, a = glm::abs(d);
-            const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-            if (2 * axis + (d[axis] < 0.0f ? 1 : 0) != face) continue;
+            if (cubeFaceOf(glm::vec3(p) - lamp.position) != face) continue;
             if (!segmentCrosses(glm::vec3(p), lamp.position, post)) continue;
             ++crossing;
             ASSERT_TRUE(narrow.valid) << "face " << face;
