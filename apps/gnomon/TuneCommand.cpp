@@ -36,6 +36,12 @@ CLI::App* addTuneCommand(CLI::App& app, TuneArgs& args) {
                     "best found so far (0: none; default " +
                         std::to_string(int(args.options.timeLimitSeconds)) + ")")
         ->type_name("S");
+    cmd->add_option("--shift-check", args.options.checkShifted,
+                    "score the best and the starting settings again with the view moved half "
+                    "a pixel four ways, and choose the best only if it wins on every one "
+                    "(default on)")
+        ->type_name("on|off")
+        ->check(CLI::IsMember({"on", "off"}).description(""));
     cmd->add_option("--out-dir", args.outDir,
                     "folder for tune.json (every trial), front.svg and tuned.json (default tune)")
         ->type_name("DIR");
@@ -133,6 +139,20 @@ void printSummary(const TuneResult& r, double timeLimit) {
         r.budgetMs, best.flags.c_str(), pct(best.misclassified), pct(start.misclassified),
         start.misclassified > 0 ? best.misclassified / start.misclassified : 1.0,
         pct(best.awayFromEdges), pct(start.awayFromEdges), best.frameMs, start.frameMs);
+    if (!r.shifted.done) return;
+    std::printf(
+        "on the views moved half a pixel right, left, up and down (error %%, best against "
+        "starting settings):");
+    for (std::size_t i = 0; i < r.shifted.bestErrors.size(); ++i)
+        std::printf(" %.3f/%.3f", pct(r.shifted.bestErrors[i]), pct(r.shifted.startErrors[i]));
+    if (r.shifted.holds) {
+        std::printf("\n  the gain holds on every one: the best is chosen\n");
+    } else {
+        std::printf(
+            "\n  the gain does not hold on every one, so it is the pixel grid's, not the "
+            "setting's: the starting settings are kept, on the front within what half a pixel "
+            "changes\n");
+    }
 }
 
 }  // namespace
@@ -167,10 +187,11 @@ int runTune(const TuneArgs& args, bool verbose) {
     });
     printSummary(r, options.timeLimitSeconds);
     const std::string tuned = args.out.empty() ? out.file("tuned.json") : out.add(args.out);
-    // Each light with the map size the best trial gave it (its own unless searched).
-    if (r.best >= 0) applyMapSizes(r.trials[std::size_t(r.best)].mapSizes, scene);
+    // Each light with the map size the chosen trial gave it (its own unless searched).
+    if (r.chosen >= 0) applyMapSizes(r.trials[std::size_t(r.chosen)].mapSizes, scene);
     saveSceneFile(tuned, args.scene, scene,
-                  r.best >= 0 ? r.trials[std::size_t(r.best)].options : start, args.flags.ground);
+                  r.chosen >= 0 ? r.trials[std::size_t(r.chosen)].options : start,
+                  args.flags.ground);
     writeTextFile(out.file("tune.json"), toJson(r, scene.name));
     writeTextFile(out.file("front.svg"), frontSvg(r, scene.name));
     out.keep();

@@ -34,6 +34,12 @@ struct TuneOptions {
     double timeLimitSeconds = 540.0;
     std::vector<Camera> extraViews;  // scored besides the scene's camera
     ScoreOptions score;
+    // After the search, score the best setting and the starting one again on four copies of
+    // every view with the camera moved sideways by half a pixel (right, left, up, down), each
+    // against its own reference. A shadow score counts pixels, and a setting can win on one
+    // pixel grid by a few of them: only a gain that shows on every shifted copy is the
+    // setting's own (TuneResult::shifted). Off: the best is taken as found.
+    bool checkShifted = true;
 };
 
 // One setting tried, scored over every view (means) and timed.
@@ -62,6 +68,20 @@ struct TuneResult {
     // No trial has a lower error for no more time than the starting settings (-1: none
     // beats them), else the first trial that does.
     int beatsStart = -1;
+    // The best against the starting settings on the views shifted by half a pixel
+    // (TuneOptions::checkShifted), one error per shift (the mean over the views), and whether
+    // the best's was lower on each: a sign test, which four shifts out of four pass by chance
+    // once in sixteen where the two settings are alike. Not done (`done` false) when the best
+    // is the starting settings, none fits the budget, or the search was interrupted.
+    struct ShiftCheck {
+        bool done = false;
+        std::vector<double> startErrors, bestErrors;
+        bool holds = false;
+    } shifted;
+    // The setting tune recommends (what `gnomon tune --out` writes and the viewer applies):
+    // the best, unless the shifted views did not bear its gain out, then the starting
+    // settings (0); -1 when no setting fits the budget.
+    int chosen = -1;
     double budgetMs = 0.0;
     int views = 0;
     int sweeps = 0;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -169,6 +170,14 @@ public:
         return t;
     }
 
+    // `setting`'s error over every view (the mean), untimed.
+    double error(const Setting& setting, double& traceSeconds) {
+        apply(setting);
+        TuneTrial t;
+        score(t, setting.options, traceSeconds);
+        return t.error;
+    }
+
 private:
     // Renders and scores `o` over every view: the means.
     void score(TuneTrial& t, const RenderOptions& o, double& traceSeconds) {
@@ -258,6 +267,46 @@ private:
     double mBaselineMs = 0.0;  // the starting settings' first median
 };
 
+// `c` moved sideways, eye and target alike, by `dx` and `dy` pixels of an image `height`
+// pixels high, measured at the target's distance: the picture moves by about that much there.
+Camera shiftedCamera(const Camera& c, int height, float dx, float dy) {
+    const glm::vec3 forward = c.centre - c.eye;
+    const float distance = glm::length(forward);
+    glm::vec3 right = glm::cross(forward, c.up);
+    if (!(distance > 0.0f) || !(glm::length(right) > 0.0f) || height < 1) return c;
+    right = glm::normalize(right);
+    const glm::vec3 up = glm::cross(right, forward / distance);
+    const float viewHeight = c.projection == Projection::Perspective
+                                 ? 2.0f * distance * std::tan(0.5f * glm::radians(c.fovyDegrees))
+                                 : c.top - c.bottom;
+    const glm::vec3 move = viewHeight / float(height) * (dx * right + dy * up);
+    Camera moved = c;
+    moved.eye += move;
+    moved.centre += move;
+    return moved;
+}
+
+// TuneOptions::checkShifted: `best` against `first` on every view moved half a pixel four
+// ways, each shift's views traced anew.
+TuneResult::ShiftCheck checkShifted(Renderer& renderer, Scene& scene,
+                                    const std::vector<Camera>& views, const TuneOptions& options,
+                                    const Setting& first, const Setting& best,
+                                    double& traceSeconds) {
+    const glm::vec2 shifts[] = {{0.5f, 0.0f}, {-0.5f, 0.0f}, {0.0f, 0.5f}, {0.0f, -0.5f}};
+    TuneResult::ShiftCheck check;
+    check.done = check.holds = true;
+    for (const glm::vec2& d : shifts) {
+        std::vector<Camera> moved;
+        for (const Camera& c : views)
+            moved.push_back(shiftedCamera(c, first.options.height, d.x, d.y));
+        Evaluator evaluator(renderer, scene, moved, options);
+        check.startErrors.push_back(evaluator.error(first, traceSeconds));
+        check.bestErrors.push_back(evaluator.error(best, traceSeconds));
+        check.holds = check.holds && check.bestErrors.back() < check.startErrors.back();
+    }
+    return check;
+}
+
 }  // namespace
 
 TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
@@ -314,6 +363,15 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     result.interrupted = found.stopped && !result.timedOut;
     result.seconds = elapsed();
     if (found.best >= 0) result.best = trialOf[found.trials[std::size_t(found.best)].point];
+    result.chosen = result.best;
+    if (options.checkShifted && result.best > 0 && !result.interrupted) {
+        const Setting best =
+            settingAt(space, found.trials[std::size_t(found.best)].point, start, flags);
+        result.shifted =
+            checkShifted(renderer, scene, views, options, first, best, result.traceSeconds);
+        if (!result.shifted.holds) result.chosen = 0;
+        result.seconds = elapsed();
+    }
     std::vector<search::Trial> all;
     for (const TuneTrial& t : result.trials)
         all.push_back({{}, {t.error, t.frameMs}});
@@ -359,6 +417,12 @@ std::string toJson(const TuneResult& r, const std::string& scene) {
     j["best"] = r.best;
     j["start_on_front"] = r.beatsStart < 0;
     j["beats_start"] = r.beatsStart;
+    j["chosen"] = r.chosen;
+    if (r.shifted.done) {
+        j["shifted"] = {{"start_errors", r.shifted.startErrors},
+                        {"best_errors", r.shifted.bestErrors},
+                        {"holds", r.shifted.holds}};
+    }
     j["front"] = r.front;
     j["trials"] = nlohmann::json::array();
     for (const TuneTrial& t : r.trials)

@@ -103,10 +103,13 @@ void Viewer::pollTune() {
         const TuneTrial& best = mTune->best >= 0 ? mTune->trials[std::size_t(mTune->best)] : start;
         std::printf(
             "gnomon view: tune: %zu trials%s; best within %.1f ms: %s (misclassified "
-            "%.4f, from %.4f)\n",
+            "%.4f, from %.4f)%s\n",
             mTune->trials.size(), mTune->timedOut ? " (stopped at its time limit)" : "",
             mTune->budgetMs, best.flags.empty() ? "the current settings" : best.flags.c_str(),
-            best.misclassified, start.misclassified);
+            best.misclassified, start.misclassified,
+            mTune->shifted.done && !mTune->shifted.holds
+                ? "; not borne out half a pixel away: the current settings are kept"
+                : "");
     } else {
         mTuneError = mTuneJob->error;
         if (mScripted) fail("tune: " + mTuneJob->error);
@@ -114,12 +117,13 @@ void Viewer::pollTune() {
     mTuneJob.reset();
 }
 
-// The best settings' shadow options over the current ones (the view's size stays), and the
-// map size it gave each light.
+// The chosen settings' shadow options over the current ones (the view's size stays), and the
+// map size they gave each light: the best's, where the views shifted by half a pixel bore its
+// gain out (TuneResult::chosen).
 void Viewer::applyTune() {
-    if (!mTune || mTune->best < 0)
+    if (!mTune || mTune->chosen < 0)
         throw Error(ErrorKind::InvalidInput, "apply-tune: no tune result to apply");
-    const TuneTrial& best = mTune->trials[std::size_t(mTune->best)];
+    const TuneTrial& best = mTune->trials[std::size_t(mTune->chosen)];
     mState.options.shadow = best.options.shadow;
     applyMapSizes(best.mapSizes, mState.scene);
     changed(true);

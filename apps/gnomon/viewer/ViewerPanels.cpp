@@ -356,6 +356,11 @@ void Viewer::tunePanel() {
                        best.flags.c_str());
     ImGui::TextWrapped("misclassified %.3f%% (from %.3f%%), %.1f ms", 100.0 * best.misclassified,
                        100.0 * start.misclassified, best.frameMs);
+    if (mTune->shifted.done && !mTune->shifted.holds) {
+        ImGui::TextWrapped(
+            "not borne out with the view moved half a pixel: the gain is the pixel grid's, so "
+            "Apply keeps the current settings");
+    }
     if (mTunedRevision != mState.revision)
         ImGui::TextColored({1, 0.8f, 0.3f, 1}, "(settings changed since this tune)");
     if (ImGui::Button("Apply")) guarded([&] { applyTune(); });
