@@ -28,6 +28,8 @@ struct TuneOptions {
     // Wall-clock seconds the search may take, from the call (tracing the references and the
     // starting settings' trial included; those always finish); 0: no limit. At the limit the
     // trial under way finishes and the search stops with what it found (TuneResult::timedOut).
+    // The check on shifted views (checkShifted) comes within it: the search stops that much
+    // sooner, as long as four tracings and eight scorings of the first trial took.
     // Nine minutes, so that a whole `gnomon tune` (loading, the trial under way at the limit,
     // the files written) keeps within ten on the slowest real scenes (871k triangles at 512²:
     // a trial takes 5-15 s there).

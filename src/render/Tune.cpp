@@ -178,9 +178,14 @@ public:
         return t.error;
     }
 
+    // Wall-clock seconds of the last scoring over every view, tracing left out.
+    double lastScoreSeconds() const { return mScoreSeconds; }
+
 private:
     // Renders and scores `o` over every view: the means.
     void score(TuneTrial& t, const RenderOptions& o, double& traceSeconds) {
+        const auto begin = std::chrono::steady_clock::now();
+        const double traced = traceSeconds;
         for (std::size_t v = 0; v < mViews.size(); ++v) {
             mScene.camera = mViews[v];
             ScoreFrame frame = renderForScore(mRenderer, mScene, o, mOptions.score);
@@ -191,6 +196,9 @@ private:
                                double(mViews.size());
         }
         t.error = t.misclassified + t.awayFromEdges;
+        mScoreSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() -
+            (traceSeconds - traced);
     }
 
     void apply(const Setting& setting) { applyMapSizes(setting.mapSizes, mScene); }
@@ -265,6 +273,7 @@ private:
     const TuneOptions& mOptions;
     std::map<std::pair<std::size_t, bool>, truth::Reference> mReferences;
     double mBaselineMs = 0.0;  // the starting settings' first median
+    double mScoreSeconds = 0.0;
 };
 
 // `c` moved sideways, eye and target alike, by `dx` and `dy` pixels of an image `height`
@@ -272,8 +281,13 @@ private:
 Camera shiftedCamera(const Camera& c, int height, float dx, float dy) {
     const glm::vec3 forward = c.centre - c.eye;
     const float distance = glm::length(forward);
+    if (!(distance > 0.0f) || height < 1) return c;
     glm::vec3 right = glm::cross(forward, c.up);
-    if (!(distance > 0.0f) || !(glm::length(right) > 0.0f) || height < 1) return c;
+    // Looking along `up` the picture's axes are the renderer's choice; any two across the
+    // view move it as much.
+    if (!(glm::length(right) > 1e-6f * distance))
+        right = glm::cross(forward, std::abs(forward.x) < 0.5f * distance ? glm::vec3(1, 0, 0)
+                                                                          : glm::vec3(0, 0, 1));
     right = glm::normalize(right);
     const glm::vec3 up = glm::cross(right, forward / distance);
     const float viewHeight = c.projection == Projection::Perspective
@@ -337,6 +351,11 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     if (onTrial) onTrial(result.trials.back());
     if (progress) ++progress->trialsDone;
     result.budgetMs = options.budgetMs > 0.0 ? options.budgetMs : result.trials[0].frameMs;
+    // The check on shifted views runs after the search and within its time limit: four
+    // references per view, as long as the first ones took, and eight scorings as long as the
+    // first trial's are kept back.
+    const double checkSeconds =
+        options.checkShifted ? 4.0 * result.traceSeconds + 8.0 * evaluator.lastScoreSeconds() : 0.0;
     std::map<search::Point, int> trialOf = {{startPoint, 0}};
     const search::SearchResult found = search::coordinateDescent(
         space.parameters, startPoint, result.budgetMs,
@@ -354,8 +373,8 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
         options.maxSweeps,
         [&] {
             if (progress && progress->cancel.load()) return true;
-            result.timedOut =
-                options.timeLimitSeconds > 0.0 && elapsed() >= options.timeLimitSeconds;
+            result.timedOut = options.timeLimitSeconds > 0.0 &&
+                              elapsed() + checkSeconds >= options.timeLimitSeconds;
             return result.timedOut;
         });
     result.sweeps = found.sweeps;
