@@ -17,6 +17,7 @@
 #include "gnomon/OptionSchema.h"
 #include "render/ScoreDetail.h"
 #include "scene/SceneUtil.h"
+#include "shadow/ShadowMath.h"
 
 namespace gnomon {
 
@@ -278,22 +279,17 @@ private:
 
 // `c` moved sideways, eye and target alike, by `dx` and `dy` pixels of an image `height`
 // pixels high, measured at the target's distance: the picture moves by about that much there.
+// Along the picture's own axes, as the renderer builds its view (shadow::viewFromWorld, with
+// its fallback where the camera looks along `up`).
 Camera shiftedCamera(const Camera& c, int height, float dx, float dy) {
-    const glm::vec3 forward = c.centre - c.eye;
-    const float distance = glm::length(forward);
+    const float distance = glm::length(c.centre - c.eye);
     if (!(distance > 0.0f) || height < 1) return c;
-    glm::vec3 right = glm::cross(forward, c.up);
-    // Looking along `up` the picture's axes are the renderer's choice; any two across the
-    // view move it as much.
-    if (!(glm::length(right) > 1e-6f * distance))
-        right = glm::cross(forward, std::abs(forward.x) < 0.5f * distance ? glm::vec3(1, 0, 0)
-                                                                          : glm::vec3(0, 0, 1));
-    right = glm::normalize(right);
-    const glm::vec3 up = glm::cross(right, forward / distance);
+    const glm::mat4 worldFromView = glm::inverse(shadow::viewFromWorld(c));
     const float viewHeight = c.projection == Projection::Perspective
                                  ? 2.0f * distance * std::tan(0.5f * glm::radians(c.fovyDegrees))
                                  : c.top - c.bottom;
-    const glm::vec3 move = viewHeight / float(height) * (dx * right + dy * up);
+    const glm::vec3 move = viewHeight / float(height) *
+                           (dx * glm::vec3(worldFromView[0]) + dy * glm::vec3(worldFromView[1]));
     Camera moved = c;
     moved.eye += move;
     moved.centre += move;
@@ -384,8 +380,8 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     if (found.best >= 0) result.best = trialOf[found.trials[std::size_t(found.best)].point];
     result.chosen = result.best;
     if (options.checkShifted && result.best > 0 && !result.interrupted) {
-        const Setting best =
-            settingAt(space, found.trials[std::size_t(found.best)].point, start, flags);
+        const TuneTrial& bestTrial = result.trials[std::size_t(result.best)];
+        const Setting best{bestTrial.options, bestTrial.mapSizes};
         result.shifted =
             checkShifted(renderer, scene, views, options, first, best, result.traceSeconds);
         if (!result.shifted.holds) result.chosen = 0;
