@@ -13,6 +13,7 @@
 #include "truth/AlphaRays.h"
 #include "truth/Metrics.h"
 #include "truth/Reference.h"
+#include "truth/ShadowRays.h"
 
 namespace gnomon {
 namespace {
@@ -76,6 +77,43 @@ TEST(Truth, HardShadowIsTheAnalyticOutline) {
     EXPECT_GT(shadowed, 200);
     // Pixel footprint: 8 units over 64 pixels.
     EXPECT_FLOAT_EQ(r.pixelWorld[0], 0.125f);
+}
+
+// Each pixel's view ray passes through its centre, as the raster samples, whatever the
+// camera's near and far: glTF files give znear 0.05 and zfar 10^6 (assimp's 2CylinderEngine).
+// The floor's points seen from 1 600 units away through a narrow view must lie on the exact
+// rays, computed in double precision, to a hundredth of a pixel.
+TEST(Truth, ViewRaysPassThroughPixelCentresWithExtremeNearAndFar) {
+    Scene s = plateOverFloor();
+    s.camera = Camera{};
+    s.camera.eye = {800.0f, 600.0f, 1200.0f};
+    s.camera.centre = {0.0f, 0.0f, 0.0f};
+    s.camera.fovyDegrees = 0.6f;
+    s.camera.near = 0.05f;
+    s.camera.far = 1e6f;
+    const truth::Reference r = truth::traceReference(s, s.options, {});
+    const glm::dvec3 eye(s.camera.eye);
+    const glm::dvec3 ahead = glm::normalize(-eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(ahead, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 up = glm::cross(right, ahead);
+    const double tanHalf = std::tan(0.5 * glm::radians(double(s.camera.fovyDegrees)));
+    const double pixel = 2.0 * tanHalf * glm::length(eye) / kSize;
+    int floorPixels = 0;
+    double worst = 0.0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const std::size_t p = std::size_t(y) * kSize + std::size_t(x);
+            if (r.object[p] != 0 || r.surfaceNormal[p].y < 0.99f) continue;  // the top only
+            const double nx = (x + 0.5) / kSize * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / kSize * 2.0;
+            const glm::dvec3 dir = ahead + right * (nx * tanHalf) + up * (ny * tanHalf);
+            const glm::dvec3 expected = eye + dir * (-eye.y / dir.y);  // on the floor's top, y 0
+            const glm::dvec3 got = glm::dvec3(r.surfacePoint[p]) + glm::dvec3(r.rays->origin());
+            worst = std::max(worst, glm::length(got - expected));
+            ++floorPixels;
+        }
+    }
+    EXPECT_GT(floorPixels, kSize * kSize / 4);
+    EXPECT_LT(worst, 0.01 * pixel) << "a pixel is " << pixel;
 }
 
 // With a contact range, the shadowed cells whose occluder lies within it along the shadow ray
