@@ -169,7 +169,13 @@ struct Renderer::Impl {
         scene.sync(s, options.time, options.shadow.casterDetail);
 
         const float aspect = float(options.width) / float(options.height);
-        const glm::mat4 viewFromWorld = shadow::viewFromWorld(s.camera);
+        // The view's own depth (the view depth pass, the main pass, what is read back from
+        // them) spans what is drawn; the lights' fits keep the scene's camera, and so does
+        // the light-frusta debug view, whose volumes reach past the scene.
+        const Camera view = options.debugView == DebugView::LightFrusta
+                                ? s.camera
+                                : shadow::depthFitted(s.camera, scene.bounds());
+        const glm::mat4 viewFromWorld = shadow::viewFromWorld(view);
         std::vector<PassTiming> keep = std::move(stats.passes);
         keep.clear();
         stats = {};
@@ -180,7 +186,7 @@ struct Renderer::Impl {
         if (render::LightPlan::wantsViewSamples(s, options) || contact ||
             render::TiledLights::wantsDepth(s, options)) {
             if (timer) timer->start();
-            samples = &viewDepth.sample(scene, fitCamera ? *fitCamera : s.camera, options.width,
+            samples = &viewDepth.sample(scene, fitCamera ? *fitCamera : view, options.width,
                                         options.height);
             if (timer) stats.passes.push_back(timer->stop("view depth", -1, 0));
         }
@@ -191,10 +197,10 @@ struct Renderer::Impl {
         if (fitCamera) {
             // The samples were the fit camera's view: contact shadows need the drawn one's,
             // and the tiles are not worth it for this rare frame.
-            if (contact) viewDepth.sample(scene, s.camera, options.width, options.height);
+            if (contact) viewDepth.sample(scene, view, options.width, options.height);
             samples = nullptr;
         }
-        lastCamera = s.camera;
+        lastCamera = view;
         lastWidth = options.width;
         lastHeight = options.height;
         if (plan.records().size() > std::size_t(mainPass.maxLights())) {
@@ -238,11 +244,11 @@ struct Renderer::Impl {
         // The view depth pass, when drawn for this very view, spares the main pass its
         // overdraw (not under the shadow-map debug view, which draws no scene).
         in.depthReady = options.shading.depthPrepass && options.debugView != DebugView::ShadowMap &&
-                        viewDepth.holds(scene, s.camera, options.width, options.height);
+                        viewDepth.holds(scene, view, options.width, options.height);
         bindClearedTarget(options.width, options.height, in.depthReady);
         stats.mainFromViewDepth = in.depthReady;
         in.viewFromWorld = viewFromWorld;
-        in.clipFromView = shadow::clipFromView(s.camera, aspect);
+        in.clipFromView = shadow::clipFromView(view, aspect);
         const glm::mat4 fitView = fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld;
         in.cascadeDepth = -glm::vec4(fitView[0][2], fitView[1][2], fitView[2][2], fitView[3][2]);
         in.ambient = s.ambient;

@@ -46,6 +46,32 @@ glm::mat4 clipFromView(const Camera& camera, float aspect) {
     return glm::perspective(glm::radians(camera.fovyDegrees), a, camera.near, camera.far);
 }
 
+Camera depthFitted(const Camera& camera, const Aabb& bounds) {
+    if (bounds.empty()) return camera;
+    const glm::mat4 view = viewFromWorld(camera);
+    float nearest = std::numeric_limits<float>::max(), farthest = -nearest;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner(c & 1 ? bounds.max.x : bounds.min.x,
+                               c & 2 ? bounds.max.y : bounds.min.y,
+                               c & 4 ? bounds.max.z : bounds.min.z);
+        const float depth = -(view * glm::vec4(corner, 1.0f)).z;
+        nearest = std::min(nearest, depth);
+        farthest = std::max(farthest, depth);
+    }
+    if (!std::isfinite(nearest) || !std::isfinite(farthest)) return camera;
+    // A margin of the span (and of the distance, for a perspective near plane) keeps the
+    // planes off the box's own faces, which a ground's quad may lie in.
+    const float margin = 0.01f * (farthest - nearest);
+    Camera fitted = camera;
+    const bool perspective = camera.projection == Projection::Perspective;
+    const float near = perspective ? 0.99f * nearest - margin : nearest - margin;
+    fitted.near = std::max(camera.near, near);
+    fitted.far = std::min(camera.far, farthest + margin + 0.01f * std::abs(farthest));
+    // The box wholly outside the camera's range: nothing is drawn either way.
+    if (!(fitted.far > fitted.near)) return camera;
+    return fitted;
+}
+
 namespace fit {
 void depthRange(const Aabb& bounds, const glm::mat4& lightFromWorld, float& nearest,
                 float& farthest) {

@@ -208,5 +208,43 @@ TEST(Transforms, SafeLookAtWithZeroUpIsFinite) {
     test::expectRotationPart(m);
 }
 
+// depthFitted: the view's planes move in to the depths the scene's box spans (camera on +z
+// looking at the origin, so view depth = 10 - z), and only in.
+TEST(Transforms, DepthFittedSpansTheSceneBox) {
+    Camera c;
+    c.eye = {0.0f, 0.0f, 10.0f};
+    c.centre = {0.0f, 0.0f, 0.0f};
+    c.near = 0.01f;
+    c.far = 1e6f;
+    const Aabb box{{-1.0f, -1.0f, -2.0f}, {1.0f, 1.0f, 2.0f}};  // depths 8 to 12
+    const Camera f = shadow::depthFitted(c, box);
+    EXPECT_GT(f.near, 7.5f);
+    EXPECT_LT(f.near, 8.0f);
+    EXPECT_GT(f.far, 12.0f);
+    EXPECT_LT(f.far, 12.5f);
+    EXPECT_EQ(f.eye, c.eye);
+    // Planes already inside the box's depths stay where they are.
+    Camera tight = c;
+    tight.near = 9.0f;
+    tight.far = 11.0f;
+    EXPECT_EQ(shadow::depthFitted(tight, box), tight);
+    // An eye inside the box keeps its near plane; a box behind the eye or an empty one
+    // changes nothing.
+    Camera inside = c;
+    inside.eye = {0.0f, 0.0f, 1.0f};
+    EXPECT_EQ(shadow::depthFitted(inside, box).near, c.near);
+    EXPECT_LT(shadow::depthFitted(inside, box).far, 3.5f);
+    Camera away = c;
+    away.centre = {0.0f, 0.0f, 20.0f};
+    EXPECT_EQ(shadow::depthFitted(away, box), away);
+    EXPECT_EQ(shadow::depthFitted(c, Aabb{}), c);
+    // Orthographic: the same depths, with no perspective margin.
+    Camera ortho = c;
+    ortho.projection = Projection::Orthographic;
+    const Camera o = shadow::depthFitted(ortho, box);
+    EXPECT_GT(o.near, 7.9f);
+    EXPECT_LT(o.far, 12.2f);
+}
+
 }  // namespace
 }  // namespace gnomon
