@@ -2,9 +2,14 @@
 // formats through assimp; anything else gets a clear error rather than a guess.
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "gnomon/Error.h"
 #include "gnomon/Scene.h"
@@ -17,6 +22,45 @@ namespace {
 
 bool readable(const std::string& ext) {
     return ext == ".gltf" || ext == ".glb" || ext == ".json" || assimpReads(ext);
+}
+
+// glTF 1.0, which tinygltf does not read and assimp does: a binary glTF of version 1, or
+// JSON whose asset says version 1.x, or which keys its accessors, meshes or nodes by name
+// (1.0's dictionaries, where 2.0 has arrays).
+bool isGltf1(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char head[8] = {};
+    in.read(head, sizeof head);
+    if (in.gcount() == 8 && std::memcmp(head, "glTF", 4) == 0) {
+        std::uint32_t version = 0;
+        std::memcpy(&version, head + 4, sizeof version);
+        return version == 1;
+    }
+    in.clear();
+    in.seekg(0);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) return false;
+    // 1.0 exporters wrote the version as a string or a number ("1.0", 1).
+    if (const auto asset = j.find("asset"); asset != j.end() && asset->is_object()) {
+        const auto version = asset->find("version");
+        if (version != asset->end() && version->is_string())
+            return version->get<std::string>().rfind("1", 0) == 0;
+        if (version != asset->end() && version->is_number()) return version->get<double>() < 2.0;
+    }
+    for (const char* key : {"accessors", "meshes", "nodes"})
+        if (const auto k = j.find(key); k != j.end() && k->is_object()) return true;
+    return false;
+}
+
+// A glTF file: tinygltf for 2.0, assimp for what it refuses as 1.0 (asked only after a
+// refusal, so a 2.0 file is read once).
+Scene loadAnyGltf(const std::string& path) {
+    try {
+        return loadGltf(path);
+    } catch (const Error&) {
+        if (!isGltf1(path)) throw;
+    }
+    return loadWithAssimp(path);
 }
 
 std::string lowerExtension(const std::filesystem::path& p) {
@@ -63,13 +107,13 @@ Scene loadScene(const std::string& nameOrPath) {
         }
         if (fs::is_directory(nameOrPath, ec)) refuseFolder(nameOrPath);
         const std::string ext = lowerExtension(nameOrPath);
-        if (ext == ".gltf" || ext == ".glb") return loadGltf(nameOrPath);
+        if (ext == ".gltf" || ext == ".glb") return loadAnyGltf(nameOrPath);
         if (ext == ".json") return loadSceneFile(nameOrPath);
         if (assimpReads(ext)) return loadWithAssimp(nameOrPath);
         throw Error(ErrorKind::InvalidInput,
                     "cannot load scene '" + nameOrPath + "': '" + ext +
                         "' files are not supported; gnomon reads glTF 2.0 (.gltf, .glb), scene "
-                        "files (.json) and, through assimp, " +
+                        "files (.json) and, through assimp, glTF 1.0 and " +
                         assimpExtensions());
     }
     return builtinScene(nameOrPath);

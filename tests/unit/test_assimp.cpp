@@ -331,6 +331,25 @@ TEST(Assimp, LoadSceneDispatchesByExtension) {
     EXPECT_NE(m.find(".obj"), std::string::npos) << m;
 }
 
+// glTF 1.0, which tinygltf refuses, is read through assimp; a broken 2.0 file keeps
+// tinygltf's own reason.
+TEST(Assimp, Gltf1GoesToAssimp) {
+    const Scene s = loadScene(model("quad_gltf1.gltf"));
+    ASSERT_TRUE(s.validate().empty()) << joined(s.validate());
+    EXPECT_EQ(triangles(s), 2u);
+    Aabb box;
+    for (const glm::vec3& p : s.meshes[s.objects[0].mesh].positions)
+        box.extend(glm::vec3(s.objects[0].worldFromModel * glm::vec4(p, 1.0f)));
+    expectVec(box.min, {0, 0, 0});
+    expectVec(box.max, {1, 1, 0});
+    test::ScopedTempDir dir;
+    const std::string broken = (dir.path() / "broken.gltf").string();
+    std::ofstream(broken) << R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": 3}]})";
+    const std::string m = errorOf([&] { loadScene(broken); });
+    EXPECT_EQ(m.find("assimp"), std::string::npos) << m;
+    EXPECT_NE(m.find("broken.gltf"), std::string::npos) << m;
+}
+
 // A bigger real model, where the shared scenes are: the course's cubes along axes.
 TEST(Assimp, SharedSeedModelLoads) {
     const std::string path = std::string(GNOMON_SHARED_SCENES) + "/../seeds/models/xyz_blocks.obj";

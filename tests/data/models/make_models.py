@@ -280,3 +280,31 @@ write("hierarchy.dae", """
   <scene><instance_visual_scene url="#scene"/></scene>
 </COLLADA>
 """)
+
+# glTF 1.0 (objects keyed by name, the asset's version a number as some exporters wrote it):
+# a unit quad in z = 0 from (0, 0) to (1, 1), two triangles. tinygltf reads only 2.0, so
+# gnomon hands it to assimp.
+quad_bytes = (struct.pack("<12f", 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0) +
+              struct.pack("<6H", 0, 1, 2, 0, 2, 3))
+write("quad_gltf1.gltf", """
+{
+  "asset": {"version": 1},
+  "buffers": {"data": {"byteLength": 60, "type": "arraybuffer",
+    "uri": "data:application/octet-stream;base64,""" +
+      __import__("base64").b64encode(quad_bytes).decode() + """"}},
+  "bufferViews": {
+    "positions": {"buffer": "data", "byteOffset": 0, "byteLength": 48, "target": 34962},
+    "indices": {"buffer": "data", "byteOffset": 48, "byteLength": 12, "target": 34963}},
+  "accessors": {
+    "position": {"bufferView": "positions", "byteOffset": 0, "byteStride": 12,
+      "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+    "index": {"bufferView": "indices", "byteOffset": 0, "componentType": 5123, "count": 6,
+      "type": "SCALAR"}},
+  "materials": {"grey": {"values": {"diffuse": [0.5, 0.5, 0.5, 1]}}},
+  "meshes": {"quad": {"primitives": [{"attributes": {"POSITION": "position"},
+    "indices": "index", "material": "grey", "mode": 4}]}},
+  "nodes": {"root": {"meshes": ["quad"]}},
+  "scenes": {"main": {"nodes": ["root"]}},
+  "scene": "main"
+}
+""")
