@@ -110,7 +110,16 @@ def gnomon_bounds(path):
 
 
 def model_bounds(path):
-    return bounds(path) if path.endswith((".gltf", ".glb")) else gnomon_bounds(path)
+    """glTF 2.0 read here; anything else (glTF 1.0 too, whose dictionaries this reader does
+    not walk and which gnomon reads through assimp) as gnomon loads it."""
+    if path.endswith((".gltf", ".glb")):
+        try:
+            c, r = bounds(path)
+            if all(math.isfinite(v) for v in c) and math.isfinite(r):
+                return c, r
+        except (KeyError, TypeError, IndexError, ValueError):
+            pass
+    return gnomon_bounds(path)
 
 
 def random_views(model, name, count, rng, kinds, work):

@@ -199,9 +199,14 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
         glm::vec3 from = eye, dir = ahead;
         float tnear = camera.near, tfar = camera.far;
         if (ortho) {
+            // From the near plane itself, which an orthographic view may put behind the eye
+            // (a ray's start must not be negative).
             from +=
                 right * (0.5f * (nx * (camera.right - camera.left) + camera.right + camera.left)) +
-                up * (0.5f * (ny * (camera.top - camera.bottom) + camera.top + camera.bottom));
+                up * (0.5f * (ny * (camera.top - camera.bottom) + camera.top + camera.bottom)) +
+                ahead * camera.near;
+            tnear = 0.0f;
+            tfar -= camera.near;
         } else {
             const glm::vec3 d = ahead + right * (nx * tanHalf * viewAspect) + up * (ny * tanHalf);
             const float length = glm::length(d);
