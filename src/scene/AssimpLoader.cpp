@@ -117,10 +117,25 @@ const aiScene& importScene(Assimp::Importer& importer, const FolderIO& io, const
         return std::string(stage) + (why.empty() ? "" : ": " + why);
     };
 
-    // Read as the file is (validated), check what post-processing could hide, then process.
-    const aiScene* ai = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    // Read as the file is, its animations dropped (gnomon draws the pose the nodes give; a
+    // key past its clip's end, as in Minetest's .b3d characters and carts, refused the whole
+    // model); check what validation and post-processing could hide; validate, then process.
+    const aiScene* ai = importer.ReadFile(path, 0);
     if (!ai) fail(refusal("assimp cannot read it"));
+    if (ai->mNumAnimations > 0) {
+        // The importer owns the scene it returned, made mutable; only its animations go.
+        aiScene& owned = const_cast<aiScene&>(*ai);
+        for (unsigned i = 0; i < owned.mNumAnimations; ++i)
+            delete owned.mAnimations[i];
+        delete[] owned.mAnimations;
+        owned.mAnimations = nullptr;
+        owned.mNumAnimations = 0;
+        scene.warnings.push_back(fs::path(path).filename().string() +
+                                 ": its animations are not played (drawn as the nodes pose it)");
+    }
     checkMeshesAsRead(*ai, fail);
+    ai = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
+    if (!ai) fail(refusal("assimp cannot read it"));
     ai = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType |
                                       aiProcess_FindInvalidData | aiProcess_TransformUVCoords);
     if (!ai) fail(refusal("assimp's post-processing refused it"));

@@ -7,8 +7,13 @@
 namespace gnomon::assimp_parts {
 
 void checkMeshesAsRead(const aiScene& ai, const Fail& fail) {
+    // Run before assimp validates the scene: the arrays are checked for being there.
+    if (ai.mNumMeshes > 0 && !ai.mMeshes) fail("meshes missing");
     for (unsigned i = 0; i < ai.mNumMeshes; ++i) {
+        if (!ai.mMeshes[i]) fail("meshes[" + std::to_string(i) + "] missing");
         const aiMesh& m = *ai.mMeshes[i];
+        if ((m.mNumVertices > 0 && !m.mVertices) || (m.mNumFaces > 0 && !m.mFaces))
+            fail(meshName(m, i) + " lacks its vertices or faces");
         for (unsigned v = 0; v < m.mNumVertices; ++v) {
             if (!finite(toGlm(m.mVertices[v]))) {
                 fail(meshName(m, i) + " vertex " + std::to_string(v) +

@@ -331,6 +331,16 @@ TEST(Assimp, LoadSceneDispatchesByExtension) {
     EXPECT_NE(m.find(".obj"), std::string::npos) << m;
 }
 
+// An animation assimp's validation would refuse (a key past its clip's end) is dropped
+// with a warning, and the model drawn as its nodes pose it.
+TEST(Assimp, AnimationsAreDroppedBeforeValidation) {
+    const Scene s = loadWithAssimp(model("anim_past_end.b3d"));
+    ASSERT_TRUE(s.validate().empty()) << joined(s.validate());
+    EXPECT_EQ(triangles(s), 1u);
+    EXPECT_NE(joined(s.warnings).find("animations are not played"), std::string::npos)
+        << joined(s.warnings);
+}
+
 // glTF 1.0, which tinygltf refuses, is read through assimp; a broken 2.0 file keeps
 // tinygltf's own reason.
 TEST(Assimp, Gltf1GoesToAssimp) {

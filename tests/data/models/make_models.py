@@ -308,3 +308,22 @@ write("quad_gltf1.gltf", """
   "scene": "main"
 }
 """)
+
+
+# A Blitz3D .b3d with one triangle (0,0,0) (1,0,0) (0,1,0) and an animation whose last key
+# (frame 4) lies past its clip's 3 frames, as Minetest's carts and characters have: assimp's
+# validation refuses such a file unless the animation is dropped first.
+def b3d_chunk(tag, data):
+    return tag + struct.pack("<i", len(data)) + data
+
+
+b3d_mesh = b3d_chunk(b"MESH", struct.pack("<i", -1) +
+                     b3d_chunk(b"VRTS", struct.pack("<iii", 0, 0, 0) +
+                               struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)) +
+                     b3d_chunk(b"TRIS", struct.pack("<i", -1) + struct.pack("<3i", 0, 1, 2)))
+b3d_keys = b3d_chunk(b"KEYS", struct.pack("<i", 1) + struct.pack("<i3f", 1, 0, 0, 0) +
+                     struct.pack("<i3f", 4, 0, 0, 0))
+b3d_node = b3d_chunk(b"NODE", b"root\0" + struct.pack("<3f3f4f", 0, 0, 0, 1, 1, 1, 1, 0, 0, 0) +
+                     b3d_mesh + b3d_keys + b3d_chunk(b"ANIM", struct.pack("<iif", 0, 3, 30.0)))
+with open(os.path.join(here, "anim_past_end.b3d"), "wb") as f:
+    f.write(b3d_chunk(b"BB3D", struct.pack("<i", 1) + b3d_node))
