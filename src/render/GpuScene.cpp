@@ -114,7 +114,7 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     mMeshBounds = meshBounds(scene);
     mMeshClosed.resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m)
-        mMeshClosed[m] = isClosedSurface(scene.meshes[m]);
+        mMeshClosed[m] = char(closedWinding(scene.meshes[m]));
     mObjectData.clear();        // forces the object upload below
     mObjectIds = gl::Buffer();  // and the object indices' binding to the new vertex array
     mHaveGeometry = true;
@@ -231,16 +231,11 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         const std::string_view record(reinterpret_cast<const char*>(&mObjectData[i]),
                                       sizeof(GpaObject));
         mItems[i] = {
-            std::uint32_t(i),
-            GLsizei(mesh.indices.size()),
-            mMeshRanges[o.mesh].first,
-            mMeshRanges[o.mesh].second,
-            mat.doubleSided,
-            bool(mMeshClosed[o.mesh]),
-            o.castsShadows,
-            o.receivesShadows,
-            box,
-            std::hash<std::string_view>{}(record),
+            std::uint32_t(i), GLsizei(mesh.indices.size()), mMeshRanges[o.mesh].first,
+            mMeshRanges[o.mesh].second, mat.doubleSided,
+            // Closed and wound outwards in the world, as culling in a shadow pass needs.
+            mMeshClosed[o.mesh] * glm::determinant(glm::mat3(g.worldFromModel)) > 0.0f,
+            o.castsShadows, o.receivesShadows, box, std::hash<std::string_view>{}(record),
             mat.alphaMode,
             mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
             mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};

@@ -45,7 +45,8 @@ struct DrawItem {
     std::size_t firstIndexByte = 0;
     GLint baseVertex = 0;
     bool doubleSided = false;
-    bool closed = false;  // the mesh bounds a solid (isClosedSurface): culling keeps its shadow
+    bool closed = false;  // a solid wound outwards in the world (closedWinding): culling keeps
+                          // its shadow
     bool casts = true;
     bool receives = true;
     Aabb bounds;                 // world space, at the synced time
@@ -168,7 +169,7 @@ private:
     float mCasterDetail = 1.0f;  // the detail drawn
     std::uint64_t mGeometryUploads = 0;
     std::vector<Aabb> mMeshBounds;
-    std::vector<char> mMeshClosed;  // isClosedSurface per mesh, at upload
+    std::vector<signed char> mMeshClosed;  // closedWinding per mesh, at upload
     Aabb mBounds, mCasterBounds;
     bool mHasUnlit = false, mHasBlended = false, mHasBlendedCasters = false;
     std::uint64_t mRevision = 0;

@@ -180,6 +180,7 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
                                          const ShadowOptions& options) {
     mVisible.clear();
     const LightVolume volume(light);
+    mHoldsLight.assign(scene.items().size(), 0);
     std::uint64_t hash = scene.geometryHash();
     const std::vector<DrawItem>& items = scene.items();
     for (std::uint32_t i = 0; i < items.size(); ++i) {
@@ -193,6 +194,7 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
             continue;
         }
         if (depth) mVisible.push_back(i);
+        mHoldsLight[item.object] = char(item.closed && volume.holdsLight(item.bounds));
         hash = (hash ^ item.dataHash) * 0x100000001b3ull + i;
     }
     return hash;
@@ -208,7 +210,8 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
         // Only solids may lose faces: an open surface culled from the light's side would
         // cast no shadow at all (and one from the other side would not either).
         [&](const DrawItem& item) {
-            return options.cull != CullMode::None && !item.doubleSided && item.closed;
+            return options.cull != CullMode::None && !item.doubleSided && item.closed &&
+                   !mHoldsLight[item.object];
         },
         [&](bool alpha) {
             glUseProgram(

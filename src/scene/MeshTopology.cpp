@@ -21,8 +21,8 @@ struct PositionHash {
 
 }  // namespace
 
-bool isClosedSurface(const Mesh& mesh) {
-    if (mesh.indices.size() < 12) return false;  // fewer than four triangles bound nothing
+int closedWinding(const Mesh& mesh) {
+    if (mesh.indices.size() < 12) return 0;  // fewer than four triangles bound nothing
     // One id per distinct position.
     std::unordered_map<glm::vec3, std::uint32_t, PositionHash> ids;
     ids.reserve(mesh.positions.size());
@@ -39,13 +39,28 @@ bool isClosedSurface(const Mesh& mesh) {
                                     weld[mesh.indices[t + 2]]};
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
         for (int e = 0; e < 3; ++e) {
-            if (++edges[key(v[e], v[(e + 1) % 3])] > 1) return false;
+            if (++edges[key(v[e], v[(e + 1) % 3])] > 1) return 0;
         }
     }
     for (const auto& edge : edges) {
-        if (edges.find(edge.first << 32 | edge.first >> 32) == edges.end()) return false;
+        if (edges.find(edge.first << 32 | edge.first >> 32) == edges.end()) return 0;
     }
-    return !edges.empty();
+    if (edges.empty()) return 0;
+    // Which way it is wound: the volume the triangles enclose is positive when they run
+    // counter-clockwise seen from outside (glTF's front faces).
+    const glm::dvec3 centre(mesh.positions.front());
+    double volume = 0.0;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::dvec3 a = glm::dvec3(mesh.positions[mesh.indices[t]]) - centre;
+        const glm::dvec3 b = glm::dvec3(mesh.positions[mesh.indices[t + 1]]) - centre;
+        const glm::dvec3 c = glm::dvec3(mesh.positions[mesh.indices[t + 2]]) - centre;
+        volume += glm::dot(a, glm::cross(b, c));
+    }
+    return volume > 0.0 ? 1 : volume < 0.0 ? -1 : 0;
+}
+
+bool isClosedSurface(const Mesh& mesh) {
+    return closedWinding(mesh) > 0;
 }
 
 }  // namespace gnomon

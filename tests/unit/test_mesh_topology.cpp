@@ -33,6 +33,15 @@ TEST(MeshTopology, ABoxWithOneFaceInsideOutIsNotClosed) {
     EXPECT_FALSE(isClosedSurface(m));
 }
 
+// Every face turned: closed and consistent, but wound inwards (a negative volume), as some
+// FBX exports are. Culling its back faces would keep the faces the camera sees.
+TEST(MeshTopology, ABoxWoundInwardsIsNotClosed) {
+    Mesh m = mesh::box("box", glm::vec3(2.0f), glm::vec3(1.0f));
+    for (std::size_t t = 0; t < m.indices.size(); t += 3)
+        std::swap(m.indices[t + 1], m.indices[t + 2]);
+    EXPECT_FALSE(isClosedSurface(m));
+}
+
 // Two boxes in one mesh are still a closed surface; a degenerate triangle changes nothing.
 TEST(MeshTopology, TwoBoxesAndADegenerateTriangleAreClosed) {
     Mesh m = mesh::box("a", glm::vec3(0.0f), glm::vec3(1.0f));
