@@ -224,15 +224,20 @@ TEST(Assimp, PlyWithColoursAndGeneratedNormals) {
     EXPECT_TRUE(sawRed);
 }
 
+// The world box of the scene's first object.
+void expectFirstObjectSpans(const Scene& s, const glm::vec3& lo, const glm::vec3& hi) {
+    Aabb box;
+    for (const glm::vec3& p : s.meshes[s.objects[0].mesh].positions)
+        box.extend(glm::vec3(s.objects[0].worldFromModel * glm::vec4(p, 1.0f)));
+    expectVec(box.min, lo);
+    expectVec(box.max, hi);
+}
+
 TEST(Assimp, StlLoads) {
     const Scene s = loadWithAssimp(model("wedge.stl"));
     ASSERT_TRUE(s.validate().empty()) << joined(s.validate());
     EXPECT_EQ(triangles(s), 8u);
-    Aabb box;
-    for (const glm::vec3& p : s.meshes[s.objects[0].mesh].positions)
-        box.extend(p);
-    expectVec(box.min, {0, 0, 0});
-    expectVec(box.max, {1, 1, 1});
+    expectFirstObjectSpans(s, {0, 0, 0}, {1, 1, 1});
 }
 
 TEST(Assimp, PointsAndLinesAreSkippedWithAWarning) {
@@ -347,11 +352,7 @@ TEST(Assimp, Gltf1GoesToAssimp) {
     const Scene s = loadScene(model("quad_gltf1.gltf"));
     ASSERT_TRUE(s.validate().empty()) << joined(s.validate());
     EXPECT_EQ(triangles(s), 2u);
-    Aabb box;
-    for (const glm::vec3& p : s.meshes[s.objects[0].mesh].positions)
-        box.extend(glm::vec3(s.objects[0].worldFromModel * glm::vec4(p, 1.0f)));
-    expectVec(box.min, {0, 0, 0});
-    expectVec(box.max, {1, 1, 0});
+    expectFirstObjectSpans(s, {0, 0, 0}, {1, 1, 0});
     test::ScopedTempDir dir;
     const std::string broken = (dir.path() / "broken.gltf").string();
     std::ofstream(broken) << R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": 3}]})";
