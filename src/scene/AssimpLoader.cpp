@@ -106,6 +106,56 @@ void configure(Assimp::Importer& importer) {
     importer.SetPropertyBool(AI_CONFIG_PP_FID_IGNORE_TEXTURECOORDS, true);
 }
 
+// Keeps the items a node places (a light or camera is placed by the node of its name),
+// deleting the others; returns how many are kept.
+template <typename T>
+unsigned keepPlaced(const aiNode& root, T** items, unsigned count) {
+    unsigned kept = 0;
+    for (unsigned i = 0; i < count; ++i) {
+        if (root.FindNode(items[i]->mName)) {
+            items[kept++] = items[i];
+        } else {
+            delete items[i];
+        }
+    }
+    return kept;
+}
+
+// What gnomon does not use and assimp's validation refuses, dropped with a warning before it
+// validates (the importer owns the scene it returned, made mutable): animations (gnomon
+// draws the pose the nodes give; a key past its clip's end, as in Minetest's .b3d carts and
+// characters, refused the whole model), and lights and cameras no node places (an OpenGEX
+// light object no light node uses, as in assimp-testmodels' collada.ogex).
+void dropUnused(aiScene& owned, const std::string& file, Scene& scene) {
+    if (owned.mNumAnimations > 0) {
+        for (unsigned i = 0; i < owned.mNumAnimations; ++i)
+            delete owned.mAnimations[i];
+        delete[] owned.mAnimations;
+        owned.mAnimations = nullptr;
+        owned.mNumAnimations = 0;
+        scene.warnings.push_back(file +
+                                 ": its animations are not played (drawn as the nodes pose it)");
+    }
+    if (!owned.mRootNode) return;
+    const unsigned lights = owned.mNumLights, cameras = owned.mNumCameras;
+    owned.mNumLights = keepPlaced(*owned.mRootNode, owned.mLights, lights);
+    owned.mNumCameras = keepPlaced(*owned.mRootNode, owned.mCameras, cameras);
+    // An array left empty is freed here: assimp's destructor may free only one with a count.
+    if (owned.mNumLights == 0) {
+        delete[] owned.mLights;
+        owned.mLights = nullptr;
+    }
+    if (owned.mNumCameras == 0) {
+        delete[] owned.mCameras;
+        owned.mCameras = nullptr;
+    }
+    const unsigned dropped = lights + cameras - owned.mNumLights - owned.mNumCameras;
+    if (dropped > 0) {
+        scene.warnings.push_back(file + ": " + std::to_string(dropped) +
+                                 " light(s) or camera(s) that no node places, skipped");
+    }
+}
+
 // The importer call: the file read and post-processed into the scene returned, refusals
 // naming the stage; names and describes `scene` and adds the warnings these steps give.
 const aiScene& importScene(Assimp::Importer& importer, const FolderIO& io, const std::string& path,
@@ -117,22 +167,11 @@ const aiScene& importScene(Assimp::Importer& importer, const FolderIO& io, const
         return std::string(stage) + (why.empty() ? "" : ": " + why);
     };
 
-    // Read as the file is, its animations dropped (gnomon draws the pose the nodes give; a
-    // key past its clip's end, as in Minetest's .b3d characters and carts, refused the whole
-    // model); check what validation and post-processing could hide; validate, then process.
+    // Read as the file is, less what gnomon does not use (dropUnused); check what validation
+    // and post-processing could hide; validate, then process.
     const aiScene* ai = importer.ReadFile(path, 0);
     if (!ai) fail(refusal("assimp cannot read it"));
-    if (ai->mNumAnimations > 0) {
-        // The importer owns the scene it returned, made mutable; only its animations go.
-        aiScene& owned = const_cast<aiScene&>(*ai);
-        for (unsigned i = 0; i < owned.mNumAnimations; ++i)
-            delete owned.mAnimations[i];
-        delete[] owned.mAnimations;
-        owned.mAnimations = nullptr;
-        owned.mNumAnimations = 0;
-        scene.warnings.push_back(fs::path(path).filename().string() +
-                                 ": its animations are not played (drawn as the nodes pose it)");
-    }
+    dropUnused(const_cast<aiScene&>(*ai), fs::path(path).filename().string(), scene);
     checkMeshesAsRead(*ai, fail);
     ai = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
     if (!ai) fail(refusal("assimp cannot read it"));

@@ -346,6 +346,16 @@ TEST(Assimp, AnimationsAreDroppedBeforeValidation) {
         << joined(s.warnings);
 }
 
+// So is a light no node places; the model loads, lit by the default sun.
+TEST(Assimp, UnplacedLightsAreDroppedBeforeValidation) {
+    const Scene s = loadWithAssimp(model("orphan_light.ogex"));
+    ASSERT_TRUE(s.validate().empty()) << joined(s.validate());
+    EXPECT_EQ(triangles(s), 1u);
+    EXPECT_NE(joined(s.warnings).find("1 light(s) or camera(s) that no node places"),
+              std::string::npos)
+        << joined(s.warnings);
+}
+
 // glTF 1.0, which tinygltf refuses, is read through assimp; a broken 2.0 file keeps
 // tinygltf's own reason.
 TEST(Assimp, Gltf1GoesToAssimp) {

@@ -327,3 +327,26 @@ b3d_node = b3d_chunk(b"NODE", b"root\0" + struct.pack("<3f3f4f", 0, 0, 0, 1, 1, 
                      b3d_mesh + b3d_keys + b3d_chunk(b"ANIM", struct.pack("<iif", 0, 3, 30.0)))
 with open(os.path.join(here, "anim_past_end.b3d"), "wb") as f:
     f.write(b3d_chunk(b"BB3D", struct.pack("<i", 1) + b3d_node))
+
+# OpenGEX with a light object no light node uses: assimp gives the light no node and its
+# validation refuses the file unless the light is dropped first.
+write("orphan_light.ogex", """
+Metric {float {1.0}}
+GeometryNode $node1
+{
+    Name {string {"tri"}}
+    ObjectRef {ref {$geometry1}}
+}
+LightObject $light1 (type = "point")
+{
+    Color (attrib = "light") {float[3] {{1.0, 1.0, 1.0}}}
+}
+GeometryObject $geometry1
+{
+    Mesh (primitive = "triangles")
+    {
+        VertexArray (attrib = "position") {float[3] {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}
+        IndexArray {unsigned_int32[3] {{0, 1, 2}}}
+    }
+}
+""")
