@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -24,41 +25,73 @@ bool readable(const std::string& ext) {
     return ext == ".gltf" || ext == ".glb" || ext == ".json" || assimpReads(ext);
 }
 
-// glTF 1.0, which tinygltf does not read and assimp does: a binary glTF of version 1, or
-// JSON whose asset says version 1.x, or which keys its accessors, meshes or nodes by name
-// (1.0's dictionaries, where 2.0 has arrays).
-bool isGltf1(const std::string& path) {
+// What a glTF file tinygltf refused says of itself: whether it is glTF 1.0, which assimp
+// reads (a binary glTF of version 1, or JSON whose asset says version 1.x, or which keys its
+// accessors, meshes or nodes by name: 1.0's dictionaries, where 2.0 has arrays), and the
+// extensions it requires (a Draco-compressed mesh fails tinygltf's parse before gnomon can
+// name the extension it lacks).
+struct GltfHeader {
+    bool version1 = false;
+    std::vector<std::string> required;
+};
+
+GltfHeader peekGltf(const std::string& path) {
+    GltfHeader h;
     std::ifstream in(path, std::ios::binary);
-    char head[8] = {};
+    char head[20] = {};
     in.read(head, sizeof head);
-    if (in.gcount() == 8 && std::memcmp(head, "glTF", 4) == 0) {
-        std::uint32_t version = 0;
+    std::string text;
+    if (in.gcount() >= 8 && std::memcmp(head, "glTF", 4) == 0) {
+        std::uint32_t version = 0, length = 0;
         std::memcpy(&version, head + 4, sizeof version);
-        return version == 1;
+        h.version1 = version == 1;
+        if (h.version1 || in.gcount() < 20) return h;
+        std::memcpy(&length, head + 12, sizeof length);  // the first chunk, JSON
+        text.resize(std::min<std::uint32_t>(length, 1u << 26));
+        in.read(text.data(), std::streamsize(text.size()));
+    } else {
+        in.clear();
+        in.seekg(0);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
-    in.clear();
-    in.seekg(0);
-    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) return false;
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) return h;
+    if (const auto r = j.find("extensionsRequired"); r != j.end() && r->is_array()) {
+        for (const nlohmann::json& e : *r)
+            if (e.is_string()) h.required.push_back(e.get<std::string>());
+    }
     // 1.0 exporters wrote the version as a string or a number ("1.0", 1).
     if (const auto asset = j.find("asset"); asset != j.end() && asset->is_object()) {
         const auto version = asset->find("version");
-        if (version != asset->end() && version->is_string())
-            return version->get<std::string>().rfind("1", 0) == 0;
-        if (version != asset->end() && version->is_number()) return version->get<double>() < 2.0;
+        if (version != asset->end() && version->is_string()) {
+            h.version1 = version->get<std::string>().rfind("1", 0) == 0;
+            return h;
+        }
+        if (version != asset->end() && version->is_number()) {
+            h.version1 = version->get<double>() < 2.0;
+            return h;
+        }
     }
     for (const char* key : {"accessors", "meshes", "nodes"})
-        if (const auto k = j.find(key); k != j.end() && k->is_object()) return true;
-    return false;
+        if (const auto k = j.find(key); k != j.end() && k->is_object()) h.version1 = true;
+    return h;
 }
 
 // A glTF file: tinygltf for 2.0, assimp for what it refuses as 1.0 (asked only after a
-// refusal, so a 2.0 file is read once).
+// refusal, so a 2.0 file is read once); a refusal names the extensions the file requires.
 Scene loadAnyGltf(const std::string& path) {
     try {
         return loadGltf(path);
-    } catch (const Error&) {
-        if (!isGltf1(path)) throw;
+    } catch (const Error& e) {
+        const GltfHeader h = peekGltf(path);
+        if (!h.version1) {
+            const std::string what = e.what();
+            std::string list;  // the ones the refusal does not already name
+            for (const std::string& r : h.required)
+                if (what.find(r) == std::string::npos) list += (list.empty() ? "" : ", ") + r;
+            if (list.empty()) throw;
+            throw Error(e.kind(), what + " (the file requires " + list + ")");
+        }
     }
     return loadWithAssimp(path);
 }

@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "gnomon/Error.h"
+#include "gnomon/Scene.h"
 #include "scene/GltfLoader.h"
 
 namespace gnomon {
@@ -257,6 +258,19 @@ TEST(Gltf, GlbChunkOverrunNamesTheChunkAndItsOffset) {
                                              "12 claims 127 bytes of data, only 27 remain"),
                   std::string::npos)
             << e.what();
+    }
+}
+
+// A file tinygltf refuses names the extensions it requires, which are often why (a Draco-
+// compressed mesh fails tinygltf's parse before gnomon's own check of extensions).
+TEST(GltfErrors, ARefusalNamesTheRequiredExtensions) {
+    try {
+        loadScene(corpus("draco_unparsed.gltf"));
+        FAIL() << "loaded";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("nothere.bin"), std::string::npos) << m;
+        EXPECT_NE(m.find("(the file requires KHR_draco_mesh_compression)"), std::string::npos) << m;
     }
 }
 
