@@ -32,6 +32,7 @@ bool readable(const std::string& ext) {
 // name the extension it lacks).
 struct GltfHeader {
     bool version1 = false;
+    bool binary = false;
     std::vector<std::string> required;
 };
 
@@ -45,6 +46,7 @@ GltfHeader peekGltf(const std::string& path) {
         std::uint32_t version = 0, length = 0;
         std::memcpy(&version, head + 4, sizeof version);
         h.version1 = version == 1;
+        h.binary = true;
         if (h.version1 || in.gcount() < 20) return h;
         std::memcpy(&length, head + 12, sizeof length);  // the first chunk, JSON
         text.resize(std::min<std::uint32_t>(length, 1u << 26));
@@ -91,6 +93,13 @@ Scene loadAnyGltf(const std::string& path) {
                 if (what.find(r) == std::string::npos) list += (list.empty() ? "" : ", ") + r;
             if (list.empty()) throw;
             throw Error(e.kind(), what + " (the file requires " + list + ")");
+        }
+        if (h.binary) {
+            // Debian's assimp 5.2 has no reader for binary 1.0 either.
+            throw Error(ErrorKind::InvalidInput,
+                        path +
+                            ": binary glTF 1.0, which neither gnomon's glTF loader (2.0 only) "
+                            "nor assimp reads; convert it to glTF 2.0");
         }
     }
     return loadWithAssimp(path);

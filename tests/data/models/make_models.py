@@ -350,3 +350,9 @@ GeometryObject $geometry1
     }
 }
 """)
+
+# Binary glTF 1.0 (header version 1, one JSON content block): read by neither tinygltf nor
+# Debian's assimp 5.2, refused with a sentence that says so.
+glb1_json = b'{"asset": {"version": "1.0"}, "scene": "s", "scenes": {"s": {"nodes": []}}}'
+with open(os.path.join(here, "binary_gltf1.glb"), "wb") as f:
+    f.write(b"glTF" + struct.pack("<IIII", 1, 20 + len(glb1_json), len(glb1_json), 0) + glb1_json)
