@@ -46,7 +46,8 @@ public:
     explicit LightVolume(const ShadowedLight& light)
         : mLight(light),
           mCube(light.frame.kind == shadow::FrameKind::Cube),
-          mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()) {
+          mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()),
+          mEye(glm::inverse(light.frame.lightFromWorld)[3]) {
         for (int face = 0; mCube && light.frame.faces != shadow::kAllCubeFaces && face < 6;
              ++face) {
             if (light.frame.drawsFace(face))
@@ -66,16 +67,15 @@ public:
     // point light inside the spider's abdomen (assimp-testmodels' spider.fbx) lit the whole
     // view, where the trace finds it shut in (34 % of the view leaked).
     bool holdsLight(const Aabb& box) const {
-        if (mLight.frame.orthographic) return false;
-        const glm::vec3 eye(glm::inverse(mLight.frame.lightFromWorld)[3]);
-        return glm::all(glm::lessThanEqual(box.min, eye)) &&
-               glm::all(glm::lessThanEqual(eye, box.max));
+        return !mLight.frame.orthographic && glm::all(glm::lessThanEqual(box.min, mEye)) &&
+               glm::all(glm::lessThanEqual(mEye, box.max));
     }
 
 private:
     const ShadowedLight& mLight;
     bool mCube;
     glm::mat4 mClipFromWorld;
+    glm::vec3 mEye;                     // the light's position (perspective and cube frames)
     std::array<glm::mat4, 6> mFaces{};  // the drawn faces' clip volumes, when not all six
     int mFaceCount = 0;
 };

@@ -59,8 +59,4 @@ int closedWinding(const Mesh& mesh) {
     return volume > 0.0 ? 1 : volume < 0.0 ? -1 : 0;
 }
 
-bool isClosedSurface(const Mesh& mesh) {
-    return closedWinding(mesh) > 0;
-}
-
 }  // namespace gnomon

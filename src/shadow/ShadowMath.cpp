@@ -48,16 +48,8 @@ glm::mat4 clipFromView(const Camera& camera, float aspect) {
 
 Camera depthFitted(const Camera& camera, const Aabb& bounds) {
     if (bounds.empty()) return camera;
-    const glm::mat4 view = viewFromWorld(camera);
-    float nearest = std::numeric_limits<float>::max(), farthest = -nearest;
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner(c & 1 ? bounds.max.x : bounds.min.x,
-                               c & 2 ? bounds.max.y : bounds.min.y,
-                               c & 4 ? bounds.max.z : bounds.min.z);
-        const float depth = -(view * glm::vec4(corner, 1.0f)).z;
-        nearest = std::min(nearest, depth);
-        farthest = std::max(farthest, depth);
-    }
+    float nearest = 0.0f, farthest = 0.0f;
+    fit::depthRange(bounds, viewFromWorld(camera), nearest, farthest);
     if (!std::isfinite(nearest) || !std::isfinite(farthest)) return camera;
     // A margin of the span (and of the distance, for a perspective near plane) keeps the
     // planes off the box's own faces, which a ground's quad may lie in.

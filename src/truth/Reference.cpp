@@ -182,7 +182,6 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     const float viewAspect = camera.aspect > 0.0f ? camera.aspect : aspect;
     const float tanHalf = std::tan(0.5f * glm::radians(camera.fovyDegrees));
     const glm::vec3 eye = camera.eye;
-    const glm::vec3 forward = ahead;
     const bool ortho = scene.camera.projection == Projection::Orthographic;
     const float pixelAtUnit = ortho
                                   ? (scene.camera.top - scene.camera.bottom) / float(options.height)
@@ -199,14 +198,9 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
         glm::vec3 from = eye, dir = ahead;
         float tnear = camera.near, tfar = camera.far;
         if (ortho) {
-            // From the near plane itself, which an orthographic view may put behind the eye
-            // (a ray's start must not be negative).
             from +=
                 right * (0.5f * (nx * (camera.right - camera.left) + camera.right + camera.left)) +
-                up * (0.5f * (ny * (camera.top - camera.bottom) + camera.top + camera.bottom)) +
-                ahead * camera.near;
-            tnear = 0.0f;
-            tfar -= camera.near;
+                up * (0.5f * (ny * (camera.top - camera.bottom) + camera.top + camera.bottom));
         } else {
             const glm::vec3 d = ahead + right * (nx * tanHalf * viewAspect) + up * (ny * tanHalf);
             const float length = glm::length(d);
@@ -248,7 +242,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             const std::size_t pixel = std::size_t(y) * std::size_t(options.width) + std::size_t(x);
             ref.object[pixel] = o;
             ref.pixelWorld[pixel] =
-                pixelAtUnit * (ortho ? 1.0f : std::max(glm::dot(point - eye, forward), 0.0f));
+                pixelAtUnit * (ortho ? 1.0f : std::max(glm::dot(point - eye, ahead), 0.0f));
             if (!obj.receivesShadows) return;
             ref.surfacePoint[pixel] = point;
             ref.surfaceNormal[pixel] = n;
