@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -31,6 +32,42 @@ std::string lower(std::string s) {
     for (char& c : s)
         c = char(std::tolower(static_cast<unsigned char>(c)));
     return s;
+}
+
+// assimp's reason made one short line: its parsers quote the text they stopped at, up to a
+// few hundred characters of the file with its line breaks as '?' (OpenSCAD's broken STL
+// test files), so each quotation is cut to its first kQuoted characters and runs of spaces
+// are closed up.
+std::string tidied(const std::string& why) {
+    constexpr std::size_t kQuoted = 40;
+    std::string out;
+    bool quoted = false;
+    std::size_t inQuote = 0;
+    for (char c : why) {
+        if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+        if (c == '"') {
+            if (quoted && inQuote > kQuoted) out += "...";
+            quoted = !quoted;
+            inQuote = 0;
+        } else if (quoted && ++inQuote > kQuoted) {
+            continue;
+        }
+        if (c == ' ' && !out.empty() && out.back() == ' ') continue;
+        out += c;
+    }
+    while (!out.empty() && out.back() == ' ')
+        out.pop_back();
+    return out;
+}
+
+// A file that starts as a zip archive does (the compressed form the AMF standard allows).
+bool zipped(const std::string& path) {
+    char magic[4] = {};
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return false;
+    const std::size_t got = std::fread(magic, 1, sizeof magic, f);
+    std::fclose(f);
+    return got == sizeof magic && std::memcmp(magic, "PK\x03\x04", sizeof magic) == 0;
 }
 
 }  // namespace
@@ -161,15 +198,19 @@ void dropUnused(aiScene& owned, const std::string& file, Scene& scene) {
 const aiScene& importScene(Assimp::Importer& importer, const FolderIO& io, const std::string& path,
                            const Fail& fail, Scene& scene) {
     auto refusal = [&](const char* stage) {
-        std::string why = !io.refused().empty() ? io.refused() : importer.GetErrorString();
-        while (!why.empty() && (why.back() == '\n' || why.back() == ' '))
-            why.pop_back();
+        const std::string why =
+            tidied(!io.refused().empty() ? io.refused() : importer.GetErrorString());
         return std::string(stage) + (why.empty() ? "" : ": " + why);
     };
 
     // Read as the file is, less what gnomon does not use (dropUnused); check what validation
     // and post-processing could hide; validate, then process.
     const aiScene* ai = importer.ReadFile(path, 0);
+    if (!ai && lower(fs::path(path).extension().string()) == ".amf" && zipped(path)) {
+        fail(
+            "a zip-compressed AMF file, which assimp cannot read: unzip it (the archive "
+            "holds the AMF's XML) and load that");
+    }
     if (!ai) fail(refusal("assimp cannot read it"));
     dropUnused(const_cast<aiScene&>(*ai), fs::path(path).filename().string(), scene);
     checkMeshesAsRead(*ai, fail);

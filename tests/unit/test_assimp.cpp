@@ -263,6 +263,28 @@ TEST(Assimp, BrokenFilesAreRefusedNamingThemWithAssimpsReason) {
     EXPECT_NE(index.find("mIndices[2] is out of range"), std::string::npos) << index;
 }
 
+// A parser's reason quotes the text it stopped at: a short excerpt, on one line. A zipped
+// AMF (the standard's compressed form, which assimp does not unpack) says what to do.
+TEST(Assimp, ReasonsAreOneShortLine) {
+    test::ScopedTempDir dir;
+    std::string facet = "solid bad\n  facet normal 0 0 1\n    outer loop\n      vertex x 0 0\n";
+    for (int i = 0; i < 20; ++i)
+        facet += "      vertex 0 0 10\n    endloop\n  endfacet\n";
+    const std::string stl = (dir.path() / "unparseable.stl").string();
+    std::ofstream(stl) << facet << "endsolid bad\n";
+    const std::string m = errorOf([&] { loadWithAssimp(stl); });
+    EXPECT_NE(m.find("unparseable.stl: assimp cannot read it: "), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    EXPECT_EQ(m.find("  "), std::string::npos) << m;
+    EXPECT_LT(m.size(), 300u) << m;
+    const std::string amf = (dir.path() / "zipped.amf").string();
+    std::ofstream(amf, std::ios::binary)
+        << std::string("PK\x03\x04\x14\0\0\0\x08\0", 10) << std::string(64, 'z');
+    const std::string z = errorOf([&] { loadWithAssimp(amf); });
+    EXPECT_NE(z.find("zipped.amf: a zip-compressed AMF file"), std::string::npos) << z;
+    EXPECT_NE(z.find("unzip it"), std::string::npos) << z;
+}
+
 TEST(Assimp, MissingFileIsAnIoError) {
     const std::string m =
         errorOf([] { loadWithAssimp(model("no_such_model.obj")); }, ErrorKind::InvalidInput);
