@@ -11,6 +11,8 @@ packages=(
     libglfw3-dev libimgui-dev libglm-dev libpng-dev libstb-dev libcli11-dev
     libtinygltf-dev nlohmann-json3-dev libembree-dev libassimp-dev
     libgtest-dev libgmock-dev libbenchmark-dev libmeshoptimizer-dev
+    # the independent ray caster that checks the reference (tests/crosscheck)
+    libcgal-dev
     xvfb xauth python3
     # the viewer's font (DejaVu Sans)
     fonts-dejavu-core
