@@ -53,14 +53,15 @@ inline std::vector<glm::vec2> groundRanges(const Camera& camera, const shadow::S
     return ranges;
 }
 
-// The ground (|x|, |z| <= 10) with a post on it, seen by `camera` at 128 x 96 reduced to
+// The ground (|x|, |z| <= half) with a post on it, seen by `camera` at 128 x 96 reduced to
 // 64-cell rows: `samples` filled from its depth, the fit scene pointing at them.
-inline shadow::FitScene groundWithPost(const Camera& camera, shadow::ViewSamples& samples) {
+inline shadow::FitScene groundWithPost(const Camera& camera, shadow::ViewSamples& samples,
+                                       float half = 10.0f) {
     const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
     const float aspect = 4.0f / 3.0f;
     shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
     shadow::FitScene scene;
-    scene.receivers = {Aabb{{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}}};
+    scene.receivers = {Aabb{{-half, 0.0f, -half}, {half, 0.0f, half}}};
     scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
     scene.viewKnown = true;
     scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);

@@ -123,15 +123,9 @@ TEST(ViewSamples, SunFittedToSamplesCoversThemWithSmallerTexels) {
     // A 200 x 200 ground with a post on it, seen close up: the boxes span the whole ground.
     Camera camera = groundCamera();
     camera.far = 30.0f;
-    const shadow::SampleGrid grid = shadow::sampleGrid(128, 96, 64);
-    const float aspect = 4.0f / 3.0f;
     shadow::ViewSamples samples;
-    shadow::viewSamples(groundRanges(camera, grid, aspect), grid, camera, aspect, samples);
-    shadow::FitScene scene;
-    scene.receivers = {Aabb{{-100.0f, 0.0f, -100.0f}, {100.0f, 0.0f, 100.0f}}};
-    scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
-    scene.viewKnown = true;
-    scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
+    shadow::FitScene scene = groundWithPost(camera, samples, 100.0f);
+    scene.samples = nullptr;  // first from the boxes alone
     Light sun;
     sun.type = LightType::Directional;
     sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
