@@ -126,7 +126,10 @@ public:
     GlTexture drawShadowMapPanel(int light, int width, int height);
     // The shadow maps of the last frame, one per shadowed light.
     std::vector<ShadowMapImage> shadowMaps();
-    FrameStats lastFrameStats() const;
+    // The last frame's counts and timings; the reference stays valid until the next frame.
+    // A reference, so a viewer that copies it into its own FrameStats every frame reuses that
+    // copy's storage instead of allocating a new one.
+    const FrameStats& lastFrameStats() const;
     // For each map of the last frame, the share of it the view uses (measured from a coarse
     // depth pass of the view: the fit's own when it had one, else drawn now).
     std::vector<MapUsage> mapUsage();

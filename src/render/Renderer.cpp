@@ -407,7 +407,7 @@ std::vector<ShadowMapImage> Renderer::shadowMaps() {
     return out;
 }
 
-FrameStats Renderer::lastFrameStats() const {
+const FrameStats& Renderer::lastFrameStats() const {
     return mImpl->stats;
 }
 

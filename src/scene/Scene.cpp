@@ -127,41 +127,44 @@ std::vector<std::string> Scene::validateLightsAndCamera() const {
     auto add = [&](const std::string& s) { problems.push_back("scene '" + name + "': " + s); };
     for (size_t l = 0; l < lights.size(); ++l) {
         const Light& light = lights[l];
-        const std::string where = "lights[" + std::to_string(l) + "] ('" + light.name + "')";
+        // Made only for a problem: the renderer checks the lights every frame, and a light's
+        // name would otherwise cost an allocation per light per frame.
+        auto where = [&] { return "lights[" + std::to_string(l) + "] ('" + light.name + "')"; };
         if (!finite(light.position) || !finite(light.direction) || !finite(light.colour)) {
-            add(where + " has a non-finite position, direction or colour");
+            add(where() + " has a non-finite position, direction or colour");
         }
         if (light.type != LightType::Point && glm::length(light.direction) < 1e-6f) {
-            add(where + " has a zero direction");
+            add(where() + " has a zero direction");
         }
         const Attenuation& a = light.attenuation;
         if (!(a.constant >= 0.0f && a.linear >= 0.0f && a.quadratic >= 0.0f &&
               a.constant + a.linear + a.quadratic > 0.0f)) {
-            add(where + " attenuation needs c0, c1, c2 >= 0 and not all zero");
+            add(where() + " attenuation needs c0, c1, c2 >= 0 and not all zero");
         }
         if (!(light.range >= 0.0f) || !std::isfinite(light.range)) {
-            add(where + " range must be >= 0 (0: unlimited)");
+            add(where() + " range must be >= 0 (0: unlimited)");
         }
         if (light.type == LightType::Spot &&
             !(light.innerConeDegrees >= 0.0f && light.innerConeDegrees <= light.outerConeDegrees &&
               light.outerConeDegrees > 0.0f && light.outerConeDegrees < 90.0f)) {
-            add(where + " spot cone needs 0 <= inner <= outer < 90 degrees");
+            add(where() + " spot cone needs 0 <= inner <= outer < 90 degrees");
         }
         if (light.shadowMapSize != 0 && (light.shadowMapSize < 64 || light.shadowMapSize > 8192)) {
-            add(where + " shadow map size " + std::to_string(light.shadowMapSize) +
+            add(where() + " shadow map size " + std::to_string(light.shadowMapSize) +
                 " is outside 64..8192 (0: its default)");
         }
         const ShadowCamera& c = light.shadowCamera;
         if (c.policy != ShadowCameraPolicy::Fit && !(c.near > 0.0f && c.far > c.near)) {
-            add(where + " shadow camera needs 0 < near < far");
+            add(where() + " shadow camera needs 0 < near < far");
         }
         if (c.policy == ShadowCameraPolicy::Manual &&
             glm::length(c.target - light.position) < 1e-6f) {
-            add(where + " shadow camera looks at its own position (target == position)");
+            add(where() + " shadow camera looks at its own position (target == position)");
         }
         if (c.policy == ShadowCameraPolicy::Course &&
             glm::length(camera.centre - light.position) < 1e-6f) {
-            add(where + " sits at the view camera's centre, where its course-policy camera looks");
+            add(where() +
+                " sits at the view camera's centre, where its course-policy camera looks");
         }
     }
     if (!(camera.near > 0.0f && camera.far > camera.near)) add("camera needs 0 < near < far");
