@@ -208,7 +208,9 @@ Included readIncludes(const Fields& root, const std::string& folder, LoadState& 
         r.array(*inc, root.at("include"), 0, kMaxIncludes);
         for (std::size_t i = 0; i < inc->size(); ++i) {
             const std::string at = element(root.at("include"), i);
-            const Fields f(r, (*inc)[i], at, {"scene", "transform", "lights", "camera"});
+            const Fields f(
+                r, (*inc)[i], at,
+                {"scene", "transform", "lights", "camera", "casts-shadows", "receives-shadows"});
             const std::string name = r.string(f.need("scene"), f.at("scene"));
             glm::mat4 t(1.0f);
             if (const Json* tj = f.find("transform")) t = readTransform(r, *tj, f.at("transform"));
@@ -239,6 +241,14 @@ Included readIncludes(const Fields& root, const std::string& folder, LoadState& 
             if (useCamera && !included.camera) {
                 placeCamera(s.camera, t);
                 included.camera = s.camera;
+            }
+            // Given, these set every included object's flags (a model that only casts, say).
+            for (const char* key : {"casts-shadows", "receives-shadows"}) {
+                if (!f.has(key)) continue;
+                bool on = true;
+                f.get(key, on);
+                for (Object& o : s.objects)
+                    (key[0] == 'c' ? o.castsShadows : o.receivesShadows) = on;
             }
             appendInclude(out, std::move(s), t);
         }

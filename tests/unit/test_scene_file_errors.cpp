@@ -126,7 +126,7 @@ TEST(SceneFile, MoreMistakesAreRefusedWithThePath) {
          "book-triangle"},
         {R"({"gnomon-scene": 1, "include": [{"scene": "tutorial-room", "light": false}]})",
          "bad.json: include[0]: unknown key \"light\" (known keys: scene, transform, lights, "
-         "camera)"},
+         "camera, casts-shadows, receives-shadows)"},
         {"{\"gnomon-scene\": 1, \"objects\": " + std::string(100, '[') + std::string(100, ']') +
              "}",
          "bad.json: objects[0][0][0]"},

@@ -109,6 +109,27 @@ TEST(SceneFile, FilesIncludeFilesRelativeToTheirFolder) {
     Compare{false}.vec(s.camera.eye, {0, 5, 10}, "eye");
 }
 
+// An include's shadow flags, when given, set every object it brings; not given, each keeps
+// its own (the room's objects all cast and receive).
+TEST(SceneFile, IncludeSetsItsObjectsShadowFlags) {
+    ScopedTempDir dir;
+    const fs::path p = dir.path() / "flags.json";
+    writeText(p, R"({"gnomon-scene": 1, "include": [
+        {"scene": "tutorial-room", "receives-shadows": false},
+        {"scene": "tutorial-room", "casts-shadows": false},
+        {"scene": "tutorial-room"}]})");
+    const Scene s = loadSceneFile(p.string());
+    const std::size_t n = builtinScene("tutorial-room").objects.size();
+    ASSERT_EQ(s.objects.size(), 3 * n);
+    for (std::size_t o = 0; o < 3 * n; ++o) {
+        EXPECT_EQ(s.objects[o].castsShadows, o < n || o >= 2 * n) << o;
+        EXPECT_EQ(s.objects[o].receivesShadows, o >= n) << o;
+    }
+    writeText(
+        p, R"({"gnomon-scene": 1, "include": [{"scene": "tutorial-room", "casts-shadows": 1}]})");
+    EXPECT_THROW(loadSceneFile(p.string()), Error);
+}
+
 TEST(SceneFile, WithoutLightsOrCameraASunAndAFramingCameraAreAdded) {
     ScopedTempDir dir;
     const fs::path p = dir.path() / "bare.json";
