@@ -305,13 +305,19 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
 }
 
 // Opaque and masked items in their order (the fast program, then the material one where
-// needed, each texture bound once); blended ones after, farthest first, over them.
+// needed, each texture bound once), front faces only; then the back faces of the double-sided
+// ones among them; blended ones last, farthest first, over them. Drawn after every front
+// face, a double-sided solid's back faces (an open or inward-wound model from a format that
+// does not give sides) mostly fail the depth test before they are shaded: drawn with culling
+// off in one go, back faces drawn first were shaded and then covered (glmark2's horse: main
+// pass 1.34 times as long). The picture is the same: each face is drawn once either way.
 void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
                          const FrameUniforms& u, bool visibilityPass, bool floor) {
     const MainPassInputs& in = *u.in;
     const glm::ivec4 counts = unrolledCounts(u.ranges, u.first, options.shadow.enabled);
-    bool culling = false, material = false;
-    glDisable(GL_CULL_FACE);
+    bool culling = true, material = false;
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
     useProgram(program(options, in, counts, visibilityPass, false, floor), u);
     GLuint texture = ~0u;
     // Sets the state `item` needs.
@@ -324,21 +330,21 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
             texture = scene.textureOf(item);
             glBindTextureUnit(4, texture);
         }
-        if (item.doubleSided == culling) {
-            culling = !item.doubleSided;
-            culling ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-        }
+    };
+    auto setCulling = [&](bool on) {
+        if (on != culling) on ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+        culling = on;
     };
     // Runs of items needing the same state: one multi-draw each.
     mBlended.clear();
+    mBackFaces.clear();
     const std::vector<DrawItem>& items = scene.items();
     std::uint32_t runStart = 0, runLength = 0;
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         if (items[i].alphaMode != AlphaMode::Blend) {
             const DrawItem& item = items[i];
-            const bool differs = item.materialPath != material ||
-                                 (material && scene.textureOf(item) != texture) ||
-                                 item.doubleSided == culling;
+            const bool differs =
+                item.materialPath != material || (material && scene.textureOf(item) != texture);
             if (differs) {  // the run so far is drawn in the state it was set up for
                 scene.drawRange(runStart, runLength);
                 runStart = i;
@@ -346,6 +352,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
                 setState(item);
             }
             ++runLength;
+            if (item.doubleSided) mBackFaces.push_back(i);
         } else if (!visibilityPass) {  // scored: the surfaces behind (as the reference)
             const glm::vec3 c = items[i].bounds.centre();
             mBlended.emplace_back(-glm::length(glm::vec3(in.viewFromWorld * glm::vec4(c, 1.0f))),
@@ -353,6 +360,14 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
         }
     }
     scene.drawRange(runStart, runLength);
+    if (!mBackFaces.empty()) {
+        glCullFace(GL_FRONT);
+        for (std::uint32_t i : mBackFaces) {
+            setState(items[i]);
+            scene.draw(items[i]);
+        }
+        glCullFace(GL_BACK);
+    }
     if (!mBlended.empty()) {
         std::sort(mBlended.begin(), mBlended.end());
         glEnable(GL_BLEND);
@@ -360,6 +375,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
         glDepthMask(GL_FALSE);
         for (const auto& [distance, i] : mBlended) {
             setState(items[i]);
+            setCulling(!items[i].doubleSided);
             scene.draw(items[i]);
         }
         glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);

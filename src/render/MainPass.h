@@ -125,6 +125,7 @@ private:
     int mMapSamplerKey = -1, mCubeSamplerKey = -1;          // the filters they were made for
     gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame
+    std::vector<std::uint32_t> mBackFaces;  // opaque double-sided items: reused per frame
 };
 
 }  // namespace gnomon::render
