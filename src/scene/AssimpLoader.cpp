@@ -446,6 +446,7 @@ Scene loadWithAssimp(const std::string& path) {
 
     readMaterials(cx);
     walk(cx, *cx.ai.mRootNode, glm::mat4(1.0f), 0);
+    sidesFromTopology(cx);
     readLights(cx);
     LoadedModel loaded;
     loaded.file = path;

@@ -2,10 +2,12 @@
 // and the diffuse (or base colour) texture from a file inside the model's folder or embedded.
 #include <algorithm>
 #include <cstring>
+#include <map>
 
 #include <assimp/material.h>
 
 #include "scene/AssimpParts.h"
+#include "scene/MeshTopology.h"
 #include "scene/TextureDecode.h"
 
 namespace gnomon::assimp_parts {
@@ -147,7 +149,10 @@ Material readMaterial(Context& cx, const aiMaterial& mat, unsigned mi) {
         }
     }
     int twoSided = 0;
-    if (mat.Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) g.doubleSided = twoSided != 0;
+    if (mat.Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) {
+        g.doubleSided = twoSided != 0;
+        cx.sidedByFile.insert(mi);
+    }
     float shininess = 0.0f;
     if (mat.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && std::isfinite(shininess))
         g.shininess = std::clamp(shininess, 1.0f, 2048.0f);
@@ -184,6 +189,22 @@ Material readMaterial(Context& cx, const aiMaterial& mat, unsigned mi) {
 }
 
 }  // namespace
+
+// glTF says which faces are fronts; most formats assimp reads do not, and modelling tools show
+// them double-sided. Culling back faces keeps the picture only on a closed surface wound
+// outwards (MeshTopology.h): glmark2's cat, an open shell, lost the near half of its body, and
+// a Blender axe wound inwards showed its unlit inside.
+void sidesFromTopology(Context& cx) {
+    std::map<std::uint32_t, int> winding;  // per mesh, found once
+    for (const Object& o : cx.scene.objects) {
+        Material& m = cx.scene.materials[o.material];
+        if (m.doubleSided || cx.sidedByFile.count(o.material)) continue;
+        auto [it, fresh] = winding.emplace(o.mesh, 0);
+        if (fresh) it->second = closedWinding(cx.scene.meshes[o.mesh]);
+        const bool mirrored = glm::determinant(glm::mat3(o.worldFromModel)) < 0.0f;
+        if (it->second * (mirrored ? -1 : 1) <= 0) m.doubleSided = true;
+    }
+}
 
 void readMaterials(Context& cx) {
     for (unsigned mi = 0; mi < cx.ai.mNumMaterials; ++mi)

@@ -72,8 +72,9 @@ struct Context {
     std::map<std::string, int> textureOf;
     // One gnomon mesh per assimp mesh (and per winding, for mirrored nodes).
     std::map<std::pair<unsigned, bool>, std::int64_t> meshOf;
-    std::set<unsigned> reported;  // meshes already warned about and counted
-    long zeroArea = 0;            // triangles skipped, for one warning at the end
+    std::set<unsigned> reported;     // meshes already warned about and counted
+    std::set<unsigned> sidedByFile;  // materials whose file says single- or double-sided
+    long zeroArea = 0;               // triangles skipped, for one warning at the end
     // Nodes' world transforms by name, for lights and cameras.
     std::map<std::string, glm::mat4> worldOf;
 };
@@ -89,6 +90,12 @@ void warnMissingNormals(const aiScene& ai, Scene& scene);
 // Materials: every material of the file into cx.scene (with the textures they use), or a
 // default one when there are none (AssimpMaterials.cpp).
 void readMaterials(Context& cx);
+
+// Materials the file does not call single- or double-sided (OBJ, STL and PLY never do) are
+// drawn double-sided where an object using them is not a closed surface wound outwards:
+// culling its back faces would show the inside of an open shell or of a solid wound inwards
+// (AssimpMaterials.cpp). After the objects are made.
+void sidesFromTopology(Context& cx);
 
 // The gnomon mesh of assimp mesh `index` (winding reversed when `flipped`), made on first
 // use; -1 when it draws no triangles (AssimpMeshes.cpp).

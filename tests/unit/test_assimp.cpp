@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -283,6 +284,41 @@ TEST(Assimp, ReasonsAreOneShortLine) {
     const std::string z = errorOf([&] { loadWithAssimp(amf); });
     EXPECT_NE(z.find("zipped.amf: a zip-compressed AMF file"), std::string::npos) << z;
     EXPECT_NE(z.find("unzip it"), std::string::npos) << z;
+}
+
+// OBJ says nothing of sides: a closed cube wound outwards keeps single-sided faces (culling
+// them is safe), the same cube wound inwards and an open quad are drawn double-sided, or the
+// camera would see their insides.
+TEST(Assimp, SidesTheFileDoesNotGiveFollowTheTopology) {
+    test::ScopedTempDir dir;
+    const std::string corners =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+    // Each face counter-clockwise seen from outside the unit cube.
+    const char* outwards =
+        "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+        "f 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n";
+    std::string inwards;
+    for (std::string line; const char c : std::string(outwards)) {
+        if (c != '\n') {
+            line += c;
+            continue;
+        }
+        int a, b, d;
+        std::sscanf(line.c_str(), "f %d %d %d", &a, &b, &d);
+        inwards +=
+            "f " + std::to_string(a) + " " + std::to_string(d) + " " + std::to_string(b) + "\n";
+        line.clear();
+    }
+    auto sides = [&](const std::string& name, const std::string& text) {
+        const std::string path = (dir.path() / name).string();
+        std::ofstream(path) << text;
+        const Scene s = loadWithAssimp(path);
+        EXPECT_EQ(s.objects.size(), 1u) << name;
+        return s.materials.at(s.objects.at(0).material).doubleSided;
+    };
+    EXPECT_FALSE(sides("out.obj", corners + outwards));
+    EXPECT_TRUE(sides("in.obj", corners + inwards));
+    EXPECT_TRUE(sides("quad.obj", corners + "f 1 2 3\nf 1 3 4\n"));
 }
 
 TEST(Assimp, MissingFileIsAnIoError) {
