@@ -13,6 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gnomon/Error.h"
+#include "truth/ShadowRays.h"
 
 namespace gnomon::crosscheck {
 namespace {
@@ -26,9 +27,9 @@ using Iterator = std::vector<Triangle>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<K, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
-// The reference's threshold for a surface edge-on to a light (truth/ShadowRays.h): faces
-// closer to edge-on than this are in their own attached shadow for both casters.
-constexpr double kEdgeOn = 1e-3;
+// Faces closer to edge-on than the reference's threshold are in their own attached shadow
+// for both casters: a definition the two must share, not code.
+constexpr double kEdgeOn = truth::ShadowRays::kEdgeOnCosine;
 
 Vector vec(const glm::dvec3& v) {
     return Vector(v.x, v.y, v.z);
