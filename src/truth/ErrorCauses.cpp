@@ -9,21 +9,22 @@ namespace gnomon::truth {
 
 namespace {
 
-// Distance along the ray from `origin` towards `dir` to the first surface that stops at least
-// half the light, no farther than `far`; -1 if none does. Doubling from `start` then halving
-// the bracket: near occluders (contacts, the case that matters) are found to a few parts in
-// a million of their distance, wherever the light is (a sun's distance is infinite).
-float occluderDistance(const ShadowRays& rays, const glm::vec3& origin, const glm::vec3& dir,
-                       float far, float start) {
-    if (!(rays.transmitted(origin, dir, far) < 0.5f)) return -1.0f;
-    float lo = 0.0f, hi = std::fmin(start, far);
-    while (!(rays.transmitted(origin, dir, hi) < 0.5f)) {
+// Distance along the ray from `point` towards `dir` (starting `near` along it) to the first
+// surface that stops at least half the light, no farther than `far`; -1 if none does.
+// Doubling from `start` then halving the bracket: near occluders (contacts, the case that
+// matters) are found to a few parts in a million of their distance, wherever the light is
+// (a sun's distance is infinite).
+float occluderDistance(const ShadowRays& rays, const glm::vec3& point, const glm::vec3& dir,
+                       float near, float far, float start) {
+    if (!(rays.transmitted(point, dir, near, far) < 0.5f)) return -1.0f;
+    float lo = near, hi = std::fmin(std::fmax(start, 2.0f * near), far);
+    while (!(rays.transmitted(point, dir, near, hi) < 0.5f)) {
         lo = hi;
         hi = std::fmin(2.0f * hi, far);
     }
     for (int i = 0; i < 20; ++i) {
         const float mid = 0.5f * (lo + hi);
-        (rays.transmitted(origin, dir, mid) < 0.5f ? hi : lo) = mid;
+        (rays.transmitted(point, dir, near, mid) < 0.5f ? hi : lo) = mid;
     }
     return hi;
 }
@@ -68,13 +69,13 @@ Explained explainErrors(const Reference& r, const std::vector<float>& visibility
                 const std::size_t p = c / std::size_t(r.lights);
                 if (e.leak && r.rays) {
                     const glm::vec3& point = r.surfacePoint[p];
-                    const glm::vec3 origin = r.rays->rayOrigin(point, r.surfaceNormal[p]);
                     glm::vec3 toLight(0.0f);
                     float distance = 0.0f;
-                    if (r.rays->towardsLight(std::size_t(l), point, origin, toLight, distance)) {
+                    if (r.rays->towardsLight(std::size_t(l), point, toLight, distance)) {
                         const float start = std::fmax(0.5f * e.texelWorld, 1e-30f);
+                        const float near = r.rays->lead(point, r.surfaceNormal[p], toLight);
                         e.occluderDistance =
-                            occluderDistance(*r.rays, origin, toLight, distance, start);
+                            occluderDistance(*r.rays, point, toLight, near, distance, start);
                     }
                 }
                 if (!e.inBand) count(out.causes, e);

@@ -98,14 +98,14 @@ struct LightTracer {
     float tanAngle;      // directional lights' angular radius, as a tangent
     float radius;        // other lights' emitter radius
 
-    // `point` seen at `pixel` (normal n, facing the camera), rays leaving from `origin`;
-    // `turn` rotates the soft-shadow disc per pixel.
-    void trace(std::size_t pixel, const Material& mat, const glm::vec3& point,
-               const glm::vec3& origin, const glm::vec3& n, float turn) const {
+    // `point` seen at `pixel` (normal n, facing the camera); `turn` rotates the soft-shadow
+    // disc per pixel.
+    void trace(std::size_t pixel, const Material& mat, const glm::vec3& point, const glm::vec3& n,
+               float turn) const {
         for (std::size_t l = 0; l < scene.lights.size(); ++l) {
             glm::vec3 toLight;
             float distance = 0.0f;
-            if (!rays.towardsLight(l, point, origin, toLight, distance)) continue;
+            if (!rays.towardsLight(l, point, toLight, distance)) continue;
             const Light& light = scene.lights[l];
             const glm::vec3 ld = ShadowRays::directionOf(light);
             const std::size_t cell = pixel * std::size_t(ref.lights) + l;
@@ -115,11 +115,12 @@ struct LightTracer {
             }
             ref.applies[cell] = 1;
             ref.lightCosine[cell] = mat.unlit ? 1.0f : glm::dot(n, toLight);
-            ref.hard[cell] = rays.transmitted(origin, toLight, distance,
+            const float near = rays.lead(point, n, toLight);
+            ref.hard[cell] = rays.transmitted(point, toLight, near, distance,
                                               ref.tint.empty() ? nullptr : &ref.tint[cell]);
             if (contactRange > 0.0f && ref.hard[cell] < 0.5f) {
                 ref.nearOccluder[cell] =
-                    rays.transmitted(origin, toLight, std::min(distance, contactRange)) < 0.5f;
+                    rays.transmitted(point, toLight, near, std::min(distance, contactRange)) < 0.5f;
             }
             if (samples == 0) continue;
             float visible = 0.0f;
@@ -129,7 +130,7 @@ struct LightTracer {
                 for (int i = 0; i < samples; ++i) {
                     const glm::vec2 s = discSample(i, samples, turn) * tanAngle;
                     const glm::vec3 d = glm::normalize(toLight + s.x * u + s.y * v);
-                    visible += rays.transmitted(origin, d, distance);
+                    visible += sampleLight(point, n, d, distance);
                 }
             } else {
                 // A disc of `radius`: around the light facing the point (spot, point), or
@@ -140,13 +141,20 @@ struct LightTracer {
                 for (int i = 0; i < samples; ++i) {
                     const glm::vec2 s = discSample(i, samples, turn) * radius;
                     const glm::vec3 q = centre + s.x * u + s.y * v;
-                    const glm::vec3 d = q - origin;
+                    const glm::vec3 d = q - point;
                     const float len = glm::length(d);
-                    if (len > 0.0f) visible += rays.transmitted(origin, d / len, len * 0.99999f);
+                    if (len > 0.0f) visible += sampleLight(point, n, d / len, len * 0.99999f);
                 }
             }
             ref.soft[cell] = visible / float(samples);
         }
+    }
+
+    // One soft-shadow ray: a part of the light below the surface's horizon sends it nothing.
+    float sampleLight(const glm::vec3& point, const glm::vec3& n, const glm::vec3& d,
+                      float far) const {
+        if (!(glm::dot(n, d) > ShadowRays::kEdgeOnCosine)) return 0.0f;
+        return rays.transmitted(point, d, rays.lead(point, n, d), far);
     }
 };
 
@@ -238,7 +246,11 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
                 }
                 n = -n;  // the side the camera sees
             }
-            const glm::vec3 point = from + dir * rh.ray.tfar;
+            // The point from its triangle's corners rather than from + dir * t: its rounding
+            // is then that of the scene's coordinates, not of the camera's distance, so the
+            // shadow rays' margin (ShadowRays::lead) can stay small however far the camera.
+            const float u = rh.hit.u, v = rh.hit.v;
+            const glm::vec3 point = (1.0f - u - v) * p[t[0]] + u * p[t[1]] + v * p[t[2]];
             const std::size_t pixel = std::size_t(y) * std::size_t(options.width) + std::size_t(x);
             ref.object[pixel] = o;
             ref.pixelWorld[pixel] =
@@ -246,9 +258,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             if (!obj.receivesShadows) return;
             ref.surfacePoint[pixel] = point;
             ref.surfaceNormal[pixel] = n;
-            const glm::vec3 origin = rays->rayOrigin(point, n);
-            const float turn = pixelTurn(x, y);
-            lightTracer.trace(pixel, mat, point, origin, n, turn);
+            lightTracer.trace(pixel, mat, point, n, pixelTurn(x, y));
             return;
         }
     };

@@ -127,8 +127,13 @@ void ShadowRays::check(const char* what) const {
     checkDevice(mDevice, what);
 }
 
-glm::vec3 ShadowRays::rayOrigin(const glm::vec3& point, const glm::vec3& n) const {
-    return point + n * (2e-5f * mScale + 1e-6f * glm::length(point));
+float ShadowRays::lead(const glm::vec3& point, const glm::vec3& n, const glm::vec3& dir) const {
+    // 2e-6 of the scene: ten float steps of a point as far out as the scene reaches (the
+    // point is taken from its triangle's corners, Reference.cpp), and the same again for
+    // its distance from the origin. Measured against the exact caster, a start 2e-5 of the
+    // scene off (along the ray) still stepped past 0.15 % of the ToyCar's occluders.
+    const float margin = 2e-6f * mScale + 1e-6f * glm::length(point);
+    return margin / std::max(glm::dot(n, dir), kEdgeOnCosine);
 }
 
 glm::vec3 ShadowRays::directionOf(const Light& light) {
@@ -136,8 +141,8 @@ glm::vec3 ShadowRays::directionOf(const Light& light) {
                                                : glm::vec3(0, -1, 0);
 }
 
-bool ShadowRays::towardsLight(std::size_t l, const glm::vec3& point, const glm::vec3& origin,
-                              glm::vec3& toLight, float& distance) const {
+bool ShadowRays::towardsLight(std::size_t l, const glm::vec3& point, glm::vec3& toLight,
+                              float& distance) const {
     if (!mOn[l]) return false;
     const Light& light = mLights[l];
     const glm::vec3 ld = directionOf(light);
@@ -154,7 +159,7 @@ bool ShadowRays::towardsLight(std::size_t l, const glm::vec3& point, const glm::
         case LightType::Point:
             break;
     }
-    const glm::vec3 d = light.position - origin;
+    const glm::vec3 d = light.position - point;
     distance = glm::length(d);
     if (!(distance > 0.0f)) return false;
     if (light.range > 0.0f && distance >= light.range) return false;  // unlit
@@ -163,24 +168,24 @@ bool ShadowRays::towardsLight(std::size_t l, const glm::vec3& point, const glm::
            glm::dot(-toLight, ld) > std::cos(glm::radians(light.outerConeDegrees));
 }
 
-float ShadowRays::transmitted(const glm::vec3& origin, const glm::vec3& dir, float far,
+float ShadowRays::transmitted(const glm::vec3& point, const glm::vec3& dir, float near, float far,
                               glm::vec3* tint) const {
     AlphaContext context;
     rtcInitIntersectContext(&context.base);
     context.blend = mBlend;
-    RTCRay ray = rayAlong(origin, dir, 0.0f, far);
+    if (!(near < far)) return 1.0f;  // the light lies within the surface's margin
+    RTCRay ray = rayAlong(point, dir, near, far);
     rtcOccluded1(mCasters, &context.base, &ray);
     if (tint) *tint = context.tint;
     return ray.tfar < 0.0f ? 0.0f : context.transmission;  // Embree sets tfar to -inf on a hit
 }
 
 int ShadowRays::side(std::size_t l, const glm::vec3& point, const glm::vec3& n) const {
-    const glm::vec3 origin = rayOrigin(point, n);
     glm::vec3 toLight;
     float distance = 0.0f;
-    if (!towardsLight(l, point, origin, toLight, distance)) return -1;
+    if (!towardsLight(l, point, toLight, distance)) return -1;
     if (!(glm::dot(n, toLight) > kEdgeOnCosine)) return 0;
-    return transmitted(origin, toLight, distance) < 0.5f ? 0 : 1;
+    return transmitted(point, toLight, lead(point, n, toLight), distance) < 0.5f ? 0 : 1;
 }
 
 bool ShadowRays::otherSideWithin(std::size_t l, const glm::vec3& point, const glm::vec3& n,

@@ -17,8 +17,10 @@
 namespace gnomon {
 namespace {
 
-// Share of pairs (and of pixels) the two casters may answer differently.
-constexpr double kBound = 2e-3;
+// Share of pairs (and of pixels) the two casters may answer differently. Measured: 0 to
+// 0.02 %; up to 0.2 % before the reference's shadow rays kept to the line through their
+// surface point (docs/crosscheck.md).
+constexpr double kBound = 5e-4;
 
 crosscheck::Agreement check(const Scene& scene, int size = 96) {
     RenderOptions options = presetOptions(scene, Preset::Default);
