@@ -201,7 +201,7 @@ void addTolerances(std::vector<OptionSpec>& s) {
          NUMBER(shadow.normalOffset, float)});
     add({.name = "cull",
          .group = "Tolerances",
-         .doc = "faces culled in the depth pass (only closed meshes of single-sided materials)",
+         .doc = "faces culled in the depth pass (only on solids: closed surfaces wound outwards)",
          .kind = K::Choice,
          .choices = namesOf<CullMode>(),
          ENUM(shadow.cull, CullMode)});

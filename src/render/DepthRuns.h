@@ -10,46 +10,61 @@
 
 namespace gnomon::render {
 
+// How an item's faces are culled: none, all its back faces, or only those of its solids
+// (DrawItem::closedIndexCount), the rest drawn from both sides.
+enum class Cull { None, All, Solids };
+
 // Draws `indices` (ascending indices into scene.items()), each `instances` times, as their
-// stand-in casters when `standIns`.
-// `alphaTested(item)` and `culled(item)` say what an item needs; `useProgram(alphaTested)`
-// binds the plain or alpha-tested program (and sets its uniforms) whenever that changes,
-// starting with the plain one. Face culling is off afterwards.
-template <typename AlphaTested, typename Culled, typename UseProgram>
+// stand-in casters when `standIns`. `alphaTested(item)` and `cull(item)` say what an item
+// needs; `useProgram(alphaTested)` binds the plain or alpha-tested program (and sets its
+// uniforms) whenever that changes, starting with the plain one. Drawn in two sweeps, the
+// culled triangles and then the others; the depth kept is the nearest either way. Face
+// culling is off afterwards.
+template <typename AlphaTested, typename CullOf, typename UseProgram>
 void drawDepthRuns(const GpuScene& scene, const std::vector<std::uint32_t>& indices,
                    GLsizei instances, bool standIns, const AlphaTested& alphaTested,
-                   const Culled& culled, const UseProgram& useProgram) {
-    bool culling = false, alpha = false;
+                   const CullOf& cull, const UseProgram& useProgram) {
+    bool alpha = false;
     GLuint texture = ~0u;
-    glDisable(GL_CULL_FACE);
     useProgram(false);
-    std::uint32_t runStart = 0, runLength = 0;
-    for (std::uint32_t index : indices) {
-        const DrawItem& item = scene.items()[index];
-        const bool wantAlpha = alphaTested(item);
-        const bool wantCull = culled(item);
-        const bool differs = wantAlpha != alpha || (alpha && scene.textureOf(item) != texture) ||
-                             wantCull != culling;
-        if (differs || index != runStart + runLength) {
-            scene.drawRange(runStart, runLength, instances, standIns);
-            runStart = index;
-            runLength = 0;
+    for (bool culled : {true, false}) {
+        culled ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+        std::uint32_t runStart = 0, runLength = 0;
+        Part runPart = Part::All;
+        for (std::uint32_t index : indices) {
+            const DrawItem& item = scene.items()[index];
+            const Cull how = cull(item);
+            const GLsizei closed = standIns ? item.standInClosedIndexCount : item.closedIndexCount;
+            const GLsizei all = standIns ? item.standInIndexCount : item.indexCount;
+            // What of the item this sweep draws, if anything.
+            Part part = Part::All;
+            if (how == Cull::Solids) {
+                part = culled ? Part::Closed : Part::Open;
+                if ((culled ? closed : all - closed) == 0) continue;
+            } else if ((how == Cull::All) != culled) {
+                continue;
+            }
+            const bool wantAlpha = alphaTested(item);
+            const bool differs = wantAlpha != alpha || part != runPart ||
+                                 (alpha && scene.textureOf(item) != texture);
+            if (differs || index != runStart + runLength) {
+                scene.drawRange(runStart, runLength, instances, standIns, runPart);
+                runStart = index;
+                runLength = 0;
+                runPart = part;
+            }
+            if (wantAlpha != alpha) {
+                alpha = wantAlpha;
+                useProgram(alpha);
+            }
+            if (alpha && scene.textureOf(item) != texture) {
+                texture = scene.textureOf(item);
+                glBindTextureUnit(4, texture);
+            }
+            ++runLength;
         }
-        if (wantAlpha != alpha) {
-            alpha = wantAlpha;
-            useProgram(alpha);
-        }
-        if (alpha && scene.textureOf(item) != texture) {
-            texture = scene.textureOf(item);
-            glBindTextureUnit(4, texture);
-        }
-        if (wantCull != culling) {
-            wantCull ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
-            culling = wantCull;
-        }
-        ++runLength;
+        scene.drawRange(runStart, runLength, instances, standIns, runPart);
     }
-    scene.drawRange(runStart, runLength, instances, standIns);
     glDisable(GL_CULL_FACE);
 }
 

@@ -62,6 +62,13 @@ GLint glWrap(TextureWrap w) {
 }  // namespace
 
 void GpuScene::uploadGeometry(const Scene& scene) {
+    // Each mesh's triangles, those on solids first (culled in shadow passes), worked out once
+    // per geometry: a new stand-in detail uploads again but keeps them.
+    if (mSplits.size() != scene.meshes.size()) {
+        mSplits.clear();
+        for (const Mesh& m : scene.meshes)
+            mSplits.push_back(splitForCulling(m));
+    }
     std::vector<GpuVertex> vertices;
     std::vector<std::uint32_t> indices;
     mMeshRanges.clear();
@@ -81,7 +88,8 @@ void GpuScene::uploadGeometry(const Scene& scene) {
                 vertices.push_back(
                     {p, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(1.0f), glm::vec2(0.0f)});
         }
-        indices.insert(indices.end(), m.indices.begin(), m.indices.end());
+        const std::vector<std::uint32_t>& own = mSplits[full.size() - 1].indices;
+        indices.insert(indices.end(), own.begin(), own.end());
     }
     // Every stand-in made so far after all full meshes, sharing their vertices (same base
     // vertex); meshes too small to simplify keep drawing their own range.
@@ -112,9 +120,6 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         glVertexArrayAttribBinding(mVao.id(), a, 0);
     }
     mMeshBounds = meshBounds(scene);
-    mMeshClosed.resize(scene.meshes.size());
-    for (size_t m = 0; m < scene.meshes.size(); ++m)
-        mMeshClosed[m] = char(closedWinding(scene.meshes[m]));
     mObjectData.clear();        // forces the object upload below
     mObjectIds = gl::Buffer();  // and the object indices' binding to the new vertex array
     mHaveGeometry = true;
@@ -165,6 +170,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         if (!mHaveGeometry || hash != mGeometryHash) {
             mStandIns.clear();  // made for other meshes
             mStandInRanges.clear();
+            mSplits.clear();
             mGeometryHash = hash;
         }
         const std::uint64_t textureHash = hashTextures(scene);
@@ -228,19 +234,29 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         mBounds.extend(box);
         if (o.castsShadows) mCasterBounds.extend(box);
         const Mesh& mesh = scene.meshes[o.mesh];
+        const CullingSplit& split = mSplits[o.mesh];
         const std::string_view record(reinterpret_cast<const char*>(&mObjectData[i]),
                                       sizeof(GpaObject));
         mItems[i] = {
             std::uint32_t(i), GLsizei(mesh.indices.size()), mMeshRanges[o.mesh].first,
             mMeshRanges[o.mesh].second, mat.doubleSided,
-            // Closed and wound outwards in the world, as culling in a shadow pass needs.
-            mMeshClosed[o.mesh] * glm::determinant(glm::mat3(g.worldFromModel)) > 0.0f,
+            // On solids wound outwards in the world, as culling in a shadow pass needs.
+            split.winding * glm::determinant(glm::mat3(g.worldFromModel)) > 0.0f
+                ? GLsizei(split.closedIndices)
+                : 0,
             o.castsShadows, o.receivesShadows, box, std::hash<std::string_view>{}(record),
             mat.alphaMode,
             mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
             mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};
-        mItems[i].standInFirstIndexByte = standIns[o.mesh].first;
-        mItems[i].standInIndexCount = standIns[o.mesh].second;
+        DrawItem& item = mItems[i];
+        item.standInFirstIndexByte = standIns[o.mesh].first;
+        item.standInIndexCount = standIns[o.mesh].second;
+        // A simplified stand-in is not split: culled only when its whole mesh is a solid.
+        const bool ownRange = item.standInFirstIndexByte == item.firstIndexByte;
+        item.standInClosedIndexCount = ownRange ? item.closedIndexCount
+                                       : item.closedIndexCount == item.indexCount
+                                           ? item.standInIndexCount
+                                           : 0;
     }
     // Opaque first, then masked, then blended; by texture within each (binds once each).
     std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {
@@ -301,20 +317,25 @@ bool GpuScene::uploadDrawCommands() {
     }
     // Draw commands in item order, for 1 to 6 instances (a cube draws the faces the view
     // looks up), then the same for the stand-in casters; uploaded when they differ.
-    mCommandScratch.resize(2 * kMaxInstances * n);
+    mCommandScratch.resize(kCommandSets * kMaxInstances * n);
     for (std::size_t i = 0; i < n; ++i) {
         const DrawItem& item = mItems[i];
-        const DrawCommand c{GLuint(item.indexCount), 1,
-                            GLuint(item.firstIndexByte / sizeof(std::uint32_t)), item.baseVertex,
-                            item.object};
-        const DrawCommand s{GLuint(item.standInIndexCount), 1,
-                            GLuint(item.standInFirstIndexByte / sizeof(std::uint32_t)),
-                            item.baseVertex, item.object};
-        for (std::size_t k = 0; k < kMaxInstances; ++k) {
-            mCommandScratch[k * n + i] = c;
-            mCommandScratch[k * n + i].instanceCount = GLuint(k + 1);
-            mCommandScratch[(kMaxInstances + k) * n + i] = s;
-            mCommandScratch[(kMaxInstances + k) * n + i].instanceCount = GLuint(k + 1);
+        for (bool standIn : {false, true}) {
+            const GLuint first = GLuint(
+                (standIn ? item.standInFirstIndexByte : item.firstIndexByte) / sizeof(GLuint));
+            const GLuint count = GLuint(standIn ? item.standInIndexCount : item.indexCount);
+            const GLuint closed =
+                GLuint(standIn ? item.standInClosedIndexCount : item.closedIndexCount);
+            for (Part part : {Part::All, Part::Closed, Part::Open}) {
+                DrawCommand c{count, 1, first, item.baseVertex, item.object};
+                if (part == Part::Closed) c.count = closed;
+                if (part == Part::Open)
+                    c = {count - closed, 1, first + closed, item.baseVertex, item.object};
+                for (GLsizei k = 1; k <= GLsizei(kMaxInstances); ++k) {
+                    c.instanceCount = GLuint(k);
+                    mCommandScratch[commandIndex(i, k, standIn, part)] = c;
+                }
+            }
         }
     }
     if (!mCommands || mCommandScratch.size() != mCommandData.size() ||
@@ -322,7 +343,8 @@ bool GpuScene::uploadDrawCommands() {
                     mCommandData.size() * sizeof(DrawCommand)) != 0) {
         mCommandData.swap(mCommandScratch);
         mCommands = gl::Buffer(
-            "draw commands", std::max<std::size_t>(n, 1) * 2 * kMaxInstances * sizeof(DrawCommand),
+            "draw commands",
+            std::max<std::size_t>(n, 1) * kCommandSets * kMaxInstances * sizeof(DrawCommand),
             n ? mCommandData.data() : nullptr, 0);
         return true;
     }
@@ -346,21 +368,22 @@ void GpuScene::setInstanceDivisor(GLsizei instances) const {
     mDivisor = instances;
 }
 
-void GpuScene::draw(const DrawItem& item, GLsizei instances) const {
-    if (item.indexCount == 0) return;
-    setInstanceDivisor(instances);
-    glDrawElementsInstancedBaseVertexBaseInstance(
-        GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>(item.firstIndexByte), instances, item.baseVertex,
-        item.object);
-}
-
-void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances,
-                         bool standIns) const {
+void GpuScene::draw(const DrawItem& item, GLsizei instances, Part part) const {
+    const GLsizei skipped = part == Part::Open ? item.closedIndexCount : 0;
+    const GLsizei count = part == Part::Closed ? item.closedIndexCount : item.indexCount - skipped;
     if (count == 0) return;
     setInstanceDivisor(instances);
-    const std::size_t command =
-        ((standIns ? kMaxInstances : 0) + std::size_t(instances - 1)) * mItems.size() + first;
+    glDrawElementsInstancedBaseVertexBaseInstance(
+        GL_TRIANGLES, count, GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(item.firstIndexByte + std::size_t(skipped) * sizeof(GLuint)),
+        instances, item.baseVertex, item.object);
+}
+
+void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances, bool standIns,
+                         Part part) const {
+    if (count == 0) return;
+    setInstanceDivisor(instances);
+    const std::size_t command = commandIndex(first, instances, standIns, part);
     glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(command * sizeof(DrawCommand)),
                                 GLsizei(count), 0);

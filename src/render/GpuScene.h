@@ -17,6 +17,7 @@
 #include "core/Aabb.h"
 #include "gl/Objects.h"
 #include "gnomon/Scene.h"
+#include "scene/MeshTopology.h"
 #include "shadow/StandIn.h"
 
 namespace gnomon::render {
@@ -45,8 +46,10 @@ struct DrawItem {
     std::size_t firstIndexByte = 0;
     GLint baseVertex = 0;
     bool doubleSided = false;
-    bool closed = false;  // a solid wound outwards in the world (closedWinding): culling keeps
-                          // its shadow
+    // The first closedIndexCount indices lie on solids wound outwards in the world
+    // (splitForCulling): a shadow pass that culls their back faces keeps their shadow. The
+    // same for the stand-in caster's indices (a simplified mesh: all of them or none).
+    GLsizei closedIndexCount = 0;
     bool casts = true;
     bool receives = true;
     Aabb bounds;                 // world space, at the synced time
@@ -57,7 +60,12 @@ struct DrawItem {
     // The stand-in caster shadow passes draw (--caster-detail; the full mesh at 1).
     GLsizei standInIndexCount = 0;
     std::size_t standInFirstIndexByte = 0;
+    GLsizei standInClosedIndexCount = 0;
 };
+
+// Which of an item's triangles a draw takes: all, those on solids (DrawItem's
+// closedIndexCount), or the rest.
+enum class Part { All, Closed, Open };
 
 // Does `item` draw into shadow maps' depth with these options? Blended casters may not; with
 // --blend-shadows coloured only their fully opaque texels do (the rest tints the light
@@ -91,12 +99,13 @@ public:
     void bind() const;
     static constexpr GLuint kObjectTextureUnit = 15;
     // Issues one draw (`instances` copies: 1, or one per cube face a point light draws).
-    void draw(const DrawItem& item, GLsizei instances = 1) const;
-    // Draws items [first, first + count) in one call (each 1 to kMaxInstances times), their
-    // stand-in casters when `standIns` (shadow passes).
+    void draw(const DrawItem& item, GLsizei instances = 1, Part part = Part::All) const;
+    // Draws `part` of items [first, first + count) in one call (each 1 to kMaxInstances
+    // times), of their stand-in casters when `standIns` (shadow passes).
     static constexpr std::size_t kMaxInstances = 6;
+    static constexpr std::size_t kCommandSets = 6;  // {full, stand-in} x {all, closed, open}
     void drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances = 1,
-                   bool standIns = false) const;
+                   bool standIns = false, Part part = Part::All) const;
     const std::vector<DrawItem>& items() const { return mItems; }
     // The item's base colour texture, or a 1x1 white one (alpha 1) when it has none.
     GLuint textureOf(const DrawItem& item) const {
@@ -131,6 +140,11 @@ private:
     bool makeStandIns(const Scene& scene, float casterDetail);
     void uploadTextures(const Scene& scene);
     bool uploadDrawCommands();
+    // Where the command drawing `part` of item `item`, `instances` times, lies in mCommands.
+    std::size_t commandIndex(std::size_t item, GLsizei instances, bool standIns, Part part) const {
+        const std::size_t set = (standIns ? 3 : 0) + std::size_t(part);
+        return (set * kMaxInstances + std::size_t(instances - 1)) * mItems.size() + item;
+    }
     static void checkObjectTexels(std::size_t objects);
 
     std::uint64_t mGeometryHash = 0, mTextureHash = 0;
@@ -149,7 +163,8 @@ private:
     gl::Buffer mVertices, mIndices, mObjects;
     gl::Texture mObjectTexels;  // mObjects as RGBA32F texels, 13 per record
     gl::Buffer mObjectIds;      // 0..n-1: attribute 4, one per instance
-    // One command per item, four times: drawing 1 instance, 6, then their stand-ins' 1 and 6.
+    // One command per item and part (all, closed, open), for 1 to 6 instances, then the same
+    // for the stand-ins: commandIndex.
     gl::Buffer mCommands;
     std::vector<DrawCommand> mCommandData, mCommandScratch;
     mutable GLsizei mDivisor = 1;
@@ -169,7 +184,9 @@ private:
     float mCasterDetail = 1.0f;  // the detail drawn
     std::uint64_t mGeometryUploads = 0;
     std::vector<Aabb> mMeshBounds;
-    std::vector<signed char> mMeshClosed;  // closedWinding per mesh, at upload
+    // Per mesh, for the current geometry: its indices in the order uploaded, the closed
+    // ones first (splitForCulling).
+    std::vector<CullingSplit> mSplits;
     Aabb mBounds, mCasterBounds;
     bool mHasUnlit = false, mHasBlended = false, mHasBlendedCasters = false;
     std::uint64_t mRevision = 0;

@@ -12,6 +12,16 @@
 namespace gnomon::render {
 
 namespace {
+// Does `box` lie wholly beyond the near plane? Then every line of sight starts outside it,
+// and a solid in it shows the view none of its back faces.
+bool beyondNearPlane(const Aabb& box, const glm::mat4& clipFromWorld) {
+    for (const glm::vec3& c : box.corners()) {
+        const glm::vec4 p = clipFromWorld * glm::vec4(c, 1.0f);
+        if (p.z + p.w <= 0.0f) return false;  // z >= -w: on the near plane's far side
+    }
+    return true;
+}
+
 // 0: no dithering (asked for, or the floor, which keeps only what shadows need); 1: in the
 // stored values; 2: in their sRGB encoding.
 int ditherMode(const RenderOptions& options, bool floor) {
@@ -362,9 +372,14 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     scene.drawRange(runStart, runLength);
     if (!mBackFaces.empty()) {
         glCullFace(GL_FRONT);
+        // A solid's back faces are hidden behind its front ones wherever the view starts
+        // outside it: only the rest of the item shows its back (a horse with a few faces
+        // wound the wrong way shows those few).
+        const glm::mat4 clipFromWorld = in.clipFromView * in.viewFromWorld;
         for (std::uint32_t i : mBackFaces) {
             setState(items[i]);
-            scene.draw(items[i]);
+            const bool outside = beyondNearPlane(items[i].bounds, clipFromWorld);
+            scene.draw(items[i], 1, outside ? Part::Open : Part::All);
         }
         glCullFace(GL_BACK);
     }

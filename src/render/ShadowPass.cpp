@@ -194,7 +194,8 @@ std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLi
             continue;
         }
         if (depth) mVisible.push_back(i);
-        mHoldsLight[item.object] = char(item.closed && volume.holdsLight(item.bounds));
+        mHoldsLight[item.object] =
+            char(item.closedIndexCount > 0 && volume.holdsLight(item.bounds));
         hash = (hash ^ item.dataHash) * 0x100000001b3ull + i;
     }
     return hash;
@@ -208,10 +209,13 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
         scene, mVisible, instances, /*standIns=*/true,
         [&](const DrawItem& item) { return alphaTestedCaster(item, options); },
         // Only solids may lose faces: an open surface culled from the light's side would
-        // cast no shadow at all (and one from the other side would not either).
+        // cast no shadow at all (and one from the other side would not either). A solid's
+        // material may be double-sided: seen from outside, it casts the same shadow.
         [&](const DrawItem& item) {
-            return options.cull != CullMode::None && !item.doubleSided && item.closed &&
-                   !mHoldsLight[item.object];
+            return options.cull != CullMode::None && item.closedIndexCount > 0 &&
+                           !mHoldsLight[item.object]
+                       ? Cull::Solids
+                       : Cull::None;
         },
         [&](bool alpha) {
             glUseProgram(

@@ -102,7 +102,7 @@ void TransmittancePass::drawLight(const GpuScene& scene, const ShadowedLight& li
             cube ? light.frame.faceClipFromWorld(face) : light.frame.clipFromWorld();
         drawDepthRuns(
             scene, mVisible, 1, /*standIns=*/false, [](const DrawItem&) { return true; },
-            [](const DrawItem&) { return false; },
+            [](const DrawItem&) { return Cull::None; },
             [&](bool) {
                 glUseProgram(program().id());
                 glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0]);

@@ -41,7 +41,7 @@ void ViewDepthPass::draw(const GpuScene& scene) {
     drawDepthRuns(
         scene, mItems, 1, /*standIns=*/false,
         [](const DrawItem& item) { return item.alphaMode == AlphaMode::Mask; },
-        [](const DrawItem& item) { return !item.doubleSided; },
+        [](const DrawItem& item) { return item.doubleSided ? Cull::None : Cull::All; },
         [&](bool alpha) {
             glUseProgram(program(alpha).id());
             glUniformMatrix4fv(1, 1, GL_FALSE, &mViewFromWorld[0][0]);

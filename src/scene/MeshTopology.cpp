@@ -1,9 +1,9 @@
 #include "scene/MeshTopology.h"
 
-#include <cstdint>
+#include <array>
 #include <cstring>
+#include <numeric>
 #include <unordered_map>
-#include <vector>
 
 namespace gnomon {
 
@@ -19,44 +19,152 @@ struct PositionHash {
     }
 };
 
-}  // namespace
+class Sets {
+public:
+    explicit Sets(std::size_t n) : mParent(n) { std::iota(mParent.begin(), mParent.end(), 0u); }
+    std::uint32_t find(std::uint32_t x) {
+        while (mParent[x] != x)
+            x = mParent[x] = mParent[mParent[x]];
+        return x;
+    }
+    void join(std::uint32_t a, std::uint32_t b) { mParent[find(a)] = find(b); }
 
-int closedWinding(const Mesh& mesh) {
-    if (mesh.indices.size() < 12) return 0;  // fewer than four triangles bound nothing
-    // One id per distinct position.
-    std::unordered_map<glm::vec3, std::uint32_t, PositionHash> ids;
-    ids.reserve(mesh.positions.size());
-    std::vector<std::uint32_t> weld(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-        weld[i] = ids.emplace(mesh.positions[i], std::uint32_t(ids.size())).first->second;
-    // Directed edges a -> b, counted: a closed, consistently wound surface has each once,
-    // and its reverse once.
-    std::unordered_map<std::uint64_t, int> edges;
-    edges.reserve(mesh.indices.size());
-    auto key = [](std::uint32_t a, std::uint32_t b) { return std::uint64_t(a) << 32 | b; };
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t v[3] = {weld[mesh.indices[t]], weld[mesh.indices[t + 1]],
-                                    weld[mesh.indices[t + 2]]};
-        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
-        for (int e = 0; e < 3; ++e) {
-            if (++edges[key(v[e], v[(e + 1) % 3])] > 1) return 0;
+private:
+    std::vector<std::uint32_t> mParent;
+};
+
+std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
+    return std::uint64_t(a) << 32 | b;
+}
+std::uint64_t reversed(std::uint64_t key) {
+    return key << 32 | key >> 32;
+}
+
+// The mesh's triangles as corners welded by position (glTF and OBJ split vertices at texture
+// and normal seams), and each directed edge's count and last triangle. Triangles that run
+// along an edge the same way are joined in `pieces`.
+struct Edges {
+    std::vector<std::array<std::uint32_t, 3>> corners;
+    std::vector<char> degenerate;  // two corners at one position: no edges, draws nothing
+    struct Use {
+        std::uint32_t count = 0, triangle = 0;
+    };
+    std::unordered_map<std::uint64_t, Use> directed;
+
+    Edges(const Mesh& mesh, Sets& pieces) {
+        std::unordered_map<glm::vec3, std::uint32_t, PositionHash> ids;
+        ids.reserve(mesh.positions.size());
+        std::vector<std::uint32_t> weld(mesh.positions.size());
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+            weld[i] = ids.emplace(mesh.positions[i], std::uint32_t(ids.size())).first->second;
+        const std::size_t triangles = mesh.indices.size() / 3;
+        corners.resize(triangles);
+        degenerate.resize(triangles);
+        directed.reserve(mesh.indices.size());
+        for (std::uint32_t t = 0; t < triangles; ++t) {
+            std::array<std::uint32_t, 3>& v = corners[t];
+            for (int k = 0; k < 3; ++k)
+                v[std::size_t(k)] = weld[mesh.indices[3 * t + std::size_t(k)]];
+            degenerate[t] = v[0] == v[1] || v[1] == v[2] || v[2] == v[0];
+            if (degenerate[t]) continue;
+            for (std::size_t k = 0; k < 3; ++k) {
+                Use& use = directed[edgeKey(v[k], v[(k + 1) % 3])];
+                if (use.count++ > 0) pieces.join(t, use.triangle);
+                use.triangle = t;
+            }
         }
     }
-    for (const auto& edge : edges) {
-        if (edges.find(edge.first << 32 | edge.first >> 32) == edges.end()) return 0;
+    std::uint32_t count(std::uint64_t key) const {
+        const auto it = directed.find(key);
+        return it == directed.end() ? 0 : it->second.count;
     }
-    if (edges.empty()) return 0;
-    // Which way it is wound: the volume the triangles enclose is positive when they run
-    // counter-clockwise seen from outside (glTF's front faces).
-    const glm::dvec3 centre(mesh.positions.front());
-    double volume = 0.0;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const glm::dvec3 a = glm::dvec3(mesh.positions[mesh.indices[t]]) - centre;
-        const glm::dvec3 b = glm::dvec3(mesh.positions[mesh.indices[t + 1]]) - centre;
-        const glm::dvec3 c = glm::dvec3(mesh.positions[mesh.indices[t + 2]]) - centre;
-        volume += glm::dot(a, glm::cross(b, c));
+    // Run once each way: the triangles on its two sides agree on which side is out.
+    bool good(std::uint64_t key) const { return count(key) == 1 && count(reversed(key)) == 1; }
+};
+
+// Completes `pieces` (triangles sharing an edge either way, joined) and marks the pieces
+// with an edge only one triangle uses (an open border), by their root.
+void markOpenPieces(const Edges& e, Sets& pieces, std::vector<char>& openRoot) {
+    for (const auto& [key, use] : e.directed) {
+        const auto other = e.directed.find(reversed(key));
+        if (other != e.directed.end()) pieces.join(use.triangle, other->second.triangle);
     }
-    return volume > 0.0 ? 1 : volume < 0.0 ? -1 : 0;
+    openRoot.assign(e.corners.size(), 0);
+    for (const auto& [key, use] : e.directed) {
+        if (use.count + e.count(reversed(key)) == 1) openRoot[pieces.find(use.triangle)] = 1;
+    }
+}
+
+}  // namespace
+
+CullingSplit splitForCulling(const Mesh& mesh) {
+    CullingSplit split;
+    split.indices = mesh.indices;
+    const std::size_t triangles = mesh.indices.size() / 3;
+    if (triangles < 4) return split;  // fewer than four triangles bound nothing
+    Sets pieces(triangles), patches(triangles);
+    const Edges e(mesh, pieces);
+    std::vector<char> openPiece;
+    markOpenPieces(e, pieces, openPiece);
+    // Sound triangles (every edge good) joined across their edges into patches.
+    std::vector<char> sound(triangles, 0);
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        const auto& v = e.corners[t];
+        sound[t] = !e.degenerate[t] && e.good(edgeKey(v[0], v[1])) && e.good(edgeKey(v[1], v[2])) &&
+                   e.good(edgeKey(v[2], v[0]));
+    }
+    for (const auto& [key, use] : e.directed) {
+        if (use.count != 1 || !sound[use.triangle]) continue;
+        const auto other = e.directed.find(reversed(key));
+        if (other != e.directed.end() && sound[other->second.triangle])
+            patches.join(use.triangle, other->second.triangle);
+    }
+    // Each patch's vector area, total area and volume (about the mesh's first corner: a
+    // closed patch's volume does not depend on where, a nearly closed one's hardly).
+    std::vector<glm::dvec3> vectorArea(triangles, glm::dvec3(0.0));
+    std::vector<double> area(triangles, 0.0), volume(triangles, 0.0);
+    const glm::dvec3 origin(mesh.positions[mesh.indices[0]]);
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        if (!sound[t]) continue;
+        const std::uint32_t p = patches.find(t);
+        const glm::dvec3 a = glm::dvec3(mesh.positions[mesh.indices[3 * t]]) - origin;
+        const glm::dvec3 b = glm::dvec3(mesh.positions[mesh.indices[3 * t + 1]]) - origin;
+        const glm::dvec3 c = glm::dvec3(mesh.positions[mesh.indices[3 * t + 2]]) - origin;
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        vectorArea[p] += n;
+        area[p] += glm::length(n);
+        volume[p] += glm::dot(a, glm::cross(b, c));
+    }
+    constexpr double kMostlyClosed = 0.01;  // |sum of vector areas| / area of a solid
+    std::vector<int> side(triangles, 0);    // per triangle: its patch's winding, 0 none
+    std::size_t outwards = 0, inwards = 0;
+    for (std::uint32_t t = 0; t < triangles; ++t) {
+        if (!sound[t] || openPiece[pieces.find(t)]) continue;
+        const std::uint32_t p = patches.find(t);
+        if (glm::length(vectorArea[p]) > kMostlyClosed * area[p] || volume[p] == 0.0) continue;
+        side[t] = volume[p] > 0.0 ? 1 : -1;
+        ++(side[t] > 0 ? outwards : inwards);
+    }
+    if (outwards + inwards == 0) return split;
+    // One winding is culled for the whole mesh: the one more triangles have.
+    split.winding = outwards >= inwards ? 1 : -1;
+    // Degenerate triangles draw nothing: with the solids, so a closed mesh is one group.
+    auto first = [&](std::size_t t) { return side[t] == split.winding || e.degenerate[t]; };
+    std::size_t at = 0;
+    for (int group = 0; group < 2; ++group) {
+        for (std::size_t t = 0; t < triangles; ++t) {
+            if (first(t) != (group == 0)) continue;
+            for (std::size_t k = 0; k < 3; ++k)
+                split.indices[at++] = mesh.indices[3 * t + k];
+        }
+        if (group == 0) split.closedIndices = at;
+    }
+    return split;
+}
+
+int closedWinding(const Mesh& mesh) {
+    const CullingSplit split = splitForCulling(mesh);
+    return split.closedIndices == mesh.indices.size() ? split.winding : 0;
 }
 
 }  // namespace gnomon

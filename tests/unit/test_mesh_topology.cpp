@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <set>
 #include <utility>
 
+#include "GridSolid.h"
 #include "scene/MeshBuilder.h"
 #include "scene/MeshTopology.h"
 
@@ -57,6 +60,80 @@ TEST(MeshTopology, TwoBoxesAndADegenerateTriangleAreClosed) {
 
 TEST(MeshTopology, AnEmptyMeshIsNotClosed) {
     EXPECT_EQ(0, closedWinding(Mesh{}));
+}
+
+// A solid of 6 x 24 x 24 squares (6912 triangles).
+Mesh solid() {
+    return test::gridSolid(24);
+}
+// A mesh's indices as a set of triangles, to compare.
+std::multiset<std::array<std::uint32_t, 3>> triangles(const std::vector<std::uint32_t>& indices,
+                                                      std::size_t from, std::size_t to) {
+    std::multiset<std::array<std::uint32_t, 3>> set;
+    for (std::size_t i = from; i + 2 < to; i += 3)
+        set.insert({indices[i], indices[i + 1], indices[i + 2]});
+    return set;
+}
+
+TEST(MeshTopology, ASolidIsOneGroup) {
+    const Mesh m = solid();
+    const CullingSplit split = splitForCulling(m);
+    EXPECT_EQ(1, split.winding);
+    EXPECT_EQ(m.indices.size(), split.closedIndices);
+    EXPECT_EQ(m.indices, split.indices);
+}
+
+// A few faces wound the wrong way (as in glmark2's 3DS horse): they, and the faces beside
+// them, are drawn from both sides; the rest of the solid is still culled. Every triangle is
+// kept, once.
+TEST(MeshTopology, AFewFacesWoundTheWrongWayLeaveTheRestASolid) {
+    Mesh m = solid();
+    const std::size_t perSide = m.indices.size() / 3 / 6, middle = 2 * (24 * 12 + 12);
+    const std::size_t turned[2] = {2 * perSide + middle, 4 * perSide + middle + 1};
+    for (std::size_t t : turned)
+        test::turnTriangle(m, t);
+    const CullingSplit split = splitForCulling(m);
+    EXPECT_EQ(0, closedWinding(m));
+    EXPECT_EQ(1, split.winding);
+    const std::size_t open = (m.indices.size() - split.closedIndices) / 3;
+    EXPECT_EQ(2u * 4u, open);  // each turned face and its three neighbours
+    EXPECT_EQ(triangles(m.indices, 0, m.indices.size()),
+              triangles(split.indices, 0, split.indices.size()));
+    const auto rest = triangles(split.indices, split.closedIndices, split.indices.size());
+    for (std::size_t t : turned)
+        EXPECT_EQ(1u, rest.count({m.indices[3 * t], m.indices[3 * t + 1], m.indices[3 * t + 2]}));
+}
+
+// A hole leaves an edge with one triangle: nothing on that piece is a solid.
+TEST(MeshTopology, ASolidWithAHoleIsNotCulled) {
+    Mesh m = solid();
+    m.indices.erase(m.indices.begin() + std::ptrdiff_t(m.indices.size() / 2),
+                    m.indices.begin() + std::ptrdiff_t(m.indices.size() / 2 + 3));
+    EXPECT_EQ(0u, splitForCulling(m).closedIndices);
+}
+
+// Many faces turned together (a patch of the surface wound the wrong way): what is left of
+// each patch is far from closed, so nothing is called a solid whose outside is unknown.
+TEST(MeshTopology, AHalfTurnedSolidIsNotCulled) {
+    Mesh m = solid();
+    for (std::size_t t = 0; t < m.indices.size() / 6; ++t)
+        std::swap(m.indices[3 * t + 1], m.indices[3 * t + 2]);
+    EXPECT_EQ(0u, splitForCulling(m).closedIndices);
+}
+
+// A solid beside an open sheet in one mesh: the solid is culled, the sheet is not.
+TEST(MeshTopology, ASolidBesideASheetIsCulledAlone) {
+    Mesh m = solid();
+    const std::size_t solid = m.indices.size();
+    const Mesh q = mesh::quad("sheet", {30, 0, 0}, {31, 0, 0}, {31, 1, 0}, {30, 1, 0});
+    const auto base = std::uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), q.positions.begin(), q.positions.end());
+    m.normals.insert(m.normals.end(), q.normals.begin(), q.normals.end());
+    for (std::uint32_t i : q.indices)
+        m.indices.push_back(base + i);
+    const CullingSplit split = splitForCulling(m);
+    EXPECT_EQ(1, split.winding);
+    EXPECT_EQ(solid, split.closedIndices);
 }
 
 }  // namespace
