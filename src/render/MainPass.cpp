@@ -8,20 +8,11 @@
 #include "render/TransmittancePass.h"
 #include "render/VisibilityTarget.h"
 #include "shadow/DepthPacking.h"
+#include "shadow/FrustumClip.h"
 
 namespace gnomon::render {
 
 namespace {
-// Does `box` lie wholly beyond the near plane? Then every line of sight starts outside it,
-// and a solid in it shows the view none of its back faces.
-bool beyondNearPlane(const Aabb& box, const glm::mat4& clipFromWorld) {
-    for (const glm::vec3& c : box.corners()) {
-        const glm::vec4 p = clipFromWorld * glm::vec4(c, 1.0f);
-        if (p.z + p.w <= 0.0f) return false;  // z >= -w: on the near plane's far side
-    }
-    return true;
-}
-
 // 0: no dithering (asked for, or the floor, which keeps only what shadows need); 1: in the
 // stored values; 2: in their sRGB encoding.
 int ditherMode(const RenderOptions& options, bool floor) {
@@ -378,7 +369,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
         const glm::mat4 clipFromWorld = in.clipFromView * in.viewFromWorld;
         for (std::uint32_t i : mBackFaces) {
             setState(items[i]);
-            const bool outside = beyondNearPlane(items[i].bounds, clipFromWorld);
+            const bool outside = shadow::beyondNearPlane(items[i].bounds, clipFromWorld);
             scene.draw(items[i], 1, outside ? Part::Open : Part::All);
         }
         glCullFace(GL_BACK);

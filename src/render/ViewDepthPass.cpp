@@ -2,6 +2,7 @@
 
 #include "gl/Program.h"
 #include "render/DepthRuns.h"
+#include "shadow/FrustumClip.h"
 #include "shadow/ShadowMath.h"
 
 namespace gnomon::render {
@@ -38,10 +39,15 @@ void ViewDepthPass::draw(const GpuScene& scene) {
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         if (items[i].indexCount > 0 && items[i].alphaMode != AlphaMode::Blend) mItems.push_back(i);
     }
+    const glm::mat4 clipFromWorld = mClipFromView * mViewFromWorld;
     drawDepthRuns(
         scene, mItems, 1, /*standIns=*/false,
         [](const DrawItem& item) { return item.alphaMode == AlphaMode::Mask; },
-        [](const DrawItem& item) { return item.doubleSided ? Cull::None : Cull::All; },
+        // Double-sided solids beyond the near plane show no back faces (MainPass likewise).
+        [&](const DrawItem& item) {
+            if (!item.doubleSided) return Cull::All;
+            return shadow::beyondNearPlane(item.bounds, clipFromWorld) ? Cull::Solids : Cull::None;
+        },
         [&](bool alpha) {
             glUseProgram(program(alpha).id());
             glUniformMatrix4fv(1, 1, GL_FALSE, &mViewFromWorld[0][0]);

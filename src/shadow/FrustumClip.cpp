@@ -108,6 +108,15 @@ bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ign
     return false;
 }
 
+bool beyondNearPlane(const Aabb& box, const glm::mat4& clipFromWorld) {
+    if (box.empty()) return false;
+    for (const glm::vec3& c : box.corners()) {
+        const glm::vec4 p = clipFromWorld * glm::vec4(c, 1.0f);
+        if (p.z + p.w <= 0.0f) return false;
+    }
+    return true;
+}
+
 }  // namespace gnomon::shadow
 
 namespace gnomon {

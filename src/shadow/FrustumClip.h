@@ -44,4 +44,9 @@ Aabb clampInto(const Aabb& a, const Aabb& b);
 // `ignoreNear`: depth-clamped passes keep casters in front of the near plane.
 bool outsideClipVolume(const Aabb& box, const glm::mat4& clipFromWorld, bool ignoreNear);
 
+// True when every corner of `box` lies on the far side of the near plane of `clipFromWorld`
+// (z > -w): every line of sight then starts outside the box, so a solid in it shows the view
+// none of its back faces.
+bool beyondNearPlane(const Aabb& box, const glm::mat4& clipFromWorld);
+
 }  // namespace gnomon::shadow

@@ -33,6 +33,26 @@ TEST(Culling, BoxesOutsideTheClipVolumeAreCulled) {
     EXPECT_TRUE(shadow::outsideClipVolume(Aabb{}, clipFromWorld, false));
 }
 
+// A box wholly past the near plane (whatever the sides) has no line of sight starting inside
+// it; one the near plane cuts, or one behind the eye, may.
+TEST(Culling, BoxesBeyondTheNearPlane) {
+    const glm::mat4 clipFromWorld =
+        glm::perspective(glm::radians(60.0f), 1.0f, 0.5f, 10.0f) *
+        glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0.0f), glm::vec3(0, 1, 0));  // near at z 4.5
+    auto box = [](glm::vec3 c, float h) {
+        Aabb b;
+        b.extend(c - glm::vec3(h));
+        b.extend(c + glm::vec3(h));
+        return b;
+    };
+    EXPECT_TRUE(shadow::beyondNearPlane(box({0, 0, 0}, 0.5f), clipFromWorld));
+    EXPECT_TRUE(shadow::beyondNearPlane(box({30, 0, 0}, 0.5f), clipFromWorld));     // aside
+    EXPECT_FALSE(shadow::beyondNearPlane(box({0, 0, 4.5f}, 0.2f), clipFromWorld));  // cut
+    EXPECT_FALSE(shadow::beyondNearPlane(box({0, 0, 5}, 0.1f), clipFromWorld));     // eye in it
+    EXPECT_FALSE(shadow::beyondNearPlane(box({0, 0, 8}, 0.5f), clipFromWorld));     // behind
+    EXPECT_FALSE(shadow::beyondNearPlane(Aabb{}, clipFromWorld));
+}
+
 TEST(Culling, CubesCullOnlyBeyondTheirFarSphere) {
     Light point;
     point.type = LightType::Point;
