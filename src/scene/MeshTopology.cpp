@@ -1,6 +1,6 @@
 #include "scene/MeshTopology.h"
 
-#include <array>
+#include <algorithm>
 #include <cstring>
 #include <numeric>
 #include <unordered_map>
@@ -33,22 +33,15 @@ private:
     std::vector<std::uint32_t> mParent;
 };
 
-std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
-    return std::uint64_t(a) << 32 | b;
-}
-std::uint64_t reversed(std::uint64_t key) {
-    return key << 32 | key >> 32;
-}
-
-// The mesh's triangles as corners welded by position (glTF and OBJ split vertices at texture
-// and normal seams), and each directed edge's count and last triangle.
+// The mesh's edges, its corners welded by position (glTF and OBJ split vertices at texture
+// and normal seams). Sorted by edge rather than hashed: the Stanford Dragon's 2.6 M edge uses
+// took seconds through a hash map.
 struct Edges {
-    std::vector<std::array<std::uint32_t, 3>> corners;
+    bool open = false;             // some edge has only one triangle
+    std::vector<char> sound;       // per triangle: every edge run once each way
     std::vector<char> degenerate;  // two corners at one position: no edges, draws nothing
-    struct Use {
-        std::uint32_t count = 0, triangle = 0;
-    };
-    std::unordered_map<std::uint64_t, Use> directed;
+    // Triangles on either side of each edge run once each way.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> partners;
 
     explicit Edges(const Mesh& mesh) {
         std::unordered_map<glm::vec3, std::uint32_t, PositionHash> ids;
@@ -57,28 +50,42 @@ struct Edges {
         for (std::size_t i = 0; i < mesh.positions.size(); ++i)
             weld[i] = ids.emplace(mesh.positions[i], std::uint32_t(ids.size())).first->second;
         const std::size_t triangles = mesh.indices.size() / 3;
-        corners.resize(triangles);
-        degenerate.resize(triangles);
-        directed.reserve(mesh.indices.size());
+        degenerate.assign(triangles, 0);
+        sound.assign(triangles, 0);
+        // Each use of an edge: its two ends, lower id first, and whether it runs that way.
+        struct Use {
+            std::uint64_t edge;
+            std::uint32_t triangle;
+            bool forward;
+        };
+        std::vector<Use> uses;
+        uses.reserve(3 * triangles);
         for (std::uint32_t t = 0; t < triangles; ++t) {
-            std::array<std::uint32_t, 3>& v = corners[t];
-            for (int k = 0; k < 3; ++k)
-                v[std::size_t(k)] = weld[mesh.indices[3 * t + std::size_t(k)]];
+            std::uint32_t v[3];
+            for (std::size_t k = 0; k < 3; ++k)
+                v[k] = weld[mesh.indices[3 * t + k]];
             degenerate[t] = v[0] == v[1] || v[1] == v[2] || v[2] == v[0];
+            sound[t] = !degenerate[t];
             if (degenerate[t]) continue;
             for (std::size_t k = 0; k < 3; ++k) {
-                Use& use = directed[edgeKey(v[k], v[(k + 1) % 3])];
-                ++use.count;
-                use.triangle = t;
+                const std::uint32_t a = v[k], b = v[(k + 1) % 3];
+                uses.push_back({std::uint64_t(std::min(a, b)) << 32 | std::max(a, b), t, a < b});
+            }
+        }
+        std::sort(uses.begin(), uses.end(),
+                  [](const Use& x, const Use& y) { return x.edge < y.edge; });
+        for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+            while (j < uses.size() && uses[j].edge == uses[i].edge)
+                ++j;
+            open = open || j - i == 1;
+            if (j - i == 2 && uses[i].forward != uses[i + 1].forward) {
+                partners.emplace_back(uses[i].triangle, uses[i + 1].triangle);
+            } else {
+                for (std::size_t k = i; k < j; ++k)
+                    sound[uses[k].triangle] = 0;
             }
         }
     }
-    std::uint32_t count(std::uint64_t key) const {
-        const auto it = directed.find(key);
-        return it == directed.end() ? 0 : it->second.count;
-    }
-    // Run once each way: the triangles on its two sides agree on which side is out.
-    bool good(std::uint64_t key) const { return count(key) == 1 && count(reversed(key)) == 1; }
 };
 
 }  // namespace
@@ -93,22 +100,12 @@ CullingSplit splitForCulling(const Mesh& mesh) {
     // solid beside an open surface in one mesh (each square of assimp's ClearCoatTest: a slab
     // under an open dome) leaked light onto the dome under a low sun when the slab alone was
     // culled (1.9 % of the view against 0.1 %), for a cause not pinned down.
-    for (const auto& [key, use] : e.directed) {
-        if (use.count + e.count(reversed(key)) == 1) return split;
-    }
+    if (e.open) return split;
+    const std::vector<char>& sound = e.sound;
+    // Sound triangles joined across their edges into patches.
     Sets patches(triangles);
-    // Sound triangles (every edge good) joined across their edges into patches.
-    std::vector<char> sound(triangles, 0);
-    for (std::uint32_t t = 0; t < triangles; ++t) {
-        const auto& v = e.corners[t];
-        sound[t] = !e.degenerate[t] && e.good(edgeKey(v[0], v[1])) && e.good(edgeKey(v[1], v[2])) &&
-                   e.good(edgeKey(v[2], v[0]));
-    }
-    for (const auto& [key, use] : e.directed) {
-        if (use.count != 1 || !sound[use.triangle]) continue;
-        const auto other = e.directed.find(reversed(key));
-        if (other != e.directed.end() && sound[other->second.triangle])
-            patches.join(use.triangle, other->second.triangle);
+    for (const auto& [a, b] : e.partners) {
+        if (sound[a] && sound[b]) patches.join(a, b);
     }
     // Each patch's vector area, total area and volume (about the mesh's first corner: a
     // closed patch's volume does not depend on where, a nearly closed one's hardly).
