@@ -201,7 +201,8 @@ void addTolerances(std::vector<OptionSpec>& s) {
          NUMBER(shadow.normalOffset, float)});
     add({.name = "cull",
          .group = "Tolerances",
-         .doc = "faces culled in the depth pass (only on solids: closed surfaces wound outwards)",
+         .doc = "faces culled in the depth pass (only on solids: closed, wound outwards, not cut "
+                "by a texture)",
          .kind = K::Choice,
          .choices = namesOf<CullMode>(),
          ENUM(shadow.cull, CullMode)});

@@ -37,13 +37,16 @@ private:
 // and normal seams). Sorted by edge rather than hashed: the Stanford Dragon's 2.6 M edge uses
 // took seconds through a hash map.
 struct Edges {
-    bool open = false;             // some edge has only one triangle
+    // Connected pieces (triangles sharing an edge, joined), and the triangles on an edge
+    // no other triangle has (an open border: their pieces are not watertight).
+    Sets pieces;
+    std::vector<std::uint32_t> onOpenEdges;
     std::vector<char> sound;       // per triangle: every edge run once each way
     std::vector<char> degenerate;  // two corners at one position: no edges, draws nothing
     // Triangles on either side of each edge run once each way.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> partners;
 
-    explicit Edges(const Mesh& mesh) {
+    explicit Edges(const Mesh& mesh) : pieces(mesh.indices.size() / 3) {
         std::unordered_map<glm::vec3, std::uint32_t, PositionHash> ids;
         ids.reserve(mesh.positions.size());
         std::vector<std::uint32_t> weld(mesh.positions.size());
@@ -77,7 +80,9 @@ struct Edges {
         for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
             while (j < uses.size() && uses[j].edge == uses[i].edge)
                 ++j;
-            open = open || j - i == 1;
+            if (j - i == 1) onOpenEdges.push_back(uses[i].triangle);
+            for (std::size_t k = i + 1; k < j; ++k)
+                pieces.join(uses[i].triangle, uses[k].triangle);
             if (j - i == 2 && uses[i].forward != uses[i + 1].forward) {
                 partners.emplace_back(uses[i].triangle, uses[i + 1].triangle);
             } else {
@@ -95,12 +100,11 @@ CullingSplit splitForCulling(const Mesh& mesh) {
     split.indices = mesh.indices;
     const std::size_t triangles = mesh.indices.size() / 3;
     if (triangles < 4) return split;  // fewer than four triangles bound nothing
-    const Edges e(mesh);
-    // A mesh with an edge only one triangle uses (an open border) keeps all its faces: a thin
-    // solid beside an open surface in one mesh (each square of assimp's ClearCoatTest: a slab
-    // under an open dome) leaked light onto the dome under a low sun when the slab alone was
-    // culled (1.9 % of the view against 0.1 %), for a cause not pinned down.
-    if (e.open) return split;
+    Edges e(mesh);
+    // A patch counts only on a watertight piece, whose other triangles fill its holes.
+    std::vector<char> openPiece(triangles, 0);
+    for (std::uint32_t t : e.onOpenEdges)
+        openPiece[e.pieces.find(t)] = 1;
     const std::vector<char>& sound = e.sound;
     // Sound triangles joined across their edges into patches.
     Sets patches(triangles);
@@ -127,7 +131,7 @@ CullingSplit splitForCulling(const Mesh& mesh) {
     std::vector<int> side(triangles, 0);    // per triangle: its patch's winding, 0 none
     std::size_t outwards = 0, inwards = 0;
     for (std::uint32_t t = 0; t < triangles; ++t) {
-        if (!sound[t]) continue;
+        if (!sound[t] || openPiece[e.pieces.find(t)]) continue;
         const std::uint32_t p = patches.find(t);
         if (glm::length(vectorArea[p]) > kMostlyClosed * area[p] || volume[p] == 0.0) continue;
         side[t] = volume[p] > 0.0 ? 1 : -1;

@@ -30,12 +30,13 @@ int closedWinding(const Mesh& mesh);
 //
 // A solid here is a part of the surface whose every edge has two triangles running along it
 // in opposite directions, nearly closed on its own (the areas of its faces, as vectors, sum to
-// under 1 % of their total: what is missing is a few holes, not a side), in a mesh with no
-// edge that only one triangle has (watertight). Its holes are then filled by the mesh's other
-// triangles, drawn from both sides, so a ray from outside still meets one of its front faces
-// or a filler before any back face. A 3DS horse with a few faces wound the wrong way
-// (glmark2's: 48 of 7 172 triangles) is such a solid with fillers; an open sheet, a box
-// missing a side, one with a whole side turned, and any mesh with an open part are not.
+// under 1 % of their total: what is missing is a few holes, not a side), on a connected piece
+// of the mesh with no edge that only one triangle has (watertight). Its holes are then filled
+// by the piece's other triangles, drawn from both sides, so a ray from outside still meets one
+// of its front faces or a filler before any back face. A 3DS horse with a few faces wound the
+// wrong way (glmark2's: 48 of 7 172 triangles) is such a solid with fillers; an open sheet, a
+// box missing a side, or one with a whole side turned are not. (A solid whose texture cuts
+// its faces is no solid for light: the shadow pass does not cull alpha-tested casters.)
 struct CullingSplit {
     std::vector<std::uint32_t> indices;
     std::size_t closedIndices = 0;

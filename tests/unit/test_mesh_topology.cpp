@@ -121,9 +121,8 @@ TEST(MeshTopology, AHalfTurnedSolidIsNotCulled) {
     EXPECT_EQ(0u, splitForCulling(m).closedIndices);
 }
 
-// A solid beside an open sheet in one mesh: nothing is culled (a slab beside an open dome in
-// one mesh leaked when the slab alone was; see splitForCulling).
-TEST(MeshTopology, ASolidBesideASheetIsNotCulled) {
+// A solid beside an open sheet in one mesh: the solid is culled, the sheet is not.
+TEST(MeshTopology, ASolidBesideASheetIsCulledAlone) {
     Mesh m = solid();
     const std::size_t solid = m.indices.size();
     const Mesh q = mesh::quad("sheet", {30, 0, 0}, {31, 0, 0}, {31, 1, 0}, {30, 1, 0});
@@ -132,9 +131,10 @@ TEST(MeshTopology, ASolidBesideASheetIsNotCulled) {
     m.normals.insert(m.normals.end(), q.normals.begin(), q.normals.end());
     for (std::uint32_t i : q.indices)
         m.indices.push_back(base + i);
-    EXPECT_EQ(0u, splitForCulling(m).closedIndices);
-    m.indices.resize(solid);  // the solid alone
-    EXPECT_EQ(solid, splitForCulling(m).closedIndices);
+    const CullingSplit split = splitForCulling(m);
+    EXPECT_EQ(1, split.winding);
+    EXPECT_EQ(solid, split.closedIndices);
+    EXPECT_EQ(0, closedWinding(m));
 }
 
 }  // namespace
