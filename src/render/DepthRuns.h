@@ -14,6 +14,20 @@ namespace gnomon::render {
 // (DrawItem::closedIndexCount), the rest drawn from both sides.
 enum class Cull { None, All, Solids };
 
+// How a shadow pass culls a caster. Only solids may lose faces: an open surface culled from
+// the light's side would cast no shadow at all (and one from the other side would not
+// either). A solid's material may be double-sided: seen from outside, it casts the same
+// shadow. But not a solid whose texture cuts its faces: light let in through a clear texel of
+// a front face meets the opaque texels of the back faces (a slab with a partly clear coating
+// in assimp's ClearCoatTest, culled, lit the dome behind it). `holdsLight`: the item's box
+// might hold the light, which would then see only back faces.
+inline Cull casterCull(const DrawItem& item, const ShadowOptions& options, bool holdsLight) {
+    const bool solid = item.closedIndexCount > 0 && !holdsLight;
+    return options.cull != CullMode::None && solid && !alphaTestedCaster(item, options)
+               ? Cull::Solids
+               : Cull::None;
+}
+
 // Draws `indices` (ascending indices into scene.items()), each `instances` times, as their
 // stand-in casters when `standIns`. `alphaTested(item)` and `cull(item)` say what an item
 // needs; `useProgram(alphaTested)` binds the plain or alpha-tested program (and sets its

@@ -208,17 +208,8 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
     drawDepthRuns(
         scene, mVisible, instances, /*standIns=*/true,
         [&](const DrawItem& item) { return alphaTestedCaster(item, options); },
-        // Only solids may lose faces: an open surface culled from the light's side would
-        // cast no shadow at all (and one from the other side would not either). A solid's
-        // material may be double-sided: seen from outside, it casts the same shadow. But not
-        // a solid whose texture cuts its faces: light let in through a transparent texel of
-        // a front face meets the opaque texels of the back faces (a slab with a partly
-        // transparent coating in assimp's ClearCoatTest, culled, lit the dome behind it).
         [&](const DrawItem& item) {
-            return options.cull != CullMode::None && item.closedIndexCount > 0 &&
-                           !mHoldsLight[item.object] && !alphaTestedCaster(item, options)
-                       ? Cull::Solids
-                       : Cull::None;
+            return casterCull(item, options, mHoldsLight[item.object] != 0);
         },
         [&](bool alpha) {
             glUseProgram(

@@ -100,13 +100,13 @@ TEST(ClosedCasters, ASolidWithAFewFacesTurnedKeepsItsShadow) {
 TEST(ClosedCasters, ASolidCutByItsTextureIsNotCulled) {
     Scene s = lightInABox(LightType::Directional);
     s.lights[0].direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
-    Texture t;
-    t.name = "clear | opaque";
-    t.width = 2;
-    t.height = 1;
-    t.rgba = {255, 255, 255, 0, 255, 255, 255, 255};
-    t.nearest = true;
-    s.textures.push_back(t);
+    s.textures.push_back({"clear | opaque",
+                          2,
+                          1,
+                          {255, 255, 255, 0, 255, 255, 255, 255},
+                          TextureWrap::Repeat,
+                          TextureWrap::Repeat,
+                          /*nearest=*/true});
     Material cut;
     cut.alphaMode = AlphaMode::Mask;
     cut.alphaCutoff = 0.5f;
