@@ -365,11 +365,13 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
         glCullFace(GL_FRONT);
         // A solid's back faces are hidden behind its front ones wherever the view starts
         // outside it: only the rest of the item shows its back (a horse with a few faces
-        // wound the wrong way shows those few).
+        // wound the wrong way shows those few). Not behind a masked front face: its clear
+        // texels show the back faces.
         const glm::mat4 clipFromWorld = in.clipFromView * in.viewFromWorld;
         for (std::uint32_t i : mBackFaces) {
             setState(items[i]);
-            const bool outside = shadow::beyondNearPlane(items[i].bounds, clipFromWorld);
+            const bool outside = items[i].alphaMode == AlphaMode::Opaque &&
+                                 shadow::beyondNearPlane(items[i].bounds, clipFromWorld);
             scene.draw(items[i], 1, outside ? Part::Open : Part::All);
         }
         glCullFace(GL_BACK);

@@ -43,9 +43,11 @@ void ViewDepthPass::draw(const GpuScene& scene) {
     drawDepthRuns(
         scene, mItems, 1, /*standIns=*/false,
         [](const DrawItem& item) { return item.alphaMode == AlphaMode::Mask; },
-        // Double-sided solids beyond the near plane show no back faces (MainPass likewise).
+        // Double-sided solids beyond the near plane show no back faces (MainPass likewise),
+        // unless a mask's clear texels show them.
         [&](const DrawItem& item) {
             if (!item.doubleSided) return Cull::All;
+            if (item.alphaMode != AlphaMode::Opaque) return Cull::None;
             return shadow::beyondNearPlane(item.bounds, clipFromWorld) ? Cull::Solids : Cull::None;
         },
         [&](bool alpha) {

@@ -123,5 +123,41 @@ TEST(ClosedCasters, ASolidCutByItsTextureIsNotCulled) {
     EXPECT_LT(r.overall.misclassified, 0.005);
 }
 
+// The view skips a double-sided solid's back faces where it starts outside the solid, but not
+// a masked one's: through the clear texels of its near side the far side's inside shows.
+TEST(ClosedCasters, AMaskedSolidShowsItsInsideThroughItsClearTexels) {
+    Scene s;
+    s.name = "masked-box";
+    s.textures.push_back({"clear | opaque",
+                          2,
+                          1,
+                          {255, 255, 255, 0, 255, 255, 255, 255},
+                          TextureWrap::Repeat,
+                          TextureWrap::Repeat,
+                          /*nearest=*/true});
+    Material cut;
+    cut.alphaMode = AlphaMode::Mask;
+    cut.alphaCutoff = 0.5f;
+    cut.baseColourTexture = 0;
+    cut.doubleSided = true;
+    s.materials.push_back(cut);
+    Mesh box = mesh::box("box", glm::vec3(0.0f), glm::vec3(2.0f));
+    for (const glm::vec3& n : box.normals)  // the side facing the camera clear
+        box.uvs.push_back(n.z > 0.5f ? glm::vec2(0.25f, 0.5f) : glm::vec2(0.75f, 0.5f));
+    ASSERT_EQ(box.indices.size(), splitForCulling(box).closedIndices);
+    s.meshes.push_back(box);
+    s.objects.push_back({"box", 0, 0, glm::mat4(1.0f), {}, true, true});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.0f, 0.0f, -1.0f));  // onto the far side's inside
+    s.lights.push_back(sun);
+    s.ambient = glm::vec3(0.3f);
+    s.camera.eye = {0.0f, 0.0f, 6.0f};
+    s.camera.centre = {0.0f, 0.0f, 0.0f};
+    s.options.width = s.options.height = 64;
+    const Image image = sharedRenderer().render(s, s.options);
+    EXPECT_GT(luminance(image.at(32, 32)), 60);  // the far side's inside, not the background
+}
+
 }  // namespace
 }  // namespace gnomon::test
