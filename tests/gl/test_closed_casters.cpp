@@ -92,14 +92,9 @@ TEST(ClosedCasters, ASolidWithAFewFacesTurnedKeepsItsShadow) {
     EXPECT_LT(r.overall.misclassified, 0.002);
 }
 
-// A solid whose texture cuts its faces is no solid for light: light let in through a clear
-// texel of a face towards the light meets the opaque texels of the faces behind. Here the
-// box's top is clear and every other face opaque, so it shadows the floor under it; with its
-// back faces culled, nothing of it was left in the map (the slab of assimp's ClearCoatTest
-// with a partly clear coating let light onto the dome behind it the same way).
-TEST(ClosedCasters, ASolidCutByItsTextureIsNotCulled) {
-    Scene s = lightInABox(LightType::Directional);
-    s.lights[0].direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
+// Gives `box` a masked material (added to `s`, its index returned) whose texture is clear on
+// the side facing `clearSide` and opaque on every other: a solid cut by its texture.
+std::uint32_t addMaskCuttingSide(Scene& s, Mesh& box, glm::vec3 clearSide, bool doubleSided) {
     s.textures.push_back({"clear | opaque",
                           2,
                           1,
@@ -110,14 +105,27 @@ TEST(ClosedCasters, ASolidCutByItsTextureIsNotCulled) {
     Material cut;
     cut.alphaMode = AlphaMode::Mask;
     cut.alphaCutoff = 0.5f;
-    cut.baseColourTexture = 0;
+    cut.baseColourTexture = int(s.textures.size() - 1);
+    cut.doubleSided = doubleSided;
     s.materials.push_back(cut);
-    Mesh& box = s.meshes[1];
-    ASSERT_EQ(box.indices.size(), splitForCulling(box).closedIndices);  // a solid
     box.uvs.clear();
     for (const glm::vec3& n : box.normals)
-        box.uvs.push_back(n.y > 0.5f ? glm::vec2(0.25f, 0.5f) : glm::vec2(0.75f, 0.5f));
-    s.objects[1].material = 1;
+        box.uvs.push_back(glm::dot(n, clearSide) > 0.5f ? glm::vec2(0.25f, 0.5f)
+                                                        : glm::vec2(0.75f, 0.5f));
+    return std::uint32_t(s.materials.size() - 1);
+}
+
+// A solid whose texture cuts its faces is no solid for light: light let in through a clear
+// texel of a face towards the light meets the opaque texels of the faces behind. Here the
+// box's top is clear and every other face opaque, so it shadows the floor under it; with its
+// back faces culled, nothing of it was left in the map (the slab of assimp's ClearCoatTest
+// with a partly clear coating let light onto the dome behind it the same way).
+TEST(ClosedCasters, ASolidCutByItsTextureIsNotCulled) {
+    Scene s = lightInABox(LightType::Directional);
+    s.lights[0].direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
+    Mesh& box = s.meshes[1];
+    ASSERT_EQ(box.indices.size(), splitForCulling(box).closedIndices);  // a solid
+    s.objects[1].material = addMaskCuttingSide(s, box, {0, 1, 0}, false);
     const ScoreResult r = score(sharedRenderer(), s, s.options);
     EXPECT_GT(r.overall.pixels, 1000);
     EXPECT_LT(r.overall.misclassified, 0.005);
@@ -128,22 +136,8 @@ TEST(ClosedCasters, ASolidCutByItsTextureIsNotCulled) {
 TEST(ClosedCasters, AMaskedSolidShowsItsInsideThroughItsClearTexels) {
     Scene s;
     s.name = "masked-box";
-    s.textures.push_back({"clear | opaque",
-                          2,
-                          1,
-                          {255, 255, 255, 0, 255, 255, 255, 255},
-                          TextureWrap::Repeat,
-                          TextureWrap::Repeat,
-                          /*nearest=*/true});
-    Material cut;
-    cut.alphaMode = AlphaMode::Mask;
-    cut.alphaCutoff = 0.5f;
-    cut.baseColourTexture = 0;
-    cut.doubleSided = true;
-    s.materials.push_back(cut);
     Mesh box = mesh::box("box", glm::vec3(0.0f), glm::vec3(2.0f));
-    for (const glm::vec3& n : box.normals)  // the side facing the camera clear
-        box.uvs.push_back(n.z > 0.5f ? glm::vec2(0.25f, 0.5f) : glm::vec2(0.75f, 0.5f));
+    addMaskCuttingSide(s, box, {0, 0, 1}, true);  // the side facing the camera clear
     ASSERT_EQ(box.indices.size(), splitForCulling(box).closedIndices);
     s.meshes.push_back(box);
     s.objects.push_back({"box", 0, 0, glm::mat4(1.0f), {}, true, true});
