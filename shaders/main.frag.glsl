@@ -91,10 +91,29 @@ const int kSingleMapKind = SINGLE_MAP_KIND;
 const int kSingleMapKind = kAnyKind;
 #endif
 
-// Direction to the light (world space) and its falloff at this fragment.
+// Direction to the light (world space) and its falloff at this fragment. CONSTANT_FALLOFF:
+// no light this frame has a range or distance terms (the default attenuation, 1 0 0), so the
+// falloff is 1 / c0 wherever the light reaches: written out below, the distance terms and the
+// range window cost a twentieth of the main pass on glmark2's horse (LP_NUM_THREADS=1).
 void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
     int type = kind == kAnyKind ? int(light.position.w) : kind;
     falloff = 1.0;
+#ifdef CONSTANT_FALLOFF
+    if (type == kDirectional) {
+        toLight = -normalize(light.direction.xyz);
+    } else if (type == kArea) {
+        toLight = -normalize(light.direction.xyz);
+        falloff = 1.0 / max(light.attenuation.x, 1e-6);
+    } else {
+        vec3 d = light.position.xyz - vIn.wsPosition;
+        toLight = d / length(d);
+        falloff = 1.0 / max(light.attenuation.x, 1e-6);
+        if (type == kSpot) {
+            float cosAngle = dot(-toLight, normalize(light.direction.xyz));
+            falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
+        }
+    }
+#else
     if (type == kDirectional) {
         toLight = -normalize(light.direction.xyz);
     } else if (type == kArea) {
@@ -120,6 +139,7 @@ void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
             falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
         }
     }
+#endif
 }
 
 // Adds one light's Blinn-Phong term, as visible as `visibility` says (per channel: coloured

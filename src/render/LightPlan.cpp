@@ -233,6 +233,17 @@ int LightPlan::singleMapKind() const {
     return kind;
 }
 
+bool LightPlan::constantFalloff() const {
+    for (int i = 0; i < mRanges.w; ++i) {
+        const GpuLight& g = mLights[std::size_t(i)];
+        const int type = int(g.position.w);
+        if (type == gpu::kDirectional) continue;
+        if (g.attenuation.y != 0.0f || g.attenuation.z != 0.0f) return false;
+        if (type != gpu::kArea && g.direction.w > 0.0f) return false;  // a range's window
+    }
+    return true;
+}
+
 // `count` maps along the view (Zhang et al. 2006, Parallel-Split Shadow Maps). With view
 // samples: split over the depth range they span, each cascade fitted to the samples that
 // may read it (its own slice and the previous cascade's blend band). Without: from the

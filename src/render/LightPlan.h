@@ -54,6 +54,9 @@ public:
     // The type code (shaders/lights.glsl) all single-map records share, or -1 when they
     // mix kinds or there are none.
     int singleMapKind() const;
+    // No light this frame falls off with distance: every point, spot and area light has no
+    // range and attenuation (c0, 0, 0), so the main pass's falloff is the constant 1 / c0.
+    bool constantFalloff() const;
 
 private:
     void orderLights(std::size_t sceneLights);

@@ -56,6 +56,9 @@ struct MainPassInputs {
     // The kind (lights.glsl's type code) every single-map record shares, or -1 when they mix
     // (LightPlan::singleMapKind): the program drops the other kinds' light code.
     int singleMapKind = -1;
+    // No light falls off with distance (LightPlan::constantFalloff): the program drops the
+    // distance terms.
+    bool constantFalloff = false;
     const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
     // The 2D maps' blurred moments (MomentPass) for the moment filters; null otherwise.

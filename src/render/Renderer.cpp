@@ -268,6 +268,7 @@ struct Renderer::Impl {
         in.hasCascades = plan.hasCascades();
         in.pointFaces = plan.hasPointFaces();
         in.singleMapKind = plan.singleMapKind();
+        in.constantFalloff = plan.constantFalloff();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
         const std::vector<render::ShadowedLight>& shadowed = plan.shadowed();

@@ -2,7 +2,8 @@
 // program with that kind compiled in (LightPlan::singleMapKind); with kinds mixed, the
 // program reads each record's kind. Both must light the same: adding a light of another
 // kind that adds nothing (intensity 0, with its own map) turns the specialised program into
-// the mixed one and must leave every byte of the image as it was.
+// the mixed one and must leave every byte of the image as it was. Likewise a frame whose
+// lights have no distance falloff (LightPlan::constantFalloff) against the general program.
 #include <gtest/gtest.h>
 
 #include "GlTest.h"
@@ -52,6 +53,35 @@ TEST(LightKinds, FramedPointLightsLightTheSameAloneAsBesideAnotherKind) {
     l.shadowCamera.target = l.position + l.direction;
     l.shadowCamera.fovyDegrees = 90.0f;
     expectSameWithADarkSun(s, 128);
+}
+
+// A dark unshadowed point light whose falloff grows with distance and ends at a range turns
+// the frame's constant-falloff program into the general one.
+TEST(LightKinds, LightsWithoutFalloffLightTheSameAsBesideOneWithIt) {
+    for (const char* name : {"tutorial-spot", "mixed-lights"}) {
+        Scene s = builtinScene(name);
+        for (Light& l : s.lights) {  // halved everywhere: falloff 1 / c0, no distance terms
+            l.range = 0.0f;
+            l.attenuation = {2.0f, 0.0f, 0.0f};
+        }
+        Scene general = s;
+        Light dark;
+        dark.type = LightType::Point;
+        dark.position = {0.0f, 2.0f, 0.0f};
+        dark.intensity = 0.0f;
+        dark.attenuation = {1.0f, 0.5f, 0.25f};
+        dark.range = 10.0f;
+        dark.castsShadows = false;
+        general.lights.push_back(dark);
+        const Image constant = renderAt(s, 128);
+        const Image falling = renderAt(general, 128);
+        ASSERT_EQ(constant.pixels.size(), falling.pixels.size());
+        long differing = 0;
+        for (std::size_t i = 0; i < constant.pixels.size(); ++i)
+            differing += constant.pixels[i] != falling.pixels[i];
+        EXPECT_EQ(differing, 0) << name << ": the constant-falloff program changed " << differing
+                                << " bytes";
+    }
 }
 
 }  // namespace
