@@ -102,7 +102,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(standInLift(so)) << 36 | std::uint64_t(counts.x >= 0) << 37 |
         std::uint64_t(std::max(counts.x, 0)) << 38 | std::uint64_t(std::max(counts.y, 0)) << 42 |
         std::uint64_t(std::max(counts.z, 0)) << 46 | std::uint64_t(std::max(counts.w, 0)) << 50 |
-        std::uint64_t(in.pointFaces) << 54 | std::uint64_t(in.constantFalloff) << 55;
+        std::uint64_t(in.pointFaces) << 54 | std::uint64_t(in.constantFalloff) << 55 |
+        std::uint64_t(in.noSpecular) << 56;
     static_assert(kMaxUnrolledLights < 16, "a count must fit the key's four bits");
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
@@ -173,6 +174,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (in.hasCascades) defines.push_back("HAS_CASCADES");
     if (in.pointFaces) defines.push_back("POINT_FACES");
     if (in.constantFalloff) defines.push_back("CONSTANT_FALLOFF");
+    if (in.noSpecular) defines.push_back("NO_SPECULAR");
     if (in.singleMapKind >= 0) {
         defines.push_back("SINGLE_MAP_KIND " + std::to_string(in.singleMapKind));
     }

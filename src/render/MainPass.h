@@ -59,6 +59,8 @@ struct MainPassInputs {
     // No light falls off with distance (LightPlan::constantFalloff): the program drops the
     // distance terms.
     bool constantFalloff = false;
+    // No lit object has a specular highlight (GpuScene::hasSpecular): the program drops it.
+    bool noSpecular = false;
     const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
     // The 2D maps' blurred moments (MomentPass) for the moment filters; null otherwise.

@@ -3,7 +3,8 @@
 // program reads each record's kind. Both must light the same: adding a light of another
 // kind that adds nothing (intensity 0, with its own map) turns the specialised program into
 // the mixed one and must leave every byte of the image as it was. Likewise a frame whose
-// lights have no distance falloff (LightPlan::constantFalloff) against the general program.
+// lights have no distance falloff (LightPlan::constantFalloff), or whose lit objects have no
+// specular highlight (GpuScene::hasSpecular), against the general program.
 #include <gtest/gtest.h>
 
 #include "GlTest.h"
@@ -81,6 +82,28 @@ TEST(LightKinds, LightsWithoutFalloffLightTheSameAsBesideOneWithIt) {
             differing += constant.pixels[i] != falling.pixels[i];
         EXPECT_EQ(differing, 0) << name << ": the constant-falloff program changed " << differing
                                 << " bytes";
+    }
+}
+
+long differingBytes(const Image& a, const Image& b) {
+    EXPECT_EQ(a.pixels.size(), b.pixels.size());
+    long differing = 0;
+    for (std::size_t i = 0; i < std::min(a.pixels.size(), b.pixels.size()); ++i)
+        differing += a.pixels[i] != b.pixels[i];
+    return differing;
+}
+
+// A highlight a thousand times too faint to change a byte turns the frame's program without
+// specular terms into the general one.
+TEST(LightKinds, ObjectsWithoutHighlightsLightTheSameInEitherProgram) {
+    for (const char* name : {"tutorial-room", "mixed-lights"}) {
+        Scene s = builtinScene(name);
+        ASSERT_FALSE(s.materials.empty());
+        for (Material& m : s.materials)
+            m.specular = 0.0f;
+        Scene general = s;
+        general.materials.front().specular = 1e-30f;
+        EXPECT_EQ(differingBytes(renderAt(s, 128), renderAt(general, 128)), 0) << name;
     }
 }
 
