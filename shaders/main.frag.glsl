@@ -302,8 +302,11 @@ void findReceiverPlane() {
 #if defined(RECEIVER_PLANE) && !defined(SHADOWS_OFF)
     vec3 dx = dFdx(vIn.wsPosition), dy = dFdy(vIn.wsPosition);
     vec3 n = cross(dx, dy);
-    float len = length(n);
-    gPlaneNormal = len > 1e-6 * length(dx) * length(dy) ? n / len : normalize(vIn.wsNormal);
+    // Degenerate where the sine of the angle between dx and dy is under 1e-6: compared
+    // squared (no roots), scaled up so that tiny scenes do not underflow.
+    float len2 = dot(n, n);
+    gPlaneNormal = len2 * 1e12 > dot(dx, dx) * dot(dy, dy) ? n * inversesqrt(len2)
+                                                            : normalize(vIn.wsNormal);
 #endif
 }
 

@@ -117,25 +117,35 @@ float planeAlong(vec2 g, vec2 full, vec2 o) {
 vec4 planeAlong4(vec4 capped, vec4 full, float approach) {
     return min(capped, max(full, approach * capped));
 }
+// llvmpipe divides and takes square roots exactly (a division per reciprocal, a root and a
+// division per normalize), each several times the cost of a multiply-add on every pixel, so
+// this runs on as few as it can: the tangents are not normalised (any two directions across
+// the plane do), the two steps are not divided by their w (the solve below is homogeneous in
+// each step, so their scale cancels out), and the tests compare squares. One division and one
+// root where it had eleven and four: mixed-lights' main pass took 0.96 of the time, and with
+// mapRounding's bound and findReceiverPlane's test also rid of roots, glmark2's horse's 0.98
+// (LP_NUM_THREADS=1, scripts/ab-bench.sh): less than the count suggests.
 vec2 receiverPlaneGradient(LightData light, vec4 clip, vec3 coord, float texelWorld,
                            float texelCoord, vec3 wsToLight) {
     vec3 n = gPlaneNormal;
-    vec3 t1 = normalize(abs(n.x) > 0.5 ? vec3(n.y, -n.x, 0.0) : vec3(0.0, n.z, -n.y));
+    vec3 t1 = abs(n.x) > 0.5 ? vec3(n.y, -n.x, 0.0) : vec3(0.0, n.z, -n.y);  // 0.5 to 1 long
     vec3 t2 = cross(n, t1);
     vec4 c1 = clip + light.textureFromWorld * vec4(t1 * texelWorld, 0.0);
     vec4 c2 = clip + light.textureFromWorld * vec4(t2 * texelWorld, 0.0);
-    vec3 d1 = c1.xyz / c1.w - coord, d2 = c2.xyz / c2.w - coord;
+    // Each step in map coordinates and depth, times its w.
+    vec3 d1 = c1.xyz - coord * c1.w, d2 = c2.xyz - coord * c2.w;
     float det = d1.x * d2.y - d2.x * d1.y;
     // A plane seen edge-on by the light has no depth gradient in the map: no texel but its
-    // own line shows it, and the single-depth comparison is as good as any.
+    // own line shows it, and the single-depth comparison is as good as any. (Its sine below
+    // 1e-6; the products scaled up, not down, so that tiny scenes do not underflow.)
     gPlaneFull = vec2(0.0);
-    if (!(abs(det) > 1e-6 * length(d1.xy) * length(d2.xy))) return vec2(0.0);
-    vec2 g = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) / det;
+    if (!(det * det * 1e12 > dot(d1.xy, d1.xy) * dot(d2.xy, d2.xy))) return vec2(0.0);
+    vec2 g = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) * (1.0 / det);
     gPlaneFull = g;
     // Clamped to kPlaneMaxSlope: the depth the surface changes over one texel when it is
-    // tilted that much, from a step towards the light.
+    // tilted that much, from a step towards the light (times its w, as above).
     vec4 c3 = clip + light.textureFromWorld * vec4(wsToLight * texelWorld * kPlaneMaxSlope, 0.0);
-    float maxPerTexel = abs(coord.z - c3.z / c3.w);
-    float perTexel = length(g) * texelCoord;
-    return perTexel > maxPerTexel ? g * (maxPerTexel / perTexel) : g;
+    float maxPerTexelW = abs(coord.z * c3.w - c3.z);
+    float perTexelW = length(g) * texelCoord * abs(c3.w);
+    return perTexelW > maxPerTexelW ? g * (maxPerTexelW / perTexelW) : g;
 }

@@ -241,11 +241,15 @@ float mapRounding(LightData light, vec3 p, float w, float z) {
     vec4 a = abs(vec4(p, 1.0));
     float zTerms = dot(abs(vec4(m[0].z, m[1].z, m[2].z, m[3].z)), a);
     float wTerms = dot(abs(vec4(m[0].w, m[1].w, m[2].w, m[3].w)), a);
-    float products = exp2(-23.0) * (zTerms + abs(z) * wTerms) / abs(w);
+    float rw = 1.0 / abs(w);
+    float products = exp2(-23.0) * (zTerms + abs(z) * wTerms) * rw;
     if (light.shadow.z == kFrameOrthographic) return products;
-    vec3 perWorld = (vec3(m[0].z, m[1].z, m[2].z) - z * vec3(m[0].w, m[1].w, m[2].w)) / w;
-    float size = length(p) + length(light.position.xyz);
-    return products + exp2(-22.0) * length(perWorld) * size;
+    // |perWorld| (|p| + |light|) is at most sqrt(2 |perWorld|^2 (|p|^2 + |light|^2)): one
+    // square root where three cost llvmpipe (which roots and divides exactly) most of what
+    // this bound took.
+    vec3 perWorldW = vec3(m[0].z, m[1].z, m[2].z) - z * vec3(m[0].w, m[1].w, m[2].w);
+    float sizes = 2.0 * (dot(p, p) + dot(light.position.xyz, light.position.xyz));
+    return products + exp2(-22.0) * sqrt(dot(perWorldW, perWorldW) * sizes) * rw;
 }
 
 // One single-frustum map: orthographic or perspective, a light's own or one cascade's.
