@@ -3,6 +3,9 @@
 // depth of its uBlock x uBlock block of the full-resolution depth buffer (the clear value 1
 // is nothing: a block with nothing keeps (1, 1)). Every pixel the view draws then lies in its
 // block's frustum between those two depths, which is what fitted shadow maps must hold.
+// Read 2x2 texels at a time by textureGather, a quarter of the reads of one texelFetch per
+// texel: tutorial-room's view depth pass (this and the depth draw before it, 512²) took
+// 1.90-2.02 ms against 2.18-2.34 ms, three runs of `gnomon bench` each, alternating.
 layout(binding = 0) uniform sampler2D uDepth;
 layout(location = 0) uniform ivec2 uBlock;  // block size in pixels
 layout(location = 1) uniform ivec2 uSize;   // the depth buffer's size
@@ -11,15 +14,21 @@ layout(location = 0) out vec2 oRange;
 void main() {
     ivec2 first = ivec2(gl_FragCoord.xy) * uBlock;
     ivec2 last = min(first + uBlock, uSize) - 1;
-    float nearest = 1.0, farthest = 0.0;
-    for (int y = first.y; y <= last.y; ++y) {
-        for (int x = first.x; x <= last.x; ++x) {
-            float d = texelFetch(uDepth, ivec2(x, y), 0).r;
-            if (d < 1.0) {
-                nearest = min(nearest, d);
-                farthest = max(farthest, d);
-            }
+    vec2 texel = 1.0 / vec2(uSize);
+    vec4 nearest = vec4(1.0), farthest = vec4(0.0);
+    for (int y = first.y; y <= last.y; y += 2) {
+        for (int x = first.x; x <= last.x; x += 2) {
+            // Texels (x, y + 1), (x + 1, y + 1), (x + 1, y), (x, y): those past the block's
+            // last row or column (an odd block, the buffer's edge) count as nothing.
+            vec4 d = textureGather(uDepth, vec2(x + 1, y + 1) * texel);
+            bool right = x + 1 <= last.x, up = y + 1 <= last.y;
+            d = mix(vec4(1.0), d, bvec4(up, right && up, right, true));
+            bvec4 covered = lessThan(d, vec4(1.0));
+            nearest = min(nearest, d);
+            farthest = max(farthest, mix(vec4(0.0), d, covered));
         }
     }
-    oRange = farthest > 0.0 || nearest < 1.0 ? vec2(nearest, farthest) : vec2(1.0);
+    float n = min(min(nearest.x, nearest.y), min(nearest.z, nearest.w));
+    float f = max(max(farthest.x, farthest.y), max(farthest.z, farthest.w));
+    oRange = f > 0.0 || n < 1.0 ? vec2(n, f) : vec2(1.0);
 }

@@ -85,7 +85,7 @@ void ViewDepthPass::reduce() {
     glUniform2i(0, mGrid.block, mGrid.block);
     glUniform2i(1, mGrid.size.x, mGrid.size.y);
     glBindTextureUnit(0, mDepth.id());
-    glBindSampler(0, 0);  // the main pass's comparing sampler would make texelFetch undefined
+    glBindSampler(0, 0);  // the main pass's comparing sampler would compare the gathers
     glBindVertexArray(mEmpty.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glEnable(GL_DEPTH_TEST);
