@@ -93,27 +93,12 @@ const int kSingleMapKind = kAnyKind;
 
 // Direction to the light (world space) and its falloff at this fragment. CONSTANT_FALLOFF:
 // no light this frame has a range or distance terms (the default attenuation, 1 0 0), so the
-// falloff is 1 / c0 wherever the light reaches: written out below, the distance terms and the
+// falloff is 1 / c0 wherever the light reaches: compiled in, the distance terms and the
 // range window cost a twentieth of the main pass on glmark2's horse (LP_NUM_THREADS=1).
 void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
     int type = kind == kAnyKind ? int(light.position.w) : kind;
     falloff = 1.0;
-#ifdef CONSTANT_FALLOFF
-    if (type == kDirectional) {
-        toLight = -normalize(light.direction.xyz);
-    } else if (type == kArea) {
-        toLight = -normalize(light.direction.xyz);
-        falloff = 1.0 / max(light.attenuation.x, 1e-6);
-    } else {
-        vec3 d = light.position.xyz - vIn.wsPosition;
-        toLight = d / length(d);
-        falloff = 1.0 / max(light.attenuation.x, 1e-6);
-        if (type == kSpot) {
-            float cosAngle = dot(-toLight, normalize(light.direction.xyz));
-            falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
-        }
-    }
-#else
+    vec3 c = light.attenuation.xyz;
     if (type == kDirectional) {
         toLight = -normalize(light.direction.xyz);
     } else if (type == kArea) {
@@ -121,25 +106,30 @@ void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
         // form: n.p + d, with d = -n.p0 for the plane through the light).
         vec3 n = normalize(light.direction.xyz);
         toLight = -n;
+#ifdef CONSTANT_FALLOFF
+        falloff = 1.0 / max(c.x, 1e-6);
+#else
         float dist = abs(dot(n, vIn.wsPosition - light.position.xyz));
-        vec3 c = light.attenuation.xyz;
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
+#endif
     } else {
         vec3 d = light.position.xyz - vIn.wsPosition;
         float dist = length(d);
         toLight = d / dist;
-        vec3 c = light.attenuation.xyz;
+#ifdef CONSTANT_FALLOFF
+        falloff = 1.0 / max(c.x, 1e-6);
+#else
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
         // glTF's range window (1 - (d/range)^4)^2, 1 without a range (w < 0).
         float r = light.direction.w > 0.0 ? dist / light.direction.w : 0.0;
         float window = clamp(1.0 - r * r * r * r, 0.0, 1.0);
         falloff *= window * window;
+#endif
         if (type == kSpot) {
             float cosAngle = dot(-toLight, normalize(light.direction.xyz));
             falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
         }
     }
-#endif
 }
 
 // Adds one light's Blinn-Phong term, as visible as `visibility` says (per channel: coloured
