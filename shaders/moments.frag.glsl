@@ -2,7 +2,8 @@
 // The moment pass: one map's square of a layer, box-blurred in two passes. ROWS: stored
 // depth to moments (moments.glsl), averaged along x into a scratch texture; COLUMNS: the
 // scratch averaged along y into the moments array's layer. Taps stay inside the square
-// (clamped to its edge): neighbouring maps in the layer are other lights' or cascades'.
+// (clamped to its edge): neighbouring maps in the layer are other lights' or cascades'. Each
+// tap reads its texel's centre through a NEAREST sampler, where llvmpipe runs texelFetch slower.
 #include "moments.glsl"
 
 #if defined(ROWS)
@@ -22,15 +23,20 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 lo = uSquare.xy, hi = uSquare.xy + uSquare.z - 1;
     vec4 sum = vec4(0.0);
+#if defined(ROWS)
+    vec2 texel = 1.0 / vec2(textureSize(uDepths, 0).xy);
+#else
+    vec2 texel = 1.0 / vec2(textureSize(uRows, 0));
+#endif
     for (int k = -MOMENT_RADIUS; k <= MOMENT_RADIUS; ++k) {
 #if defined(ROWS)
         ivec2 q = ivec2(clamp(p.x + k, lo.x, hi.x), p.y);
-        float stored = texelFetch(uDepths, ivec3(q, uSquare.w), 0).r;
+        float stored = texture(uDepths, vec3((vec2(q) + 0.5) * texel, uSquare.w)).r;
         sum += depthMoments(
             momentDepth(stored, uDepthRange.x, uDepthRange.y, uDepthRange.z > 0.5));
 #else
         ivec2 q = ivec2(p.x, clamp(p.y + k, lo.y, hi.y));
-        sum += texelFetch(uRows, q, 0);
+        sum += texture(uRows, (vec2(q) + 0.5) * texel);
 #endif
     }
     oMoments = sum / float(2 * MOMENT_RADIUS + 1);

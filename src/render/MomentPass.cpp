@@ -80,7 +80,7 @@ int MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int rad
     glUseProgram(program(mFilter, false, radius).id());
     glUniform4iv(0, 1, &square[0]);
     glBindTextureUnit(0, mRows.id());
-    glBindSampler(0, 0);
+    glBindSampler(0, mStored.id());  // NEAREST: the shader reads texel centres
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return 2;
 }
