@@ -283,7 +283,11 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
         return 1.0;
     }
 #endif
+#ifdef RECEIVER_ONLY
+    float rounding = 0.0;  // the receiver is in no map: no rounding of its own to cover
+#else
     float rounding = mapRounding(light, wsPosition + offset, shadowCoord.w, coord.z);
+#endif
     float reference = coord.z - depthTolerance(light, max(uDepthAware.y, rounding));
     // The light's map covers [origin, origin + uvScale] of the layer; keep every tap inside.
     vec2 origin = light.placement.xy;

@@ -81,7 +81,7 @@ MainPass::MainPass() {
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
                                      glm::ivec4 counts, bool visibilityPass, bool material,
-                                     bool floor) {
+                                     bool floor, bool receiverOnly) {
     // Every choice that selects a variant, packed in one number: looking a program up costs
     // no allocation; the defines are spelled out only to build a new one.
     const ShadowOptions& so = options.shadow;
@@ -103,7 +103,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(std::max(counts.x, 0)) << 38 | std::uint64_t(std::max(counts.y, 0)) << 42 |
         std::uint64_t(std::max(counts.z, 0)) << 46 | std::uint64_t(std::max(counts.w, 0)) << 50 |
         std::uint64_t(in.pointFaces) << 54 | std::uint64_t(in.constantFalloff) << 55 |
-        std::uint64_t(in.noSpecular) << 56;
+        std::uint64_t(in.noSpecular) << 56 | std::uint64_t(receiverOnly) << 57;
     static_assert(kMaxUnrolledLights < 16, "a count must fit the key's four bits");
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
@@ -161,8 +161,12 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     }
     if (handCompare(s)) defines.push_back("HAND_COMPARE");
     if (nearestHandCompare(s)) defines.push_back("MAP_NEAREST");
-    if (s.receiverPlane) defines.push_back("RECEIVER_PLANE");
-    if (s.normalOffset > 0.0f) defines.push_back("NORMAL_OFFSET");
+    // An object that casts no shadow is in no map, so nothing there can be itself: its
+    // lookups need no tolerance against self-shadowing (the receiver plane, the normal offset,
+    // the rounding bound), only the comparison.
+    if (receiverOnly) defines.push_back("RECEIVER_ONLY");
+    if (s.receiverPlane && !receiverOnly) defines.push_back("RECEIVER_PLANE");
+    if (s.normalOffset > 0.0f && !receiverOnly) defines.push_back("NORMAL_OFFSET");
     if (standInLift(s)) defines.push_back("STAND_IN_LIFT");
     if (options.debugView == DebugView::Cascades) defines.push_back("DEBUG_CASCADES");
     if (in.viewDepth) defines.push_back("CONTACT_SHADOWS");
@@ -319,16 +323,23 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
                          const FrameUniforms& u, bool visibilityPass, bool floor) {
     const MainPassInputs& in = *u.in;
     const glm::ivec4 counts = unrolledCounts(u.ranges, u.first, options.shadow.enabled);
-    bool culling = true, material = false;
+    bool culling = true, material = false, receiverOnly = false;
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     useProgram(program(options, in, counts, visibilityPass, false, floor), u);
     GLuint texture = ~0u;
+    // Receives shadows and casts none (a ground added by --ground, glmark2's).
+    auto onlyReceives = [&](const DrawItem& item) {
+        return options.shadow.enabled && item.receives && !item.casts;
+    };
     // Sets the state `item` needs.
     auto setState = [&](const DrawItem& item) {
-        if (item.materialPath != material) {
+        if (item.materialPath != material || onlyReceives(item) != receiverOnly) {
             material = item.materialPath;
-            useProgram(program(options, in, counts, visibilityPass, material && !floor, floor), u);
+            receiverOnly = onlyReceives(item);
+            useProgram(program(options, in, counts, visibilityPass, material && !floor, floor,
+                               receiverOnly),
+                       u);
         }
         if (material && scene.textureOf(item) != texture) {
             texture = scene.textureOf(item);
@@ -347,8 +358,9 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         if (items[i].alphaMode != AlphaMode::Blend) {
             const DrawItem& item = items[i];
-            const bool differs =
-                item.materialPath != material || (material && scene.textureOf(item) != texture);
+            const bool differs = item.materialPath != material ||
+                                 onlyReceives(item) != receiverOnly ||
+                                 (material && scene.textureOf(item) != texture);
             if (differs) {  // the run so far is drawn in the state it was set up for
                 scene.drawRange(runStart, runLength);
                 runStart = i;

@@ -109,8 +109,10 @@ private:
                    bool visibilityPass, bool floor);
     // `material`: the MATERIAL_PATH variant (textures, masks, blending). `counts`: the draw's
     // lights of each kind when its loops are written out per light, or all -1.
+    // `receiverOnly`: the variant for objects that receive shadows but cast none (RECEIVER_ONLY).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
-                               glm::ivec4 counts, bool visibilityPass, bool material, bool floor);
+                               glm::ivec4 counts, bool visibilityPass, bool material, bool floor,
+                               bool receiverOnly = false);
     void uploadLights(const std::vector<GpuLight>& lights, const std::vector<std::int32_t>& order);
     bool bindMaps(const MainPassInputs& in, const ShadowOptions& so);
 
