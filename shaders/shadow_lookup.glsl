@@ -40,9 +40,10 @@ layout(binding = 0) uniform sampler2DArrayShadow uShadowMaps;
 float compareDepth(vec2 uv, float layer, float reference) {
     return texture(uShadowMaps, vec4(uv, layer, reference));
 }
-#if defined(FILTER_PCSS) || defined(RECEIVER_PLANE)
+#if defined(FILTER_PCSS) || defined(RECEIVER_PLANE) || defined(FLAT_GATHERS)
 // PCSS's blocker search and the receiver plane's gathers read stored depth: the same maps
-// through a NEAREST sampler without comparison.
+// through a NEAREST sampler without comparison. FLAT_GATHERS: a receiver-only object's PCF
+// reads them the same way, with one reference for every texel (MainPass).
 layout(binding = 2) uniform sampler2DArray uShadowDepths;
 float rawDepth(vec2 uv, float layer) {
     return texture(uShadowDepths, vec3(uv, layer)).r;
@@ -161,7 +162,7 @@ const float kCubeGrazingShift = kGrazingShift;
 const float kCubeGrazingShift = 0.0;
 #endif
 
-#if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
+#if (defined(RECEIVER_PLANE) || defined(FLAT_GATHERS)) && !defined(HAND_COMPARE) && \
     (defined(FILTER_PCF) || defined(FILTER_HW2X2))
 // PCF over whole texels: the footprint of a K x K box of bilinear taps is (K + 1)^2 texels
 // with tent weights (1 - f, 1, ..., 1, f) per axis; it is read by 2x2 gathers, and every
@@ -331,6 +332,9 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 #if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
     (defined(FILTER_PCF) || defined(FILTER_HW2X2))
     return gatherPcf(uv, layer, reference, g, full, spread, texelUv, origin, uvScale);
+#elif defined(FLAT_GATHERS) && !defined(HAND_COMPARE) && \
+    (defined(FILTER_PCF) || defined(FILTER_HW2X2))
+    return gatherPcf(uv, layer, reference, vec2(0.0), vec2(0.0), 0.0, texelUv, origin, uvScale);
 #elif defined(FILTER_PCF)
     float sum = 0.0;
     const int r = PCF_SIZE / 2;

@@ -165,6 +165,9 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     // lookups need no tolerance against self-shadowing (the receiver plane, the normal offset,
     // the rounding bound), only the comparison.
     if (receiverOnly) defines.push_back("RECEIVER_ONLY");
+    // ...but its PCF still reads 2x2 texels per gather where the frame binds the raw depths
+    // for the receiver plane (the comparison sampler's 9 bilinear taps cost more).
+    if (receiverOnly && s.receiverPlane) defines.push_back("FLAT_GATHERS");
     if (s.receiverPlane && !receiverOnly) defines.push_back("RECEIVER_PLANE");
     if (s.normalOffset > 0.0f && !receiverOnly) defines.push_back("NORMAL_OFFSET");
     if (standInLift(s)) defines.push_back("STAND_IN_LIFT");
