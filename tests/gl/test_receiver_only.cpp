@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "GlTest.h"
+#include "GroundScene.h"
 #include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
@@ -13,14 +14,8 @@ namespace {
 
 // Posts and a block on a ground that casts nothing.
 Scene postsOnAReceivingGround(const Light& light) {
-    Scene s;
-    s.name = "posts on a receiving ground";
-    Material m;
-    m.baseColour = glm::vec3(0.8f);
-    s.materials.push_back(m);
-    s.meshes.push_back(mesh::box("ground", {0.0f, -0.05f, 0.0f}, {30.0f, 0.1f, 30.0f}));
-    s.objects.push_back({"ground", 0, 0, glm::mat4(1.0f), {}, true, true});
-    s.objects.back().castsShadows = false;
+    Scene s = sceneWithGround("posts on a receiving ground", 30.0f);
+    s.objects.front().castsShadows = false;
     for (int i = 0; i < 4; ++i) {
         s.meshes.push_back(
             mesh::box("post", {-3.0f + 2.0f * float(i), 1.0f, -1.0f}, {0.2f, 2.0f, 0.2f}));

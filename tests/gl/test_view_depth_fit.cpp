@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "GlTest.h"
+#include "GroundScene.h"
 #include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
@@ -13,13 +14,7 @@ namespace {
 // A 400 x 400 ground with a row of posts along z and a sun; the camera stands among them,
 // a wall 40 ahead hides the rest of the ground (which the view frustum still holds).
 Scene postsOnAWideGround(bool wall = true) {
-    Scene s;
-    s.name = "posts on a wide ground";
-    Material m;
-    m.baseColour = glm::vec3(0.8f);
-    s.materials.push_back(m);
-    s.meshes.push_back(mesh::box("ground", {0.0f, -0.05f, 0.0f}, {400.0f, 0.1f, 400.0f}));
-    s.objects.push_back({"ground", 0, 0, glm::mat4(1.0f), {}, true, true});
+    Scene s = sceneWithGround("posts on a wide ground", 400.0f);
     for (int i = 0; i < 12; ++i) {
         s.meshes.push_back(mesh::box("post", {0.0f, 1.0f, -3.0f * float(i)}, {0.15f, 2.0f, 0.15f}));
         s.objects.push_back(
