@@ -58,6 +58,57 @@ glm::ivec4 unrolledCounts(glm::ivec4 ends, int first, bool shadows) {
     return total <= MainPass::kMaxUnrolledLights ? counts : glm::ivec4(-1);
 }
 
+// The lookup's filter, kernel width, stored-depth encoding and how it compares.
+void addLookupDefines(const ShadowOptions& s, std::vector<std::string>& defines) {
+    switch (s.filter) {
+        case ShadowFilter::Pcf:
+            defines.push_back("FILTER_PCF");
+            break;
+        case ShadowFilter::Poisson:
+            defines.push_back("FILTER_POISSON");
+            break;
+        case ShadowFilter::Hw2x2:
+            defines.push_back("FILTER_HW2X2");
+            break;
+        case ShadowFilter::None:
+            defines.push_back("FILTER_NONE");
+            break;
+        case ShadowFilter::Pcss:
+            defines.push_back("FILTER_PCSS");
+            break;
+        case ShadowFilter::Evsm2:
+            defines.push_back("FILTER_MOMENTS");
+            defines.push_back("MOMENTS_EVSM2");
+            break;
+        case ShadowFilter::Evsm4:
+            defines.push_back("FILTER_MOMENTS");
+            defines.push_back("MOMENTS_EVSM4");
+            break;
+        case ShadowFilter::Msm:
+            defines.push_back("FILTER_MOMENTS");
+            defines.push_back("MOMENTS_MSM");
+            break;
+    }
+    if (kernelFilter(s)) {
+        defines.push_back("PCF_SIZE " + std::to_string(s.pcfSize));
+    }
+    switch (s.depthFormat) {
+        case DepthFormat::R8:
+            defines.push_back("PACK_R8");
+            break;
+        case DepthFormat::Rgba8Packed256:
+            defines.push_back("PACK_256");
+            break;
+        case DepthFormat::Rgba8Packed255:
+            defines.push_back("PACK_255");
+            break;
+        default:
+            break;
+    }
+    if (handCompare(s)) defines.push_back("HAND_COMPARE");
+    if (nearestHandCompare(s)) defines.push_back("MAP_NEAREST");
+}
+
 // `name`(BODY, first, LOOKUP, KIND) as BODY(first + i, LOOKUP, KIND) for i below `count`.
 std::string unrolledLoop(const char* name, int count) {
     std::string d = std::string(name) + "(BODY, first, LOOKUP, KIND)";
@@ -114,53 +165,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     const ShadowOptions& s = so;
     if (!s.enabled) defines.push_back("SHADOWS_OFF");
     if (s.outside == OutsidePolicy::Clamp) defines.push_back("OUTSIDE_CLAMP");
-    switch (s.filter) {
-        case ShadowFilter::Pcf:
-            defines.push_back("FILTER_PCF");
-            break;
-        case ShadowFilter::Poisson:
-            defines.push_back("FILTER_POISSON");
-            break;
-        case ShadowFilter::Hw2x2:
-            defines.push_back("FILTER_HW2X2");
-            break;
-        case ShadowFilter::None:
-            defines.push_back("FILTER_NONE");
-            break;
-        case ShadowFilter::Pcss:
-            defines.push_back("FILTER_PCSS");
-            break;
-        case ShadowFilter::Evsm2:
-            defines.push_back("FILTER_MOMENTS");
-            defines.push_back("MOMENTS_EVSM2");
-            break;
-        case ShadowFilter::Evsm4:
-            defines.push_back("FILTER_MOMENTS");
-            defines.push_back("MOMENTS_EVSM4");
-            break;
-        case ShadowFilter::Msm:
-            defines.push_back("FILTER_MOMENTS");
-            defines.push_back("MOMENTS_MSM");
-            break;
-    }
-    if (kernelFilter(s)) {
-        defines.push_back("PCF_SIZE " + std::to_string(s.pcfSize));
-    }
-    switch (s.depthFormat) {
-        case DepthFormat::R8:
-            defines.push_back("PACK_R8");
-            break;
-        case DepthFormat::Rgba8Packed256:
-            defines.push_back("PACK_256");
-            break;
-        case DepthFormat::Rgba8Packed255:
-            defines.push_back("PACK_255");
-            break;
-        default:
-            break;
-    }
-    if (handCompare(s)) defines.push_back("HAND_COMPARE");
-    if (nearestHandCompare(s)) defines.push_back("MAP_NEAREST");
+    addLookupDefines(s, defines);
     // An object that casts no shadow is in no map, so nothing there can be itself: its
     // lookups need no tolerance against self-shadowing (the receiver plane, the normal offset,
     // the rounding bound), only the comparison.
