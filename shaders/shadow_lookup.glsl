@@ -357,6 +357,8 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 #elif defined(FILTER_PCSS)
 #if defined(RECEIVER_PLANE)
     vec3 plane = vec3(g, spread);
+#elif defined(RECEIVER_ONLY)
+    vec3 plane = vec3(0.0);  // in no map: every tap compares against the point's own depth
 #else
     vec3 plane = vec3(0.0, 0.0, -1.0);  // the tap-distance slope tolerance instead
 #endif
