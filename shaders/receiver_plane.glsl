@@ -121,7 +121,7 @@ vec4 planeAlong4(vec4 capped, vec4 full, float approach) {
 // division per normalize), each several times the cost of a multiply-add on every pixel, so
 // this runs on as few as it can: the tangents are not normalised (any two directions across
 // the plane do), the two steps are not divided by their w (the solve below is homogeneous in
-// each step, so their scale cancels out), and the tests compare squares. One division and one
+// each step, so their scale cancels out), and the tests compare squares. Two divisions and one
 // root where it had eleven and four: mixed-lights' main pass took 0.96 of the time, and with
 // mapRounding's bound and findReceiverPlane's test also rid of roots, glmark2's horse's 0.98
 // (LP_NUM_THREADS=1, scripts/ab-bench.sh): less than the count suggests.

@@ -168,7 +168,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     addLookupDefines(s, defines);
     // An object that casts no shadow is in no map, so nothing there can be itself: its
     // lookups need no tolerance against self-shadowing (the receiver plane, the normal offset,
-    // the rounding bound), only the comparison.
+    // a single map's rounding bound; a cube keeps its own), only the comparison.
     if (receiverOnly) defines.push_back("RECEIVER_ONLY");
     // ...but its PCF still reads 2x2 texels per gather where the frame binds the raw depths
     // for the receiver plane (the comparison sampler's 9 bilinear taps cost more).
