@@ -251,6 +251,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
             mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
             mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};
         DrawItem& item = mItems[i];
+        item.specular = mat.specular > 0.0f && !mat.unlit;
         item.standInFirstIndexByte = standIns[o.mesh].first;
         item.standInIndexCount = standIns[o.mesh].second;
         // A simplified stand-in is not split: culled only when its whole mesh is a solid.

@@ -57,6 +57,9 @@ struct DrawItem {
     AlphaMode alphaMode = AlphaMode::Opaque;
     GLuint texture = 0;         // base colour texture, 0 = none
     bool materialPath = false;  // textured or not opaque: needs the material shader variants
+    // Its material has a specular highlight (and is lit): without one, the main pass draws it
+    // with a program that drops the specular term (MainPass, NO_SPECULAR).
+    bool specular = true;
     // The stand-in caster shadow passes draw (--caster-detail; the full mesh at 1).
     GLsizei standInIndexCount = 0;
     std::size_t standInFirstIndexByte = 0;

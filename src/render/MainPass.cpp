@@ -164,23 +164,26 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
                          const FrameUniforms& u, bool visibilityPass, bool floor) {
     const MainPassInputs& in = *u.in;
     const glm::ivec4 counts = unrolledCounts(u.ranges, u.first, options.shadow.enabled);
-    bool culling = true, material = false, receiverOnly = false;
+    bool culling = true, material = false;
+    // Receives shadows and casts none (a ground added by --ground, glmark2's); has no
+    // highlight (glmark2's ground again): each drops what it does not need from its program.
+    auto variantOf = [&](const DrawItem& item) {
+        return ItemVariant{options.shadow.enabled && item.receives && !item.casts,
+                           in.noSpecular || !item.specular};
+    };
+    ItemVariant variant{false, in.noSpecular};
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    useProgram(program(options, in, counts, visibilityPass, false, floor), u);
+    useProgram(program(options, in, counts, visibilityPass, false, floor, variant), u);
     GLuint texture = ~0u;
-    // Receives shadows and casts none (a ground added by --ground, glmark2's).
-    auto onlyReceives = [&](const DrawItem& item) {
-        return options.shadow.enabled && item.receives && !item.casts;
-    };
     // Sets the state `item` needs.
     auto setState = [&](const DrawItem& item) {
-        if (item.materialPath != material || onlyReceives(item) != receiverOnly) {
+        if (item.materialPath != material || !(variantOf(item) == variant)) {
             material = item.materialPath;
-            receiverOnly = onlyReceives(item);
-            useProgram(program(options, in, counts, visibilityPass, material && !floor, floor,
-                               receiverOnly),
-                       u);
+            variant = variantOf(item);
+            useProgram(
+                program(options, in, counts, visibilityPass, material && !floor, floor, variant),
+                u);
         }
         if (material && scene.textureOf(item) != texture) {
             texture = scene.textureOf(item);
@@ -199,8 +202,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         if (items[i].alphaMode != AlphaMode::Blend) {
             const DrawItem& item = items[i];
-            const bool differs = item.materialPath != material ||
-                                 onlyReceives(item) != receiverOnly ||
+            const bool differs = item.materialPath != material || !(variantOf(item) == variant) ||
                                  (material && scene.textureOf(item) != texture);
             if (differs) {  // the run so far is drawn in the state it was set up for
                 scene.drawRange(runStart, runLength);

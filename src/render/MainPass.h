@@ -107,12 +107,17 @@ private:
     void useProgram(const gl::Program& p, const FrameUniforms& u);
     void drawItems(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
                    bool visibilityPass, bool floor);
+    // What an item's own content leaves out of its program, beyond what the frame's does.
+    struct ItemVariant {
+        bool receiverOnly = false;  // receives shadows, casts none (RECEIVER_ONLY)
+        bool noSpecular = false;  // no highlight: the frame has none, or its material (NO_SPECULAR)
+        bool operator==(const ItemVariant&) const = default;
+    };
     // `material`: the MATERIAL_PATH variant (textures, masks, blending). `counts`: the draw's
     // lights of each kind when its loops are written out per light, or all -1.
-    // `receiverOnly`: the variant for objects that receive shadows but cast none (RECEIVER_ONLY).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
                                glm::ivec4 counts, bool visibilityPass, bool material, bool floor,
-                               bool receiverOnly = false);
+                               ItemVariant item);
     void uploadLights(const std::vector<GpuLight>& lights, const std::vector<std::int32_t>& order);
     bool bindMaps(const MainPassInputs& in, const ShadowOptions& so);
 

@@ -95,7 +95,8 @@ std::string unrolledLoop(const char* name, int count) {
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
                                      glm::ivec4 counts, bool visibilityPass, bool material,
-                                     bool floor, bool receiverOnly) {
+                                     bool floor, ItemVariant item) {
+    const bool receiverOnly = item.receiverOnly;
     // Every choice that selects a variant, packed in one number: looking a program up costs
     // no allocation; the defines are spelled out only to build a new one.
     const ShadowOptions& so = options.shadow;
@@ -117,7 +118,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         std::uint64_t(std::max(counts.x, 0)) << 38 | std::uint64_t(std::max(counts.y, 0)) << 42 |
         std::uint64_t(std::max(counts.z, 0)) << 46 | std::uint64_t(std::max(counts.w, 0)) << 50 |
         std::uint64_t(in.pointFaces) << 54 | std::uint64_t(in.constantFalloff) << 55 |
-        std::uint64_t(in.noSpecular) << 56 | std::uint64_t(receiverOnly) << 57;
+        std::uint64_t(item.noSpecular) << 56 | std::uint64_t(receiverOnly) << 57;
     static_assert(kMaxUnrolledLights < 16, "a count must fit the key's four bits");
     if (auto it = mPrograms.find(key); it != mPrograms.end()) return it->second;
 
@@ -149,7 +150,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (in.hasCascades) defines.push_back("HAS_CASCADES");
     if (in.pointFaces) defines.push_back("POINT_FACES");
     if (in.constantFalloff) defines.push_back("CONSTANT_FALLOFF");
-    if (in.noSpecular) defines.push_back("NO_SPECULAR");
+    if (item.noSpecular) defines.push_back("NO_SPECULAR");
     if (in.singleMapKind >= 0) {
         defines.push_back("SINGLE_MAP_KIND " + std::to_string(in.singleMapKind));
     }

@@ -107,5 +107,28 @@ TEST(LightKinds, ObjectsWithoutHighlightsLightTheSameInEitherProgram) {
     }
 }
 
+// Per draw: objects without a highlight take the program without specular terms even where
+// another object has one (glmark2's ground beside its horse), and light as the general
+// program lights them; the object with the highlight keeps it.
+TEST(LightKinds, ObjectsWithoutHighlightsBesideOneWithLightTheSame) {
+    for (const char* name : {"tutorial-room", "mixed-lights"}) {
+        Scene mixed = builtinScene(name);
+        ASSERT_GE(mixed.materials.size(), 2u);
+        for (Material& m : mixed.materials)
+            m.specular = 0.0f;
+        mixed.revision.bump();  // materials edited in place (Scene::revision)
+        const Image dull = renderAt(mixed, 128);
+        mixed.materials.front().specular = 1.0f;
+        mixed.revision.bump();
+        Scene general = mixed;  // every object in the general program
+        for (std::size_t i = 1; i < general.materials.size(); ++i)
+            general.materials[i].specular = 1e-30f;
+        general.revision.bump();
+        const Image shiny = renderAt(mixed, 128);
+        EXPECT_GT(differingBytes(shiny, dull), 0) << name << ": no highlight in view";
+        EXPECT_EQ(differingBytes(shiny, renderAt(general, 128)), 0) << name;
+    }
+}
+
 }  // namespace
 }  // namespace gnomon::test
