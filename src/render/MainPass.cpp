@@ -166,7 +166,8 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     const glm::ivec4 counts = unrolledCounts(u.ranges, u.first, options.shadow.enabled);
     bool culling = true, material = false;
     // Receives shadows and casts none (a ground added by --ground, glmark2's); has no
-    // highlight (glmark2's ground again): each drops what it does not need from its program.
+    // highlight (gnomon's ground under a glTF model, whose materials all have one): each
+    // drops what it does not need from its program.
     auto variantOf = [&](const DrawItem& item) {
         return ItemVariant{options.shadow.enabled && item.receives && !item.casts,
                            in.noSpecular || !item.specular};
