@@ -18,11 +18,16 @@ gnomon=$root/build/release/apps/gnomon/gnomon
 "$root/scripts/deps.sh" glmark2-x11 glmark2-data
 [[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: ROUNDS must be a positive number" >&2; exit 2; }
 
+# gnomon keeps its freed heap (apps/gnomon/main.cpp: llvmpipe allocates and frees on every
+# draw, and glibc's default trimming makes the kernel fault those pages in again); glmark2 runs
+# with the same thresholds, so both pay the same for memory. Without them glmark2 ran at either
+# ~5 or ~12 ms a frame depending on when glibc raised its own thresholds (docs/performance.md).
+heap=glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=67108864
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for ((i = 1; i <= rounds; ++i)); do
     # glmark2 prints "[shadow] ...: FPS: 147 FrameTime: 6.819 ms" (mean over its duration).
-    xvfb-run -a -s "-screen 0 1024x768x24" glmark2 -b shadow:duration=5 --size 800x600 \
+    GLIBC_TUNABLES=$heap xvfb-run -a -s "-screen 0 1024x768x24" glmark2 -b shadow:duration=5 --size 800x600 \
         >"$work/glmark2-$i.txt" 2>&1 || { cat "$work/glmark2-$i.txt" >&2; exit 1; }
     sed -n 's/.*\[shadow\].*FrameTime: \([0-9.]*\) ms.*/\1/p' "$work/glmark2-$i.txt" \
         >"$work/glmark2-$i.ms"
