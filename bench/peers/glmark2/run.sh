@@ -27,8 +27,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for ((i = 1; i <= rounds; ++i)); do
     # glmark2 prints "[shadow] ...: FPS: 147 FrameTime: 6.819 ms" (mean over its duration).
-    GLIBC_TUNABLES=$heap xvfb-run -a -s "-screen 0 1024x768x24" glmark2 -b shadow:duration=5 --size 800x600 \
-        >"$work/glmark2-$i.txt" 2>&1 || { cat "$work/glmark2-$i.txt" >&2; exit 1; }
+    GLIBC_TUNABLES=$heap xvfb-run -a -s "-screen 0 1024x768x24" \
+        glmark2 -b shadow:duration=5 --size 800x600 >"$work/glmark2-$i.txt" 2>&1 \
+        || { cat "$work/glmark2-$i.txt" >&2; exit 1; }
     sed -n 's/.*\[shadow\].*FrameTime: \([0-9.]*\) ms.*/\1/p' "$work/glmark2-$i.txt" \
         >"$work/glmark2-$i.ms"
     [[ -s $work/glmark2-$i.ms ]] || { echo "run.sh: no FrameTime in glmark2's output:" >&2
