@@ -12,9 +12,6 @@
 #include <filesystem>
 #include <string>
 #include <vector>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 
 #include "BenchCommand.h"
 #include "HelpFormatter.h"
@@ -221,24 +218,12 @@ bool unknownCommand(int argc, char** argv, const CLI::App& app) {
     return false;
 }
 
-// Mesa's llvmpipe allocates and frees buffers of its own on every draw. With glibc's
-// defaults the freed top of the heap goes back to the system each time and comes back as
-// fresh pages, which the kernel faults in and zeroes: on Sponza's atrium with 512² maps,
-// 2 530 brk calls in 20 frames and a frame of 90 ms, 57 ms with the heap kept (strace -c;
-// docs/performance.md, "The heap kept between draws"). Fixed thresholds (where glibc's own
-// dynamic ones stop) keep it from the first frame; peak memory is the same. A host embedding
-// the library may want the same.
-void keepFreedHeap() {
-#if defined(__GLIBC__)
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 64 << 20);
-#endif
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    keepFreedHeap();
+    // llvmpipe's per-draw buffers would otherwise make the kernel fault pages in on every draw
+    // (gnomon.h; docs/performance.md, "The heap kept between draws").
+    gnomon::keepFreedHeap();
     CLI::App app{"gnomon: real-time shadows you can measure (OpenGL 4.5 core, headless)"};
     app.require_subcommand(1);
     // Global flags are accepted after the command too (`gnomon render --verbose ...`): a

@@ -18,7 +18,7 @@ gnomon=$root/build/release/apps/gnomon/gnomon
 "$root/scripts/deps.sh" glmark2-x11 glmark2-data
 [[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: ROUNDS must be a positive number" >&2; exit 2; }
 
-# gnomon keeps its freed heap (apps/gnomon/main.cpp: llvmpipe allocates and frees on every
+# gnomon keeps its freed heap (gnomon::keepFreedHeap: llvmpipe allocates and frees on every
 # draw, and glibc's default trimming makes the kernel fault those pages in again); glmark2 runs
 # with the same thresholds, so both pay the same for memory. Without them glmark2 ran at either
 # ~5 or ~12 ms a frame depending on when glibc raised its own thresholds (docs/performance.md).
