@@ -200,14 +200,12 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     mBounds = Aabb();
     mCasterBounds = Aabb();
     mHasUnlit = false;
-    mHasSpecular = false;
     mHasBlended = false;
     mHasBlendedCasters = false;
     for (size_t i = 0; i < n; ++i) {
         const Object& o = scene.objects[i];
         const Material& mat = scene.materials[o.material];
         mHasUnlit = mHasUnlit || mat.unlit;
-        mHasSpecular = mHasSpecular || (mat.specular > 0.0f && !mat.unlit);
         mHasBlended = mHasBlended || mat.alphaMode == AlphaMode::Blend;
         mHasBlendedCasters =
             mHasBlendedCasters || (mat.alphaMode == AlphaMode::Blend && o.castsShadows);

@@ -119,8 +119,6 @@ public:
     const Aabb& casterBounds() const { return mCasterBounds; }
     // Does any object have an unlit material (shadows darken it whatever the light's falloff)?
     bool hasUnlit() const { return mHasUnlit; }
-    // Does any lit object have a specular highlight (main pass: none drops its pow per light)?
-    bool hasSpecular() const { return mHasSpecular; }
     // Does any item blend (drawn over the view's depth, so not within it)?
     bool hasBlended() const { return mHasBlended; }
     // Does any blended item tint the light through it with these options (coloured shadows)?
@@ -193,7 +191,7 @@ private:
     // ones first (splitForCulling).
     std::vector<CullingSplit> mSplits;
     Aabb mBounds, mCasterBounds;
-    bool mHasUnlit = false, mHasSpecular = false, mHasBlended = false, mHasBlendedCasters = false;
+    bool mHasUnlit = false, mHasBlended = false, mHasBlendedCasters = false;
     std::uint64_t mRevision = 0;
     std::uint64_t mSyncedRevision = 0;  // the Scene::revision and time last synced
     double mSyncedSeconds = 0.0;

@@ -169,10 +169,16 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     // highlight (gnomon's ground under a glTF model, whose materials all have one): each
     // drops what it does not need from its program.
     auto variantOf = [&](const DrawItem& item) {
-        return ItemVariant{options.shadow.enabled && item.receives && !item.casts,
-                           in.noSpecular || !item.specular};
+        return ItemVariant{options.shadow.enabled && item.receives && !item.casts, !item.specular};
     };
-    ItemVariant variant{false, in.noSpecular};
+    // Starts in the first opaque item's variant, so no program is built that nothing draws.
+    ItemVariant variant;
+    for (const DrawItem& item : scene.items()) {
+        if (item.alphaMode != AlphaMode::Blend) {
+            variant = variantOf(item);
+            break;
+        }
+    }
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     useProgram(program(options, in, counts, visibilityPass, false, floor, variant), u);

@@ -59,8 +59,6 @@ struct MainPassInputs {
     // No light falls off with distance (LightPlan::constantFalloff): the program drops the
     // distance terms.
     bool constantFalloff = false;
-    // No lit object has a specular highlight (GpuScene::hasSpecular): the program drops it.
-    bool noSpecular = false;
     const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
     const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
     // The 2D maps' blurred moments (MomentPass) for the moment filters; null otherwise.
@@ -110,7 +108,7 @@ private:
     // What an item's own content leaves out of its program, beyond what the frame's does.
     struct ItemVariant {
         bool receiverOnly = false;  // receives shadows, casts none (RECEIVER_ONLY)
-        bool noSpecular = false;  // no highlight: the frame has none, or its material (NO_SPECULAR)
+        bool noSpecular = false;    // its material has no highlight (NO_SPECULAR)
         bool operator==(const ItemVariant&) const = default;
     };
     // `material`: the MATERIAL_PATH variant (textures, masks, blending). `counts`: the draw's

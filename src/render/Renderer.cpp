@@ -269,7 +269,6 @@ struct Renderer::Impl {
         in.pointFaces = plan.hasPointFaces();
         in.singleMapKind = plan.singleMapKind();
         in.constantFalloff = plan.constantFalloff();
-        in.noSpecular = !scene.hasSpecular();
         // Only maps made this frame: an array left from another format must not be bound.
         bool any2D = false, anyCube = false;
         const std::vector<render::ShadowedLight>& shadowed = plan.shadowed();

@@ -4,7 +4,7 @@
 // kind that adds nothing (intensity 0, with its own map) turns the specialised program into
 // the mixed one and must leave every byte of the image as it was. Likewise a frame whose
 // lights have no distance falloff (LightPlan::constantFalloff), or whose lit objects have no
-// specular highlight (GpuScene::hasSpecular), against the general program.
+// specular highlight (DrawItem::specular, per draw), against the general program.
 #include <gtest/gtest.h>
 
 #include "GlTest.h"
