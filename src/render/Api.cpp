@@ -5,7 +5,7 @@
 
 namespace gnomon {
 glm::mat4 cameraClipFromWorld(const Camera& camera, float aspect) {
-    return shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
+    return gnomon::clipFromView(camera, aspect) * gnomon::viewFromWorld(camera);
 }
 const char* version() {
     return GNOMON_VERSION;

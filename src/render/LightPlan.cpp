@@ -127,7 +127,7 @@ void LightPlan::planLights(const Scene& s, const RenderOptions& options, const G
     }
     mFit.viewKnown = true;
     mFit.viewClipFromWorld =
-        shadow::clipFromView(mFitCamera, aspect) * shadow::viewFromWorld(mFitCamera);
+        gnomon::clipFromView(mFitCamera, aspect) * gnomon::viewFromWorld(mFitCamera);
     mFit.samples = samples;
     mFit.stabilise = options.shadow.stabilise;
     for (std::size_t i = 0; i < s.lights.size(); ++i) {

@@ -175,7 +175,7 @@ struct Renderer::Impl {
         const Camera view = options.debugView == DebugView::LightFrusta
                                 ? s.camera
                                 : shadow::depthFitted(s.camera, scene.bounds());
-        const glm::mat4 viewFromWorld = shadow::viewFromWorld(view);
+        const glm::mat4 viewFromWorld = gnomon::viewFromWorld(view);
         std::vector<PassTiming> keep = std::move(stats.passes);
         keep.clear();
         stats = {};
@@ -248,8 +248,8 @@ struct Renderer::Impl {
         bindClearedTarget(options.width, options.height, in.depthReady);
         stats.mainFromViewDepth = in.depthReady;
         in.viewFromWorld = viewFromWorld;
-        in.clipFromView = shadow::clipFromView(view, aspect);
-        const glm::mat4 fitView = fitCamera ? shadow::viewFromWorld(*fitCamera) : viewFromWorld;
+        in.clipFromView = gnomon::clipFromView(view, aspect);
+        const glm::mat4 fitView = fitCamera ? gnomon::viewFromWorld(*fitCamera) : viewFromWorld;
         in.cascadeDepth = -glm::vec4(fitView[0][2], fitView[1][2], fitView[2][2], fitView[3][2]);
         in.ambient = s.ambient;
         in.lights = &plan.records();

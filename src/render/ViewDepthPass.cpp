@@ -100,8 +100,8 @@ const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Ca
     if (grid.size != mGrid.size || !mTarget) allocate(grid);
     mGrid = grid;
     // The main pass's own matrices (Renderer), so its depths and these are the same.
-    mViewFromWorld = shadow::viewFromWorld(camera);
-    mClipFromView = shadow::clipFromView(camera, aspect);
+    mViewFromWorld = gnomon::viewFromWorld(camera);
+    mClipFromView = gnomon::clipFromView(camera, aspect);
     draw(scene);
     reduce();
     mRead.resize(std::size_t(grid.cells.x) * std::size_t(grid.cells.y));
@@ -116,8 +116,8 @@ const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Ca
 bool ViewDepthPass::holds(const GpuScene& scene, const Camera& camera, int width,
                           int height) const {
     return mValid && mRevision == scene.revision() && mGrid.size == glm::ivec2(width, height) &&
-           mViewFromWorld == shadow::viewFromWorld(camera) &&
-           mClipFromView == shadow::clipFromView(camera, float(width) / float(height));
+           mViewFromWorld == gnomon::viewFromWorld(camera) &&
+           mClipFromView == gnomon::clipFromView(camera, float(width) / float(height));
 }
 
 }  // namespace gnomon::render

@@ -127,8 +127,8 @@ bool cameraSeesScene(const Scene& scene, int width, int height) {
     sceneBounds(scene, lo, hi);
     if (scene.objects.empty() || lo == hi || width <= 0 || height <= 0) return true;
     const glm::mat4 clipFromWorld =
-        shadow::clipFromView(scene.camera, float(width) / float(height)) *
-        shadow::viewFromWorld(scene.camera);
+        gnomon::clipFromView(scene.camera, float(width) / float(height)) *
+        gnomon::viewFromWorld(scene.camera);
     glm::vec4 corners[8];
     for (int c = 0; c < 8; ++c)
         corners[c] = clipFromWorld *

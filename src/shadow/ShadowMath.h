@@ -11,6 +11,7 @@
 
 #include "core/Aabb.h"
 #include "gnomon/Scene.h"
+#include "scene/CameraMath.h"
 #include "shadow/FrustumClip.h"
 #include "shadow/ViewSamples.h"
 
@@ -54,10 +55,6 @@ float cubeStoredDepth(const glm::vec3& lightToPoint, float near, float far);
 // Maps clip-space x, y, z in [-1, 1] (after the divide) to [0, 1] texture coordinates and
 // stored depth: textureFromClip * (x, y, z, 1) = (x/2 + 1/2, ...).
 glm::mat4 textureFromClip();
-
-// A right-handed look-at that survives `up` parallel to the view direction (it then picks
-// the world axis least aligned with the direction).
-glm::mat4 safeLookAt(const glm::vec3& eye, const glm::vec3& centre, const glm::vec3& up);
 
 // What the Fit policy looks at: world boxes of the shadow casters and of the receivers and,
 // when known, the view camera, whose frustum decides which receivers are visible (without it
@@ -169,9 +166,6 @@ LightCameraFrame sampledCascadeFrame(const glm::vec3& direction, const FitScene&
                                      float depthFrom, float depthTo, int mapSize,
                                      HeldExtent* held = nullptr);
 
-// View-camera matrices for an output of `aspect` (width / height).
-glm::mat4 viewFromWorld(const Camera& camera);
-glm::mat4 clipFromView(const Camera& camera, float aspect);
 // `camera` with its near and far planes moved in to the depths `bounds` (world space, all
 // that is drawn) spans in its view, where that is nearer than its own: the depth buffer's
 // precision goes where the scene is. A perspective depth step grows with distance² / near:

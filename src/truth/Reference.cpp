@@ -12,7 +12,7 @@
 
 #include "gnomon/Error.h"
 #include "scene/SceneUtil.h"
-#include "shadow/ShadowMath.h"
+#include "scene/CameraMath.h"
 #include "truth/AlphaRays.h"
 #include "truth/ShadowRays.h"
 
@@ -183,7 +183,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     // of 0.05 and 10^6 (assimp's 2CylinderEngine) left that inverse with too few digits, its
     // rays a little off the pixels the raster samples, and 3 % of the view's shadows scored
     // wrong where thin fins meet their shadows.
-    const glm::mat4 view = shadow::viewFromWorld(camera);
+    const glm::mat4 view = gnomon::viewFromWorld(camera);
     const glm::vec3 right(view[0][0], view[1][0], view[2][0]),
         up(view[0][1], view[1][1], view[2][1]);
     const glm::vec3 ahead = -glm::vec3(view[0][2], view[1][2], view[2][2]);

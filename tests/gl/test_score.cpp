@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "GlTest.h"
-#include "render/ScoreDetail.h"
+#include "lab/ScoreDetail.h"
 #include "scene/MeshBuilder.h"
 
 namespace gnomon::test {

@@ -184,8 +184,8 @@ GeometryShadows classifyPixels(const Scene& scene, const RenderOptions& options,
         lm.axis = -glm::normalize(glm::vec3(worldFromLight[2]));
     }
 
-    const glm::mat4 worldFromClip = glm::inverse(shadow::clipFromView(scene.camera, aspect) *
-                                                 shadow::viewFromWorld(scene.camera));
+    const glm::mat4 worldFromClip = glm::inverse(gnomon::clipFromView(scene.camera, aspect) *
+                                                 gnomon::viewFromWorld(scene.camera));
 
     // One sample: which object the view ray through (px, py) sees and its per-light state.
     struct Sample {

@@ -28,7 +28,7 @@ inline Camera groundCamera() {
 // reduced to (nearest, farthest) per block as the view depth pass's reduction does.
 inline std::vector<glm::vec2> groundRanges(const Camera& camera, const shadow::SampleGrid& grid,
                                            float aspect) {
-    const glm::mat4 clip = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
+    const glm::mat4 clip = gnomon::clipFromView(camera, aspect) * gnomon::viewFromWorld(camera);
     const glm::mat4 worldFromClip = glm::inverse(clip);
     std::vector<glm::vec2> ranges(std::size_t(grid.cells.x * grid.cells.y), glm::vec2(1.0f, 0.0f));
     for (int y = 0; y < grid.size.y; ++y) {
@@ -64,7 +64,7 @@ inline shadow::FitScene groundWithPost(const Camera& camera, shadow::ViewSamples
     scene.receivers = {Aabb{{-half, 0.0f, -half}, {half, 0.0f, half}}};
     scene.casters = {scene.receivers[0], Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}};
     scene.viewKnown = true;
-    scene.viewClipFromWorld = shadow::clipFromView(camera, aspect) * shadow::viewFromWorld(camera);
+    scene.viewClipFromWorld = gnomon::clipFromView(camera, aspect) * gnomon::viewFromWorld(camera);
     scene.samples = &samples;
     return scene;
 }

@@ -55,7 +55,7 @@ TEST(Cascades, SliceIsInsideItsCascade) {
     for (int c = 0; c < 4; ++c) {
         const auto f = shadow::cascadeFrame(kSun, view, 1.0f, splits[size_t(c)],
                                             splits[size_t(c) + 1], scene(), 1024);
-        const glm::mat4 worldFromView = glm::inverse(shadow::viewFromWorld(view));
+        const glm::mat4 worldFromView = glm::inverse(gnomon::viewFromWorld(view));
         const float tanY = std::tan(glm::radians(25.0f));
         for (int i = 0; i < 8; ++i) {
             const float d = (i & 4) ? splits[size_t(c) + 1] : splits[size_t(c)];

@@ -35,7 +35,7 @@ shadow::FitScene blockOnFloor(glm::vec3 centre, bool floorCasts = false, float h
     cam.fovyDegrees = 40.0f;
     cam.near = 0.5f;
     cam.far = 50.0f;
-    s.viewClipFromWorld = shadow::clipFromView(cam, 1.0f) * shadow::viewFromWorld(cam);
+    s.viewClipFromWorld = gnomon::clipFromView(cam, 1.0f) * gnomon::viewFromWorld(cam);
     return s;
 }
 

@@ -43,12 +43,12 @@ Camera bookView() {
 }
 
 TEST(Transforms, ViewFromWorldMatchesHandComputedLookAt) {
-    const glm::mat4 v = shadow::viewFromWorld(bookView());
+    const glm::mat4 v = gnomon::viewFromWorld(bookView());
     EXPECT_PRED_FORMAT3(matNear, v, handBookView(), 1e-5f);
 }
 
 TEST(Transforms, ViewFromWorldPutsEyeAtOriginAndCentreDownMinusZ) {
-    const glm::mat4 v = shadow::viewFromWorld(bookView());
+    const glm::mat4 v = gnomon::viewFromWorld(bookView());
     const glm::vec4 eye = v * glm::vec4(0.0f, 7.0f, 9.0f, 1.0f);
     EXPECT_NEAR(glm::length(glm::vec3(eye)), 0.0f, 1e-5f);
     // The centre lies straight ahead at distance |eye| = sqrt(130).
@@ -75,25 +75,25 @@ TEST(Transforms, PerspectiveMatchesHandComputedValues) {
     expected[2][2] = -1.0202020f;
     expected[3][2] = -2.0202020f;
     expected[2][3] = -1.0f;
-    EXPECT_PRED_FORMAT3(matNear, shadow::clipFromView(c, 3.0f), expected, 1e-5f);
+    EXPECT_PRED_FORMAT3(matNear, gnomon::clipFromView(c, 3.0f), expected, 1e-5f);
 }
 
 TEST(Transforms, PerspectiveAspectComesFromOutputWhenCameraHasNone) {
     Camera c = bookView();  // aspect 0: the output's aspect is used
     // Aspect 2: m[0][0] = 2.4142136 / 2 = 1.2071068, m[1][1] unchanged.
-    const glm::mat4 wide = shadow::clipFromView(c, 2.0f);
+    const glm::mat4 wide = gnomon::clipFromView(c, 2.0f);
     EXPECT_NEAR(wide[0][0], 1.2071068f, 1e-5f);
     EXPECT_NEAR(wide[1][1], 2.4142136f, 1e-5f);
     // A camera with its own aspect ignores the output's.
     c.aspect = 1.0f;
-    const glm::mat4 own = shadow::clipFromView(c, 2.0f);
+    const glm::mat4 own = gnomon::clipFromView(c, 2.0f);
     EXPECT_NEAR(own[0][0], 2.4142136f, 1e-5f);
 }
 
 TEST(Transforms, PerspectiveMapsNearAndFarToMinusOneAndOne) {
     Camera c = bookView();
     c.aspect = 1.0f;
-    const glm::mat4 p = shadow::clipFromView(c, 1.0f);
+    const glm::mat4 p = gnomon::clipFromView(c, 1.0f);
     const glm::vec4 n = p * glm::vec4(0.0f, 0.0f, -1.0f, 1.0f);
     const glm::vec4 f = p * glm::vec4(0.0f, 0.0f, -100.0f, 1.0f);
     EXPECT_NEAR(n.z / n.w, -1.0f, 1e-5f);
@@ -122,8 +122,8 @@ TEST(Transforms, OrthographicMatchesHandComputedValues) {
     expected[3][2] = -1.1052632f;
     expected[3][3] = 1.0f;
     // The output aspect does not stretch an orthographic volume given in numbers.
-    EXPECT_PRED_FORMAT3(matNear, shadow::clipFromView(c, 1.0f), expected, 1e-6f);
-    EXPECT_PRED_FORMAT3(matNear, shadow::clipFromView(c, 2.5f), expected, 1e-6f);
+    EXPECT_PRED_FORMAT3(matNear, gnomon::clipFromView(c, 1.0f), expected, 1e-6f);
+    EXPECT_PRED_FORMAT3(matNear, gnomon::clipFromView(c, 2.5f), expected, 1e-6f);
 }
 
 // Asymmetric volume l = -1, r = 3, b = 0, t = 2:
@@ -137,7 +137,7 @@ TEST(Transforms, OrthographicAsymmetricVolumeIsOffCentre) {
     c.top = 2.0f;
     c.near = 1.0f;
     c.far = 20.0f;
-    const glm::mat4 m = shadow::clipFromView(c, 1.0f);
+    const glm::mat4 m = gnomon::clipFromView(c, 1.0f);
     EXPECT_NEAR(m[0][0], 0.5f, 1e-6f);
     EXPECT_NEAR(m[1][1], 1.0f, 1e-6f);
     EXPECT_NEAR(m[3][0], -0.5f, 1e-6f);
@@ -154,7 +154,7 @@ TEST(Transforms, OrthographicAsymmetricVolumeIsOffCentre) {
 //   f = (0, -1, 0), s = f x x = (0, 0, 1), u = s x f = (1, 0, 0), translation (0, 0, -5).
 TEST(Transforms, SafeLookAtWithUpParallelToViewIsFiniteAndOrthonormal) {
     const glm::mat4 m =
-        shadow::safeLookAt({0.0f, 5.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
+        gnomon::safeLookAt({0.0f, 5.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
     ASSERT_TRUE(test::allFinite(m));
     test::expectRotationPart(m);
     glm::mat4 expected(1.0f);
@@ -173,7 +173,7 @@ TEST(Transforms, SafeLookAtSurvivesAntiParallelAndNearlyParallelUp) {
             SCOPED_TRACE(testing::Message()
                          << "eye (" << eye.x << ", " << eye.y << ", " << eye.z << ") up (" << up.x
                          << ", " << up.y << ", " << up.z << ")");
-            const glm::mat4 m = shadow::safeLookAt(eye, glm::vec3(0.0f), up);
+            const glm::mat4 m = gnomon::safeLookAt(eye, glm::vec3(0.0f), up);
             ASSERT_TRUE(test::allFinite(m));
             test::expectRotationPart(m);
             // Still a look-at: the eye goes to the origin, the centre straight ahead.
@@ -189,7 +189,7 @@ TEST(Transforms, SafeLookAtWithUsableUpKeepsThatUp) {
     // Up tilted but not parallel: the camera's up is the given up made orthogonal to the
     // view direction, so the view-space x axis is orthogonal to the given up.
     const glm::vec3 up = glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f));
-    const glm::mat4 m = shadow::safeLookAt({1.0f, 2.0f, 8.0f}, {0.0f, 0.0f, 0.0f}, up);
+    const glm::mat4 m = gnomon::safeLookAt({1.0f, 2.0f, 8.0f}, {0.0f, 0.0f, 0.0f}, up);
     const glm::vec3 s(m[0][0], m[1][0], m[2][0]);
     const glm::vec3 u(m[0][1], m[1][1], m[2][1]);
     const glm::vec3 forward = glm::normalize(-glm::vec3(1.0f, 2.0f, 8.0f));
@@ -203,7 +203,7 @@ TEST(Transforms, SafeLookAtWithZeroUpIsFinite) {
     // A zero up vector is "parallel" to every direction; the documented promise is a usable
     // matrix whenever up cannot define the roll.
     const glm::mat4 m =
-        shadow::safeLookAt({0.0f, 7.0f, 9.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
+        gnomon::safeLookAt({0.0f, 7.0f, 9.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
     ASSERT_TRUE(test::allFinite(m));
     test::expectRotationPart(m);
 }

@@ -6,7 +6,7 @@
 
 #include <limits>
 
-#include "core/TuneSearch.h"
+#include "lab/TuneSearch.h"
 
 namespace gnomon::search {
 namespace {

@@ -51,7 +51,7 @@ TEST(ViewSamples, DepthSamplesLandOnTheSurfaceTheyCameFrom) {
         covered += r.x < 1.0f ? 1u : 0u;
     ASSERT_GT(covered, 100u);
     ASSERT_EQ(samples.points.size(), covered);  // one depth per cell: one point each
-    const glm::mat4 view = shadow::viewFromWorld(camera);
+    const glm::mat4 view = gnomon::viewFromWorld(camera);
     for (const glm::vec4& p : samples.points) {
         EXPECT_NEAR(p.y, 0.0f, 2e-3f * p.w);
         EXPECT_NEAR(p.w, -(view * glm::vec4(glm::vec3(p), 1.0f)).z, 1e-3f * p.w);

@@ -1,4 +1,4 @@
-// gnomon::tune: coordinate descent (core/TuneSearch.h) over shadow settings, each trial
+// gnomon::tune: coordinate descent (lab/TuneSearch.h) over shadow settings, each trial
 // rendered and scored over every view against references traced once, and timed as bench
 // times a frame.
 #include "gnomon/Tune.h"
@@ -12,10 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/TuneSearch.h"
 #include "gnomon/Error.h"
 #include "gnomon/OptionSchema.h"
-#include "render/ScoreDetail.h"
+#include "lab/ScoreDetail.h"
+#include "lab/TuneSearch.h"
 #include "scene/SceneUtil.h"
 #include "shadow/ShadowMath.h"
 
@@ -279,12 +279,12 @@ private:
 
 // `c` moved sideways, eye and target alike, by `dx` and `dy` pixels of an image `height`
 // pixels high, measured at the target's distance: the picture moves by about that much there.
-// Along the picture's own axes, as the renderer builds its view (shadow::viewFromWorld, with
+// Along the picture's own axes, as the renderer builds its view (gnomon::viewFromWorld, with
 // its fallback where the camera looks along `up`).
 Camera shiftedCamera(const Camera& c, int height, float dx, float dy) {
     const float distance = glm::length(c.centre - c.eye);
     if (!(distance > 0.0f) || height < 1) return c;
-    const glm::mat4 worldFromView = glm::inverse(shadow::viewFromWorld(c));
+    const glm::mat4 worldFromView = glm::inverse(gnomon::viewFromWorld(c));
     const float viewHeight = c.projection == Projection::Perspective
                                  ? 2.0f * distance * std::tan(0.5f * glm::radians(c.fovyDegrees))
                                  : c.top - c.bottom;

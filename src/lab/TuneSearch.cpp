@@ -1,4 +1,4 @@
-#include "core/TuneSearch.h"
+#include "lab/TuneSearch.h"
 
 #include <algorithm>
 #include <map>

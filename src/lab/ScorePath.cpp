@@ -6,7 +6,7 @@
 
 #include "gnomon/Error.h"
 #include "gnomon/Score.h"
-#include "render/ScoreDetail.h"
+#include "lab/ScoreDetail.h"
 #include "truth/Flicker.h"
 
 namespace gnomon {

@@ -9,7 +9,7 @@
 
 #include "gnomon/Error.h"
 #include "gnomon/Renderer.h"
-#include "render/ScoreDetail.h"
+#include "lab/ScoreDetail.h"
 #include "truth/ErrorCauses.h"
 #include "truth/Metrics.h"
 
