@@ -80,37 +80,25 @@ glm::vec3 tintThrough(const glm::vec3& c, float alpha) {
     return (1.0f - alpha) * glm::mix(glm::vec3(1.0f), glm::clamp(c, 0.0f, 1.0f), alpha);
 }
 
-void alphaFilter(const RTCFilterFunctionNArguments* args) {
-    const auto& surface = *static_cast<const AlphaSurface*>(args->geometryUserPtr);
-    auto& ctx = *reinterpret_cast<AlphaContext*>(args->context);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
-        const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
-        const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
-        const Material& m = *surface.material;
-        if (m.alphaMode == AlphaMode::Mask) {
-            if (alphaAt(surface, prim, u, v) < m.alphaCutoff) args->valid[i] = 0;
-            continue;
-        }
-        // Blended: opaque to shadow rays under --blend-shadows opaque, else passed through.
-        if (!ctx.viewRay && ctx.blend == BlendShadows::Opaque) continue;
-        args->valid[i] = 0;
-        if (ctx.viewRay || ctx.blend == BlendShadows::None) continue;
-        const std::uint64_t key = std::uint64_t(RTCHitN_geomID(args->hit, args->N, i)) << 32 | prim;
-        const int n = std::min(ctx.seenCount, 8);
-        if (std::find(ctx.seen, ctx.seen + n, key) != ctx.seen + n) continue;
-        ctx.seen[ctx.seenCount++ % 8] = key;
-        if (ctx.blend == BlendShadows::Dithered) {
-            ctx.transmission *= 1.0f - std::clamp(alphaAt(surface, prim, u, v), 0.0f, 1.0f);
-        } else {
-            const glm::vec4 c = colourAt(surface, prim, u, v);
-            if (c.a >= kOpaqueBlendAlpha) {
-                args->valid[i] = -1;  // an opaque texel: blocks, as in the depth maps
-                continue;
-            }
-            ctx.tint *= tintThrough(glm::vec3(c), c.a);
-        }
+bool alphaStops(const AlphaSurface& surface, unsigned object, unsigned prim, float u, float v,
+                AlphaState& state) {
+    const Material& m = *surface.material;
+    if (m.alphaMode == AlphaMode::Mask) return alphaAt(surface, prim, u, v) >= m.alphaCutoff;
+    // Blended: opaque to shadow rays under --blend-shadows opaque, else passed through.
+    if (!state.viewRay && state.blend == BlendShadows::Opaque) return true;
+    if (state.viewRay || state.blend == BlendShadows::None) return false;
+    const std::uint64_t key = std::uint64_t(object) << 32 | prim;
+    const int n = std::min(state.seenCount, 8);
+    if (std::find(state.seen, state.seen + n, key) != state.seen + n) return false;
+    state.seen[state.seenCount++ % 8] = key;
+    if (state.blend == BlendShadows::Dithered) {
+        state.transmission *= 1.0f - std::clamp(alphaAt(surface, prim, u, v), 0.0f, 1.0f);
+        return false;
     }
+    const glm::vec4 c = colourAt(surface, prim, u, v);
+    if (c.a >= kOpaqueBlendAlpha) return true;  // an opaque texel: blocks, as in the depth maps
+    state.tint *= tintThrough(glm::vec3(c), c.a);
+    return false;
 }
 
 }  // namespace gnomon::truth

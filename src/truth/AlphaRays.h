@@ -1,5 +1,5 @@
-// What masked and blended surfaces let through, for the reference's Embree rays: their alpha
-// and colour at a hit, and the filter Embree calls on every hit of such a surface. View rays
+// What masked and blended surfaces let through, for the reference's rays: their alpha and
+// colour at a hit, and the rule every tracer (truth/Tracer.h) applies to such a hit. View rays
 // look through cut-away and blended surfaces; shadow rays through cut-away ones, and through
 // blended ones by the --blend-shadows rule: dithered ones pass 1 - alpha of the light,
 // coloured ones tint it by T = (1 - alpha) mix(1, colour, alpha).
@@ -7,7 +7,6 @@
 
 #include <cstdint>
 
-#include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
 #include "gnomon/Options.h"
@@ -38,19 +37,21 @@ constexpr float kOpaqueBlendAlpha = 254.5f / 255.0f;
 // opaque (white passes 1 - alpha, as dithered does; alpha 0 passes all, alpha 1 nothing).
 glm::vec3 tintThrough(const glm::vec3& c, float alpha);
 
-// Rays carry this context so the filter knows what they trace.
-struct AlphaContext {
-    RTCIntersectContext base;  // first: Embree hands filters a pointer to it
+// What a ray carries past masked and blended hits (one per ray).
+struct AlphaState {
     bool viewRay = false;
     BlendShadows blend = BlendShadows::Dithered;
     float transmission = 1.0f;  // dithered: the product of 1 - alpha
     glm::vec3 tint{1.0f};       // coloured: the product of tintThrough
-    // Hits already counted (a primitive can be reported again); a short ring suffices.
+    // Hits already counted (a tracer can report a primitive again); a short ring suffices.
     std::uint64_t seen[8] = {};
     int seenCount = 0;
 };
 
-// Embree's intersect and occluded filter for AlphaSurface geometry (its user data).
-void alphaFilter(const RTCFilterFunctionNArguments* args);
+// A hit at barycentric (u, v) of triangle `prim` of `surface` (object `object`): true when it
+// stops the ray, false when the ray goes on through it (a cut-away texel, or a blended
+// surface, whose share of the light is then taken into `state`).
+bool alphaStops(const AlphaSurface& surface, unsigned object, unsigned prim, float u, float v,
+                AlphaState& state);
 
 }  // namespace gnomon::truth

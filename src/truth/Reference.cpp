@@ -8,12 +8,9 @@
 #include <string>
 #include <thread>
 
-#include <embree3/rtcore.h>
-
 #include "gnomon/Error.h"
-#include "scene/SceneUtil.h"
 #include "scene/CameraMath.h"
-#include "truth/AlphaRays.h"
+#include "scene/SceneUtil.h"
 #include "truth/ShadowRays.h"
 
 namespace gnomon::truth {
@@ -216,32 +213,27 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             tnear *= length;  // the planes lie at view depths near and far: t = depth x length
             tfar *= length;
         }
-        AlphaContext context;
-        rtcInitIntersectContext(&context.base);
-        context.viewRay = true;
+        const Tracer& tracer = rays->tracer();
         // Single-sided surfaces seen from behind are culled by the main pass: look past them.
         for (int attempt = 0; attempt < 64; ++attempt) {
-            RTCRayHit rh{};
-            rh.ray = rayAlong(from, dir, tnear, tfar);
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(rays->all(), &context.base, &rh);
-            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return;
-            const int o = int(rh.hit.geomID);
+            const TraceHit hit = tracer.nearest(from, dir, tnear, tfar);
+            if (!hit.hit()) return;
+            const int o = hit.object;
             const Object& obj = scene.objects[std::size_t(o)];
             const Mesh& mesh = scene.meshes[obj.mesh];
             const std::vector<glm::vec3>& p = rays->positions(std::size_t(o));
-            const std::uint32_t* t = &mesh.indices[3 * std::size_t(rh.hit.primID)];
+            const std::uint32_t* t = &mesh.indices[3 * std::size_t(hit.triangle)];
             glm::vec3 n = glm::cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);  // CCW = front
             const float nl = glm::length(n);
             if (!(nl > 0.0f)) {
-                tnear = rh.ray.tfar * (1.0f + 1e-6f) + 1e-7f * rays->scale();
+                tnear = hit.t * (1.0f + 1e-6f) + 1e-7f * rays->scale();
                 continue;
             }
             n /= nl;
             const Material& mat = scene.materials[obj.material];
             if (glm::dot(n, dir) > 0.0f) {
                 if (!mat.doubleSided) {
-                    tnear = rh.ray.tfar * (1.0f + 1e-6f) + 1e-7f * rays->scale();
+                    tnear = hit.t * (1.0f + 1e-6f) + 1e-7f * rays->scale();
                     continue;
                 }
                 n = -n;  // the side the camera sees
@@ -249,7 +241,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
             // The point from its triangle's corners rather than from + dir * t: its rounding
             // is then that of the scene's coordinates, not of the camera's distance, so the
             // shadow rays' margin (ShadowRays::lead) can stay small however far the camera.
-            const float u = rh.hit.u, v = rh.hit.v;
+            const float u = hit.u, v = hit.v;
             const glm::vec3 point = (1.0f - u - v) * p[t[0]] + u * p[t[1]] + v * p[t[2]];
             const std::size_t pixel = std::size_t(y) * std::size_t(options.width) + std::size_t(x);
             ref.object[pixel] = o;

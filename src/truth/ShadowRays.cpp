@@ -12,57 +12,6 @@ namespace gnomon::truth {
 
 namespace {
 
-void checkDevice(RTCDevice device, const char* what) {
-    const RTCError e = rtcGetDeviceError(device);
-    if (e != RTC_ERROR_NONE) {
-        throw Error(ErrorKind::InvalidInput, std::string("ground truth: Embree failed to ") + what +
-                                                 " (error " + std::to_string(int(e)) + ")");
-    }
-}
-
-RTCScene buildScene(RTCDevice device, const Scene& scene,
-                    const std::vector<std::vector<glm::vec3>>& positions,
-                    const std::vector<AlphaSurface>& alpha, bool castersOnly) {
-    RTCScene s = rtcNewScene(device);
-    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-        const Object& obj = scene.objects[o];
-        if (castersOnly && !obj.castsShadows) continue;
-        const Mesh& mesh = scene.meshes[obj.mesh];
-        const std::size_t triangles = mesh.indices.size() / 3;
-        if (triangles == 0 || mesh.positions.empty()) continue;
-        RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                              RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                              mesh.positions.size()));
-        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles));
-        if (!v || !idx) {
-            rtcReleaseGeometry(g);
-            rtcReleaseScene(s);
-            checkDevice(device, "allocate geometry");
-            throw Error(ErrorKind::InvalidInput, "ground truth: out of memory for geometry");
-        }
-        const std::vector<glm::vec3>& p = positions[o];
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            v[3 * i] = p[i].x;
-            v[3 * i + 1] = p[i].y;
-            v[3 * i + 2] = p[i].z;
-        }
-        std::copy(mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(3 * triangles), idx);
-        if (alpha[o].material) {  // masked or blended: every hit asks its alpha
-            rtcSetGeometryUserData(g, const_cast<AlphaSurface*>(&alpha[o]));
-            rtcSetGeometryIntersectFilterFunction(g, &alphaFilter);
-            rtcSetGeometryOccludedFilterFunction(g, &alphaFilter);
-        }
-        rtcCommitGeometry(g);
-        rtcAttachGeometryByID(s, g, unsigned(o));
-        rtcReleaseGeometry(g);
-    }
-    rtcCommitScene(s);
-    checkDevice(device, "build the scene's BVH");
-    return s;
-}
-
 // Two unit vectors perpendicular to `w` and to each other.
 void tangents(const glm::vec3& w, glm::vec3& u, glm::vec3& v) {
     const glm::vec3 a = std::fabs(w.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
@@ -105,26 +54,7 @@ ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options)
         mOn[i] =
             options.shadow.enabled && scene.lights[i].castsShadows && lightIsOn(scene, options, i);
     }
-    mDevice = rtcNewDevice(nullptr);
-    if (!mDevice) throw Error(ErrorKind::InvalidInput, "ground truth: Embree found no device");
-    try {
-        mAll = buildScene(mDevice, scene, mPositions, mAlpha, false);
-        mCasters = buildScene(mDevice, scene, mPositions, mAlpha, true);
-    } catch (...) {
-        if (mAll) rtcReleaseScene(mAll);
-        rtcReleaseDevice(mDevice);
-        throw;
-    }
-}
-
-ShadowRays::~ShadowRays() {
-    rtcReleaseScene(mCasters);
-    rtcReleaseScene(mAll);
-    rtcReleaseDevice(mDevice);
-}
-
-void ShadowRays::check(const char* what) const {
-    checkDevice(mDevice, what);
+    mTracer = makeEmbreeTracer({&scene, &mPositions, &mAlpha, mBlend});
 }
 
 float ShadowRays::lead(const glm::vec3& point, const glm::vec3& n, const glm::vec3& dir) const {
@@ -174,13 +104,7 @@ float ShadowRays::transmitted(const glm::vec3& point, const glm::vec3& dir, floa
         if (tint) *tint = glm::vec3(1.0f);
         return 1.0f;
     }
-    AlphaContext context;
-    rtcInitIntersectContext(&context.base);
-    context.blend = mBlend;
-    RTCRay ray = rayAlong(point, dir, near, far);
-    rtcOccluded1(mCasters, &context.base, &ray);
-    if (tint) *tint = context.tint;
-    return ray.tfar < 0.0f ? 0.0f : context.transmission;  // Embree sets tfar to -inf on a hit
+    return mTracer->transmitted(point, dir, near, far, tint);
 }
 
 int ShadowRays::side(std::size_t l, const glm::vec3& point, const glm::vec3& n) const {
@@ -207,17 +131,12 @@ bool ShadowRays::otherSideWithin(std::size_t l, const glm::vec3& point, const gl
         for (const float dir : {-1.0f, 1.0f}) {
             // Each ray starts a little behind q, so a surface through q itself is found.
             const glm::vec3 start = q - n * (dir * behind);
-            RTCRayHit rh{};
-            rh.ray = rayAlong(start, dir * n, 0.0f, std::min(radius, nearest) + behind);
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            AlphaContext context;
-            rtcInitIntersectContext(&context.base);
-            context.viewRay = true;
-            rtcIntersect1(mAll, &context.base, &rh);
-            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
-            nearest = std::max(rh.ray.tfar - behind, 0.0f);
-            onSurface = start + n * (dir * rh.ray.tfar);
-            hitNormal = glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+            const TraceHit hit =
+                mTracer->nearest(start, dir * n, 0.0f, std::min(radius, nearest) + behind);
+            if (!hit.hit()) continue;
+            nearest = std::max(hit.t - behind, 0.0f);
+            onSurface = start + n * (dir * hit.t);
+            hitNormal = hit.geometricNormal;
         }
         const float length = glm::length(hitNormal);
         if (!(length > 0.0f)) continue;

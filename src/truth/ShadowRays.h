@@ -1,6 +1,6 @@
-// The scene's triangles in Embree 3 and its lights, for the reference's rays: what the
-// camera sees (every object) and what shadows it (the casters), with masked and blended
-// surfaces answering through truth/AlphaRays.h. traceReference builds one and keeps it with
+// The scene's triangles in a tracer (truth/Tracer.h) and its lights, for the reference's rays:
+// what the camera sees (every object) and what shadows it (the casters), with masked and
+// blended surfaces answering through truth/AlphaRays.h. traceReference builds one and keeps it with
 // the Reference, so that the score can trace more shadow rays where it needs to look along a
 // surface (Metrics.h: extendBandAlongSurfaces). It points into the Scene it was built from
 // (meshes, materials, textures): use it only while that Scene lives.
@@ -9,42 +9,26 @@
 #include <memory>
 #include <vector>
 
-#include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
 #include "gnomon/Options.h"
 #include "gnomon/Scene.h"
 #include "truth/AlphaRays.h"
+#include "truth/Tracer.h"
 
 namespace gnomon::truth {
 
-// An Embree ray from `origin` along `dir` over [tnear, tfar], every geometry mask.
-inline RTCRay rayAlong(const glm::vec3& origin, const glm::vec3& dir, float tnear, float tfar) {
-    RTCRay ray{};
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
-    ray.dir_x = dir.x;
-    ray.dir_y = dir.y;
-    ray.dir_z = dir.z;
-    ray.tnear = tnear;
-    ray.tfar = tfar;
-    ray.mask = 0xffffffffu;
-    return ray;
-}
-
 class ShadowRays {
 public:
-    // Throws gnomon::Error (InvalidInput) when Embree has no device or rejects the scene.
+    // Throws gnomon::Error (InvalidInput) when the tracer cannot be made for the scene.
     ShadowRays(const Scene& scene, const RenderOptions& options);
-    ~ShadowRays();
     ShadowRays(const ShadowRays&) = delete;
     ShadowRays& operator=(const ShadowRays&) = delete;
 
-    RTCScene all() const { return mAll; }
-    RTCScene casters() const { return mCasters; }
-    // Throws gnomon::Error when Embree reports a failure since the last call.
-    void check(const char* what) const;
+    // The rays themselves: view rays against every object, shadow rays against the casters.
+    const Tracer& tracer() const { return *mTracer; }
+    // Throws gnomon::Error when the tracer reports a failure since the last call.
+    void check(const char* what) const { mTracer->check(what); }
 
     // Every point, position and light here is relative to this one (coordinateOrigin of the
     // scene's bounds), as the renderer's are: rays started off a surface 10 000 units out
@@ -103,8 +87,6 @@ public:
     static constexpr float kEdgeOnCosine = 1e-3f;  // sin 0.057 degrees
 
 private:
-    RTCDevice mDevice = nullptr;
-    RTCScene mAll = nullptr, mCasters = nullptr;
     std::vector<std::vector<glm::vec3>> mPositions;
     std::vector<AlphaSurface> mAlpha;  // per object: masked and blended ones only
     std::vector<Light> mLights;
@@ -112,6 +94,7 @@ private:
     BlendShadows mBlend;
     float mScale = 1.0f;
     glm::vec3 mOrigin{0.0f};
+    std::unique_ptr<Tracer> mTracer;  // last: it points into the members above
 };
 
 }  // namespace gnomon::truth
