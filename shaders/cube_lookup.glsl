@@ -45,19 +45,19 @@ float cubeSingleTap(vec3 toPoint, float layer, vec3 u, vec3 v, float step, float
 // along that face's axis; compare against the same depth of this point. PCF taps lie in the
 // face's plane (a 2-D kernel on the face, not the online WebGL tutorial's 3-D grid of
 // directions: the same footprint for k^2 instead of k^3 lookups).
-float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
-    vec3 toPoint = wsPosition - light.position.xyz;
-    float near = light.placement.w, far = light.shadowBias.w;
+float cubeVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
+    vec3 toPoint = wsPosition - light.position;
+    float near = light.mapNear, far = light.mapFar;
     vec3 a = abs(toPoint);
     float major = max(a.x, max(a.y, a.z));
-    gTexelWorld = light.shadow.y * major;
-    vec3 offset = normalOffset(light, wsNormal, wsToLight, light.shadow.y * major, kCubeReach);
+    gTexelWorld = light.texelWorldSize * major;
+    vec3 offset = normalOffset(light, wsNormal, wsToLight, light.texelWorldSize * major, kCubeReach);
 #if defined(RECEIVER_PLANE)
-    offset += grazingPlaneOffset(wsToLight, light.shadow.y * major, kCubeReach,
+    offset += grazingPlaneOffset(wsToLight, light.texelWorldSize * major, kCubeReach,
                                  kCubeGrazingShift);
 #endif
 #ifdef STAND_IN_LIFT
-    offset += wsToLight * standInLift(light.shadow.y * major);
+    offset += wsToLight * standInLift(light.texelWorldSize * major);
 #endif
     toPoint += offset;
     a = abs(toPoint);
@@ -74,17 +74,17 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     // with one step, the whole face inside the cube's downward face flipping at once). Both
     // sides round, as mapRounding counts them: 2^-24 alone left a line of false shadow along
     // AlphaBlendModeTest's wall top, its cube's near plane just above (0.09 % of a view).
-    float wsScale = length(wsPosition) + length(light.position.xyz);
+    float wsScale = length(wsPosition) + length(light.position);
     float rounding = exp2(-23.0) * (farTerm + nearTerm * (2.0 + wsScale / major));
     float reference = stored - depthTolerance(light, max(uDepthAware.z, rounding));
-    float layer = light.colour.w;
+    float layer = float(light.layer);
 #if defined(COLOURED_SHADOWS)
     gTint = cubeTint(toPoint, layer, reference);
 #endif
     // Two axes spanning the face of the major axis; one texel is 2 / size at unit distance.
     vec3 u = a.x >= a.y && a.x >= a.z ? vec3(0, 1, 0) : vec3(1, 0, 0);
     vec3 v = a.z >= a.x && a.z >= a.y ? vec3(0, 1, 0) : vec3(0, 0, 1);
-    float step = light.shadowBias.z * 2.0 * major;
+    float step = light.texelUv * 2.0 * major;
 #if defined(RECEIVER_PLANE)
     // Stored depth per world unit of tap offset along u and v (affine on the face: a face is
     // a perspective projection), and its half-texel spread for the bilinear comparisons.
@@ -153,10 +153,10 @@ float cubeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToL
     }
     return sum / float(kCubeKernel * kCubeKernel);
 #elif defined(FILTER_PCSS)
-    float texelAtReceiver = light.shadow.y * major;  // one texel at the receiver, world
+    float texelAtReceiver = light.texelWorldSize * major;  // one texel at the receiver, world
     float perTexel = texelAtReceiver * surfaceSlope(wsNormal, wsToLight) *
                      storedPerWorld(light, major, false);
-    float search = clamp(pcssSearchWorld(light, major) / (light.shadow.y * near), 1.0,
+    float search = clamp(pcssSearchWorld(light, major) / (light.texelWorldSize * near), 1.0,
                          kPcssMaxTexels);
     mat2 turn = poissonRotation();
     float blockers = 0.0, count = 0.0;

@@ -95,25 +95,25 @@ const int kSingleMapKind = kAnyKind;
 // no light this frame has a range or distance terms (the default attenuation, 1 0 0), so the
 // falloff is 1 / c0 wherever the light reaches: compiled in, the distance terms and the
 // range window cost a twentieth of the main pass on glmark2's horse (LP_NUM_THREADS=1).
-void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
-    int type = kind == kAnyKind ? int(light.position.w) : kind;
+void lightAt(LightRecord light, int kind, out vec3 toLight, out float falloff) {
+    int type = kind == kAnyKind ? light.type : kind;
     falloff = 1.0;
-    vec3 c = light.attenuation.xyz;
+    vec3 c = light.attenuation;
     if (type == kDirectional) {
-        toLight = -normalize(light.direction.xyz);
+        toLight = -normalize(light.direction);
     } else if (type == kArea) {
         // Parallel rays; falloff with the distance from the light's plane (Hessian normal
         // form: n.p + d, with d = -n.p0 for the plane through the light).
-        vec3 n = normalize(light.direction.xyz);
+        vec3 n = normalize(light.direction);
         toLight = -n;
 #ifdef CONSTANT_FALLOFF
         falloff = 1.0 / max(c.x, 1e-6);
 #else
-        float dist = abs(dot(n, vIn.wsPosition - light.position.xyz));
+        float dist = abs(dot(n, vIn.wsPosition - light.position));
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
 #endif
     } else {
-        vec3 d = light.position.xyz - vIn.wsPosition;
+        vec3 d = light.position - vIn.wsPosition;
         float dist = length(d);
         toLight = d / dist;
 #ifdef CONSTANT_FALLOFF
@@ -121,20 +121,20 @@ void lightAt(LightData light, int kind, out vec3 toLight, out float falloff) {
 #else
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
         // glTF's range window (1 - (d/range)^4)^2, 1 without a range (w < 0).
-        float r = light.direction.w > 0.0 ? dist / light.direction.w : 0.0;
+        float r = light.range > 0.0 ? dist / light.range : 0.0;
         float window = clamp(1.0 - r * r * r * r, 0.0, 1.0);
         falloff *= window * window;
 #endif
         if (type == kSpot) {
-            float cosAngle = dot(-toLight, normalize(light.direction.xyz));
-            falloff *= smoothstep(light.attenuation.w, light.shadow.x, cosAngle);
+            float cosAngle = dot(-toLight, normalize(light.direction));
+            falloff *= smoothstep(light.cosOuter, light.cosInner, cosAngle);
         }
     }
 }
 
 // Adds one light's Blinn-Phong term, as visible as `visibility` says (per channel: coloured
 // shadows tint it).
-void shade(LightData light, Surface s, vec3 toLight, float falloff, vec3 visibility,
+void shade(LightRecord light, Surface s, vec3 toLight, float falloff, vec3 visibility,
            inout vec3 lit, inout vec3 factor) {
     if (s.unlit) {
         factor *= mix(vec3(uShadowFactor), vec3(1.0), visibility);
@@ -149,7 +149,7 @@ void shade(LightData light, Surface s, vec3 toLight, float falloff, vec3 visibil
 #else
     float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(s.n, h), 0.0), vIn.material.y) : 0.0;
 #endif
-    vec3 contribution = light.colour.rgb * falloff * (nDotL * s.base + spec);
+    vec3 contribution = light.colour * falloff * (nDotL * s.base + spec);
 #ifdef SHADOWED_FACTOR
     lit += contribution;
     factor *= mix(vec3(uShadowFactor), vec3(1.0), visibility);
@@ -159,11 +159,11 @@ void shade(LightData light, Surface s, vec3 toLight, float falloff, vec3 visibil
 }
 
 #ifdef VISIBILITY_PASS
-void recordVisibility(LightData light, float visibility) {
-    imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)),
+void recordVisibility(LightRecord light, float visibility) {
+    imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight),
                vec4(visibility, gTexelWorld, 0.0, 0.0));
 #ifdef COLOURED_SHADOWS
-    imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), int(light.soft.w)), vec4(gTint, 1.0));
+    imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight), vec4(gTint, 1.0));
 #endif
 }
 #endif
@@ -201,7 +201,7 @@ void recordVisibility(LightData light, float visibility) {
 
 // Declares `light` (record k of the light order), `toLight` and `falloff` at this fragment.
 #define LIGHT_AT(k, KIND)                          \
-    LightData light = lights[lightRecord(k)];      \
+    LightRecord light = lights[lightRecord(k)];      \
     vec3 toLight;                                  \
     float falloff;                                 \
     lightAt(light, KIND, toLight, falloff);
@@ -233,10 +233,10 @@ void recordVisibility(LightData light, float visibility) {
 // Point and spot lights: the march stops short of the light.
 #define CONTACT(light, visibility, toLight)                                             \
     {                                                                                   \
-        int kind = int(light.position.w);                                               \
+        int kind = light.type;                                               \
         float reach = kind == kDirectional || kind == kArea                             \
                           ? 1e30                                                        \
-                          : length(light.position.xyz - vIn.wsPosition);                \
+                          : length(light.position - vIn.wsPosition);                \
         visibility = contactShadow(vIn.wsPosition, toLight, reach, visibility);         \
     }
 #else
@@ -275,13 +275,13 @@ void recordVisibility(LightData light, float visibility) {
     CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
 #endif
 
-float mapLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
+float mapLookup(LightRecord light, vec3 p, vec3 n, vec3 l, float depth) {
     return mapVisibility(light, p, n, l);
 }
-float cubeLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
+float cubeLookup(LightRecord light, vec3 p, vec3 n, vec3 l, float depth) {
     return cubeVisibility(light, p, n, l);
 }
-float faceLookup(LightData light, vec3 p, vec3 n, vec3 l, float depth) {
+float faceLookup(LightRecord light, vec3 p, vec3 n, vec3 l, float depth) {
     return faceVisibility(light, p, n, l);
 }
 
@@ -301,18 +301,18 @@ void findReceiverPlane() {
 }
 
 #ifdef FLOOR
-vec3 floorDiffuse(LightData light, int kind, vec3 n, out vec3 toLight) {
-    int type = kind == kAnyKind ? int(light.position.w) : kind;
+vec3 floorDiffuse(LightRecord light, int kind, vec3 n, out vec3 toLight) {
+    int type = kind == kAnyKind ? light.type : kind;
     toLight = type == kDirectional || type == kArea
-                  ? -normalize(light.direction.xyz)
-                  : normalize(light.position.xyz - vIn.wsPosition);
-    return light.colour.rgb * max(dot(n, toLight), 0.0);
+                  ? -normalize(light.direction)
+                  : normalize(light.position - vIn.wsPosition);
+    return light.colour * max(dot(n, toLight), 0.0);
 }
 
 #define FLOOR_LIGHT(k, LOOKUP, KIND)                                                      \
     {                                                                                     \
         vec3 toLight;                                                                     \
-        LightData light = lights[lightRecord(k)];                                         \
+        LightRecord light = lights[lightRecord(k)];                                         \
         vec3 diffuse = floorDiffuse(light, KIND, n, toLight);                             \
         lit += diffuse * LOOKUP(light, vIn.wsPosition, n, toLight, CASCADE_DEPTH);        \
     }

@@ -77,10 +77,10 @@ float msmVisibility(vec4 moments, float depth) {
 }
 
 // `uv` in the layer, `stored` the receiver's stored depth less its tolerance.
-float momentVisibility(LightData light, vec2 uv, float layer, float stored) {
+float momentVisibility(LightRecord light, vec2 uv, float layer, float stored) {
     vec4 m = texture(uShadowMoments, vec3(uv, layer));
-    float depth = momentDepth(stored, light.placement.w, light.shadowBias.w,
-                              light.shadow.z != kFrameOrthographic);
+    float depth = momentDepth(stored, light.mapNear, light.mapFar,
+                              light.frame != kFrameOrthographic);
 #if defined(MOMENTS_MSM)
     return msmVisibility(m, depth);
 #else

@@ -14,27 +14,27 @@
 const float kPcssMaxTexels = 48.0;
 
 // Linear distance from the map's eye for a stored depth (orthographic or perspective).
-float linearDepth(LightData light, float stored, bool ortho) {
-    float n = light.placement.w, f = light.shadowBias.w;
+float linearDepth(LightRecord light, float stored, bool ortho) {
+    float n = light.mapNear, f = light.mapFar;
     return ortho ? n + stored * (f - n) : n * f / (f - stored * (f - n));
 }
 
 // Stored-depth change per world unit of depth at distance t.
-float storedPerWorld(LightData light, float t, bool ortho) {
-    float n = light.placement.w, f = light.shadowBias.w;
+float storedPerWorld(LightRecord light, float t, bool ortho) {
+    float n = light.mapNear, f = light.mapFar;
     return ortho ? 1.0 / (f - n) : f * n / ((f - n) * t * t);
 }
 
 // World radius of the blocker search (at the near plane) and of the penumbra (at the
 // receiver), for a receiver at distance tr and an average blocker at tb.
-float pcssSearchWorld(LightData light, float tr) {
-    float n = light.placement.w;
-    return light.soft.y > 0.5 ? light.soft.x * (tr - n)
-                              : light.soft.x * (tr - n) / max(tr + light.soft.z, 1e-6);
+float pcssSearchWorld(LightRecord light, float tr) {
+    float n = light.mapNear;
+    return light.emitterAngular != 0 ? light.emitterRadius * (tr - n)
+                              : light.emitterRadius * (tr - n) / max(tr + light.emitterDistance, 1e-6);
 }
-float pcssPenumbraWorld(LightData light, float tr, float tb) {
-    return light.soft.y > 0.5 ? light.soft.x * (tr - tb)
-                              : light.soft.x * (tr - tb) / max(tb + light.soft.z, 1e-6);
+float pcssPenumbraWorld(LightRecord light, float tr, float tb) {
+    return light.emitterAngular != 0 ? light.emitterRadius * (tr - tb)
+                              : light.emitterRadius * (tr - tb) / max(tb + light.emitterDistance, 1e-6);
 }
 
 // tan of the angle between the surface and the light direction, capped: the receiver-plane
@@ -51,12 +51,12 @@ float pcssTapReference(float reference, vec2 o, vec3 plane, float perTexel, vec2
                           : reference - length(o) * perTexel;
 }
 
-float pcssMap(LightData light, vec2 uv, float layer, float receiverStored, float reference,
+float pcssMap(LightRecord light, vec2 uv, float layer, float receiverStored, float reference,
               vec2 lo, vec2 hi, float texelUv, bool ortho, float slope, vec3 plane) {
-    float n = light.placement.w;
+    float n = light.mapNear;
     float tr = linearDepth(light, receiverStored, ortho);
-    float texelAtNear = light.shadow.y * (ortho ? 1.0 : n);
-    float texelAtReceiver = light.shadow.y * (ortho ? 1.0 : tr);
+    float texelAtNear = light.texelWorldSize * (ortho ? 1.0 : n);
+    float texelAtReceiver = light.texelWorldSize * (ortho ? 1.0 : tr);
     float perTexel = texelAtReceiver * slope * storedPerWorld(light, tr, ortho);
     float search = clamp(pcssSearchWorld(light, tr) / texelAtNear, 1.0, kPcssMaxTexels);
     mat2 turn = poissonRotation();

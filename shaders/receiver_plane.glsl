@@ -1,5 +1,5 @@
 // Receiver-plane depth for the shadow lookups of shadow_lookup.glsl (included there, after
-// LightData): the receiver's plane, its depth gradient in a map, and the per-tap depth offsets
+// LightRecord): the receiver's plane, its depth gradient in a map, and the per-tap depth offsets
 // along it.
 
 // The receiver's plane, world space: set by main() from the screen-space derivatives of the
@@ -125,7 +125,7 @@ vec4 planeAlong4(vec4 capped, vec4 full, float approach) {
 // root where it had eleven and four: mixed-lights' main pass took 0.96 of the time, and with
 // mapRounding's bound and findReceiverPlane's test also rid of roots, glmark2's horse's 0.98
 // (LP_NUM_THREADS=1, scripts/ab-bench.sh): less than the count suggests.
-vec2 receiverPlaneGradient(LightData light, vec4 clip, vec3 coord, float texelWorld,
+vec2 receiverPlaneGradient(LightRecord light, vec4 clip, vec3 coord, float texelWorld,
                            float texelCoord, vec3 wsToLight) {
     vec3 n = gPlaneNormal;
     vec3 t1 = abs(n.x) > 0.5 ? vec3(n.y, -n.x, 0.0) : vec3(0.0, n.z, -n.y);  // 0.5 to 1 long

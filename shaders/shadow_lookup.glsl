@@ -15,8 +15,8 @@ layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 // maps take one ulp of 0.5 at every depth).
 layout(location = 7) uniform vec3 uDepthAware;
 
-float depthTolerance(LightData light, float step) {
-    return light.shadowBias.x + uDepthAware.x * step;
+float depthTolerance(LightRecord light, float step) {
+    return light.biasConstant + uDepthAware.x * step;
 }
 
 #if defined(HAND_COMPARE)
@@ -113,12 +113,12 @@ mat2 poissonRotation() {
 // the surface to stay lit everywhere it should.
 // NORMAL_OFFSET: compiled in only when --normal-offset is not 0 (its default), so lookups do
 // not pay for a zero shift.
-vec3 normalOffset(LightData light, vec3 wsNormal, vec3 wsToLight, float texelWorld,
+vec3 normalOffset(LightRecord light, vec3 wsNormal, vec3 wsToLight, float texelWorld,
                   float reach) {
 #ifdef NORMAL_OFFSET
     float nDotL = clamp(dot(wsNormal, wsToLight), 0.0, 1.0);
     float sinTheta = sqrt(1.0 - nDotL * nDotL);
-    return wsNormal * (light.shadowBias.y * reach * texelWorld * sinTheta);
+    return wsNormal * (light.normalOffset * reach * texelWorld * sinTheta);
 #else
     return vec3(0.0);
 #endif
@@ -237,30 +237,30 @@ float gTexelWorld = 0.0;
 // with its near plane just before a roof far from the origin (Sponza under a lamp above its
 // roof, --point-maps faces) read the roof as its own caster: 0.23 % of the view falsely
 // shadowed away from edges, none with the cube, whose rounding counted it.
-float mapRounding(LightData light, vec3 p, float w, float z) {
+float mapRounding(LightRecord light, vec3 p, float w, float z) {
     mat4 m = light.textureFromWorld;
     vec4 a = abs(vec4(p, 1.0));
     float zTerms = dot(abs(vec4(m[0].z, m[1].z, m[2].z, m[3].z)), a);
     float wTerms = dot(abs(vec4(m[0].w, m[1].w, m[2].w, m[3].w)), a);
     float rw = 1.0 / abs(w);
     float products = exp2(-23.0) * (zTerms + abs(z) * wTerms) * rw;
-    if (light.shadow.z == kFrameOrthographic) return products;
+    if (light.frame == kFrameOrthographic) return products;
     // |perWorld| (|p| + |light|) is at most sqrt(2 |perWorld|^2 (|p|^2 + |light|^2)): one
     // square root where three cost llvmpipe (which roots and divides exactly) most of what
     // this bound took.
     vec3 perWorldW = vec3(m[0].z, m[1].z, m[2].z) - z * vec3(m[0].w, m[1].w, m[2].w);
-    float sizes = 2.0 * (dot(p, p) + dot(light.position.xyz, light.position.xyz));
+    float sizes = 2.0 * (dot(p, p) + dot(light.position, light.position));
     return products + exp2(-22.0) * sqrt(dot(perWorldW, perWorldW) * sizes) * rw;
 }
 
 // One single-frustum map: orthographic or perspective, a light's own or one cascade's.
-float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
-    float layer = light.colour.w;
-    float uvScale = light.shadow.w;
-    float texelUv = light.shadowBias.z;
+float mapVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
+    float layer = float(light.layer);
+    float uvScale = light.uvScale;
+    float texelUv = light.texelUv;
 
     vec4 clip = light.textureFromWorld * vec4(wsPosition, 1.0);
-    float texelWorld = light.shadow.y * (light.shadow.z == kFrameOrthographic ? 1.0 : clip.w);
+    float texelWorld = light.texelWorldSize * (light.frame == kFrameOrthographic ? 1.0 : clip.w);
     gTexelWorld = texelWorld;
 #ifdef NORMAL_OFFSET
     vec3 offset = normalOffset(light, wsNormal, wsToLight, texelWorld, kFilterReach);
@@ -291,7 +291,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
 #endif
     float reference = coord.z - depthTolerance(light, max(uDepthAware.y, rounding));
     // The light's map covers [origin, origin + uvScale] of the layer; keep every tap inside.
-    vec2 origin = light.placement.xy;
+    vec2 origin = light.mapCorner;
     vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);
     vec2 uv = origin + coord.xy * uvScale;
 #if defined(COLOURED_SHADOWS)
@@ -363,7 +363,7 @@ float mapVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLi
     vec3 plane = vec3(0.0, 0.0, -1.0);  // the tap-distance slope tolerance instead
 #endif
     return pcssMap(light, uv, layer, coord.z, reference, lo, hi, texelUv,
-                   light.shadow.z == kFrameOrthographic, surfaceSlope(wsNormal, wsToLight),
+                   light.frame == kFrameOrthographic, surfaceSlope(wsNormal, wsToLight),
                    plane);
 #else
     vec2 tap = clamp(uv, lo, hi);
@@ -400,14 +400,14 @@ int gCascade = -1;
 // for every cascade, and a mix of two lookups in the band (as before) ran both on every
 // pixel: Sponza's atrium (two cascades) measured a main pass of 42 ms with the mix, 35 ms
 // with the pixels dithered between cascades, its score unchanged (0.275 % misclassified).
-float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
+float cascadeVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
                         float vsDepth) {
-    int first = int(light.placement.x), count = int(light.placement.y);
-    float blend = light.placement.z;
+    int first = light.firstSubRecord, count = light.cascadeCount;
+    float blend = light.cascadeBlend;
     int chosen = -1;
     float t = 0.0, previousSplit = 0.0;
     for (int k = 0; k < count; ++k) {
-        float split = lights[first + k].attenuation.x;
+        float split = lights[first + k].farSplit;
         if (chosen < 0 && vsDepth <= split) {
             chosen = k;
             float bandStart = split - blend * (split - previousSplit);
@@ -426,14 +426,14 @@ float cascadeVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 ws
 // A point light whose faces are maps of their own (kFrameFaces): the face the direction from
 // the light leaves through, as a cube map picks it, then that face's map. A face without a map
 // holds nothing the view drew: lit.
-float faceVisibility(LightData light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
-    vec3 d = wsPosition - light.position.xyz;
+float faceVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
+    vec3 d = wsPosition - light.position;
     vec3 a = abs(d);
     int face = a.x >= a.y && a.x >= a.z ? (d.x < 0.0 ? 1 : 0)
                : a.y >= a.z            ? (d.y < 0.0 ? 3 : 2)
                                        : (d.z < 0.0 ? 5 : 4);
-    int slot = (int(light.placement.y) >> (3 * face)) & 7;
-    float visible = mapVisibility(lights[int(light.placement.x) + min(slot, 5)], wsPosition,
+    int slot = (light.faceSlots >> (3 * face)) & 7;
+    float visible = mapVisibility(lights[light.firstSubRecord + min(slot, 5)], wsPosition,
                                   wsNormal, wsToLight);
     return slot == 7 ? 1.0 : visible;
 }

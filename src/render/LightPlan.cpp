@@ -9,7 +9,7 @@
 namespace gnomon::render {
 
 namespace {
-// LightData.position.w in shaders/lights.glsl.
+// LightRecord::type (shaders/light_record.glsl).
 int lightTypeCode(LightType type) {
     switch (type) {
         case LightType::Directional:
@@ -31,23 +31,27 @@ bool casts(const Scene& s, const RenderOptions& options, std::size_t i) {
 // The map-related fields of a light record for a single-frustum or cube frame.
 void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const Light& light,
                       const ShadowOptions& options) {
-    g.shadow.y = frame.texelWorldSize;
-    g.placement.w = frame.near;
-    g.shadowBias.w = frame.far;
+    g.texelWorldSize = frame.texelWorldSize;
+    g.mapNear = frame.near;
+    g.mapFar = frame.far;
     // PCSS's emitter: a disc of lightRadius at the light (area lights: on their plane,
     // which may lie off the map's depth origin), or the directional light's angle.
     if (light.type == LightType::Directional) {
-        g.soft = glm::vec4(std::tan(glm::radians(options.lightAngle)), 1.0f, 0.0f, 0.0f);
+        g.emitterRadius = std::tan(glm::radians(options.lightAngle));
+        g.emitterAngular = 1;
+        g.emitterDistance = 0.0f;
     } else {
         const glm::vec3 eye = glm::vec3(glm::inverse(frame.lightFromWorld)[3]);
         const float offset = light.type == LightType::Area && glm::length(light.direction) > 0.0f
                                  ? glm::dot(eye - light.position, glm::normalize(light.direction))
                                  : 0.0f;
-        g.soft = glm::vec4(options.lightRadius, 0.0f, offset, 0.0f);
+        g.emitterRadius = options.lightRadius;
+        g.emitterAngular = 0;
+        g.emitterDistance = offset;
     }
-    g.shadow.z = frame.kind == shadow::FrameKind::Cube           ? gpu::kFrameCube
-                 : frame.kind == shadow::FrameKind::Orthographic ? gpu::kFrameOrthographic
-                                                                 : gpu::kFramePerspective;
+    g.frame = frame.kind == shadow::FrameKind::Cube           ? gpu::kFrameCube
+              : frame.kind == shadow::FrameKind::Orthographic ? gpu::kFrameOrthographic
+                                                              : gpu::kFramePerspective;
     if (frame.kind != shadow::FrameKind::Cube) {
         g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
     }
@@ -132,27 +136,27 @@ void LightPlan::planLights(const Scene& s, const RenderOptions& options, const G
     mFit.stabilise = options.shadow.stabilise;
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         const Light& light = s.lights[i];
-        GpuLight g;
+        GpuLight g = gpu::emptyLightRecord();
         const glm::vec3 direction = glm::length(light.direction) > 0.0f
                                         ? glm::normalize(light.direction)
                                         : glm::vec3(0, -1, 0);
-        g.position = glm::vec4(light.position, float(lightTypeCode(light.type)));
-        // w: 0 off; on: the range (point, spot), or -1 for none.
+        g.position = light.position;
+        g.type = lightTypeCode(light.type);
+        // 0 off; on: the range (point, spot), or -1 for none.
         const bool ranged =
             light.range > 0.0f && (light.type == LightType::Point || light.type == LightType::Spot);
-        g.direction = glm::vec4(direction, !lightIsOn(s, options, i) ? 0.0f
-                                           : ranged                  ? light.range
-                                                                     : -1.0f);
-        g.colour = glm::vec4(light.colour * light.intensity, -1.0f);
+        g.direction = direction;
+        g.range = !lightIsOn(s, options, i) ? 0.0f : ranged ? light.range : -1.0f;
+        g.colour = light.colour * light.intensity;
         g.attenuation = {light.attenuation.constant, light.attenuation.linear,
-                         light.attenuation.quadratic,
-                         std::cos(glm::radians(light.outerConeDegrees))};
-        g.shadow.x = std::cos(glm::radians(light.innerConeDegrees));
-        g.soft.w = float(i);  // the scene's index, for the visibility pass
+                         light.attenuation.quadratic};
+        g.cosOuter = std::cos(glm::radians(light.outerConeDegrees));
+        g.cosInner = std::cos(glm::radians(light.innerConeDegrees));
+        g.sceneLight = int(i);  // for the visibility pass
         const int mapSize = shadowMapSizeOf(light, options.shadow);
         const bool shadowing = casts(s, options, i);
-        g.shadowBias.x = options.shadow.biasConstant;
-        g.shadowBias.y = options.shadow.normalOffset;
+        g.biasConstant = options.shadow.biasConstant;
+        g.normalOffset = options.shadow.normalOffset;
         const bool cascadable = shadowing && light.type == LightType::Directional &&
                                 light.shadowCamera.policy == ShadowCameraPolicy::Fit &&
                                 !scene.bounds().empty();
@@ -173,7 +177,7 @@ void LightPlan::planLights(const Scene& s, const RenderOptions& options, const G
                 planFaces(s, options, i, frame.faces, size, g);
             } else if (frame.valid) {
                 fillShadowRecord(g, frame, light, options.shadow);
-                g.soft.w = float(i);
+                g.sceneLight = int(i);
                 mShadowed.push_back({int(i), size, frame,
                                      light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
                                      int(i), -1});
@@ -193,14 +197,14 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     mHasMap.assign(sceneLights, 0);
     for (const ShadowedLight& sl : mShadowed)
         mHasMap[std::size_t(sl.light)] = 1;
-    // (Map layers are assigned later, by the shadow pass: colour.w says nothing yet.)
+    // (Map layers are assigned later, by the shadow pass: layer says nothing yet.)
     // The record classes in uLightRanges' order: unshadowed, one map, cube, cascaded.
     auto kindOf = [&](std::size_t i) {
         const GpuLight& g = mLights[i];
-        if (g.direction.w == 0.0f) return -1;
+        if (g.range == 0.0f) return -1;
         if (!mHasMap[i]) return 0;
-        if (g.shadow.z == gpu::kFrameCube || g.shadow.z == gpu::kFrameFaces) return 2;
-        return g.shadow.z == gpu::kFrameCascaded ? 3 : 1;
+        if (g.frame == gpu::kFrameCube || g.frame == gpu::kFrameFaces) return 2;
+        return g.frame == gpu::kFrameCascaded ? 3 : 1;
     };
     for (int kind = 0; kind < 4; ++kind) {
         for (std::size_t i = 0; i < sceneLights; ++i) {
@@ -212,8 +216,8 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     }
     const int base = int(mOrdered.size());
     for (GpuLight& g : mOrdered) {
-        if (g.shadow.z == gpu::kFrameCascaded || g.shadow.z == gpu::kFrameFaces)
-            g.placement.x += float(base) - float(sceneLights);
+        if (g.frame == gpu::kFrameCascaded || g.frame == gpu::kFrameFaces)
+            g.firstSubRecord += base - int(sceneLights);
     }
     mOrdered.insert(mOrdered.end(), mCascadeRecords.begin(), mCascadeRecords.end());
     for (ShadowedLight& sl : mShadowed) {
@@ -226,7 +230,7 @@ void LightPlan::orderLights(std::size_t sceneLights) {
 int LightPlan::singleMapKind() const {
     int kind = -1;
     for (int i = mRanges.x; i < mRanges.y; ++i) {
-        const int type = int(mLights[std::size_t(i)].position.w);
+        const int type = mLights[std::size_t(i)].type;
         if (kind >= 0 && type != kind) return -1;
         kind = type;
     }
@@ -236,10 +240,10 @@ int LightPlan::singleMapKind() const {
 bool LightPlan::constantFalloff() const {
     for (int i = 0; i < mRanges.w; ++i) {
         const GpuLight& g = mLights[std::size_t(i)];
-        const int type = int(g.position.w);
+        const int type = g.type;
         if (type == gpu::kDirectional) continue;
         if (g.attenuation.y != 0.0f || g.attenuation.z != 0.0f) return false;
-        if (type != gpu::kArea && g.direction.w > 0.0f) return false;  // a range's window
+        if (type != gpu::kArea && g.range > 0.0f) return false;  // a range's window
     }
     return true;
 }
@@ -288,9 +292,11 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         shadow::cascadeSplits(near, far, count, options.shadow.cascadeLambda);
     const int first = int(s.lights.size() + mCascadeRecords.size());
     mHasCascades = true;
-    g.shadow.z = gpu::kFrameCascaded;
-    g.colour.w = 0.0f;  // has shadows; the maps are the cascade records'
-    g.placement = glm::vec4(float(first), float(count), blend, 0.0f);
+    g.frame = gpu::kFrameCascaded;
+    g.layer = 0;  // has shadows; the maps are the cascade records'
+    g.firstSubRecord = first;
+    g.cascadeCount = count;
+    g.cascadeBlend = blend;
     for (int k = 0; k < count; ++k) {
         const float from = splits[std::size_t(k)], to = splits[std::size_t(k) + 1];
         shadow::LightCameraFrame frame;
@@ -312,9 +318,12 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         }
         GpuLight c = g;
         fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
-        c.soft.w = float(lightIndex);
-        c.attenuation.x = to;
-        c.placement = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
+        c.sceneLight = int(lightIndex);
+        c.farSplit = to;
+        c.mapCorner = glm::vec2(0.0f);
+        c.mapNear = frame.near;
+        c.firstSubRecord = c.cascadeCount = 0;  // a map of its own, not the light's list
+        c.cascadeBlend = 0.0f;
         mCascadeRecords.push_back(c);
         mShadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k, reach,
                              k + 1 == count ? std::numeric_limits<float>::max() : to});
@@ -323,9 +332,9 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
 
 // Each face the view looks up (`faces`, bit f for face f) a perspective map fitted to the
 // samples in it, its record after the scene's lights like a cascade's. The light's own record
-// says where they are (lights.glsl, kFrameFaces): placement.x the first, placement.y a table
-// of six 3-bit slots, face f's record at first + slot, 7 for a face with no map (no pixel
-// the view drew looks it up).
+// says where they are (light_record.glsl, kFrameFaces): firstSubRecord the first, faceSlots a
+// table of six 3-bit slots, face f's record at first + slot, 7 for a face with no map (no
+// pixel the view drew looks it up).
 void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
                           std::uint8_t faces, int mapSize, GpuLight& g) {
     const Light& light = s.lights[lightIndex];
@@ -340,7 +349,8 @@ void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::siz
             if (frame.valid) {
                 GpuLight c = g;
                 fillShadowRecord(c, frame, light, options.shadow);
-                c.placement = glm::vec4(0.0f, 0.0f, 0.0f, frame.near);
+                c.mapCorner = glm::vec2(0.0f);
+                c.mapNear = frame.near;
                 mCascadeRecords.push_back(c);
                 ShadowedLight sl{int(lightIndex), mapSize, frame, true, 0, first + count};
                 sl.face = face;
@@ -352,9 +362,10 @@ void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::siz
     }
     if (count == 0) return;  // no face holds a caster over what the view sees: no shadow
     mHasFaces = true;
-    g.shadow.z = gpu::kFrameFaces;
-    g.colour.w = 0.0f;  // has shadows; the maps are the face records'
-    g.placement = glm::vec4(float(first), float(table), 0.0f, 0.0f);
+    g.frame = gpu::kFrameFaces;
+    g.layer = 0;  // has shadows; the maps are the face records'
+    g.firstSubRecord = first;
+    g.faceSlots = table;
 }
 
 void LightPlan::finish(const ShadowPass& pass) {
@@ -362,13 +373,12 @@ void LightPlan::finish(const ShadowPass& pass) {
         GpuLight& g = mLights[std::size_t(sl.record)];
         const bool cube = sl.frame.kind == shadow::FrameKind::Cube;
         const int arraySize = cube ? pass.cubes().width() : pass.mapArraySize();
-        g.colour.w = float(sl.layer);
-        g.shadow.y = sl.frame.texelWorldSize;  // a cube drawn larger than asked has finer texels
-        g.shadow.w = float(sl.mapSize) / float(arraySize);
-        g.shadowBias.z = 1.0f / float(arraySize);
-        // A 2D map's square in its layer (lights.glsl: placement.xy).
-        if (!cube)
-            g.placement = glm::vec4(glm::vec2(sl.origin) / float(arraySize), 0.0f, g.placement.w);
+        g.layer = sl.layer;
+        g.texelWorldSize = sl.frame.texelWorldSize;  // a cube drawn larger has finer texels
+        g.uvScale = float(sl.mapSize) / float(arraySize);
+        g.texelUv = 1.0f / float(arraySize);
+        // A 2D map's square in its layer (LightRecord::mapCorner).
+        if (!cube) g.mapCorner = glm::vec2(sl.origin) / float(arraySize);
     }
 }
 

@@ -34,8 +34,6 @@ glm::ivec4 unrolledCounts(glm::ivec4 ends, int first, bool shadows) {
 }
 }  // namespace
 
-static_assert(sizeof(GpuLight) == 192, "GpuLight must match LightData in lights.glsl");
-
 MainPass::MainPass() {
     GLint blockBytes = 0;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &blockBytes);

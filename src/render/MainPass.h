@@ -11,30 +11,10 @@
 #include "gl/Objects.h"
 #include "gnomon/Options.h"
 #include "render/GpuScene.h"
+#include "render/LightRecord.h"
 #include "render/ShadowPass.h"
 
 namespace gnomon::render {
-
-// The codes shaders/lights.glsl reads: a record's type (position.w: kDirectional...) and
-// how its map was made (shadow.z: kFramePerspective...). One list for the CPU side.
-namespace gpu {
-constexpr int kDirectional = 0, kSpot = 1, kPoint = 2, kArea = 3;
-constexpr float kFramePerspective = 0.0f, kFrameOrthographic = 1.0f, kFrameCube = 2.0f,
-                kFrameCascaded = 3.0f, kFrameFaces = 4.0f;
-}  // namespace gpu
-
-// The std140 light record of shaders/lights.glsl (every member 16-byte aligned).
-struct GpuLight {
-    glm::mat4 textureFromWorld{1.0f};
-    glm::vec4 position{0.0f};   // world space, w = type (gpu::kDirectional...)
-    glm::vec4 direction{0.0f};  // world space, w = range
-    glm::vec4 colour{0.0f};
-    glm::vec4 attenuation{0.0f};
-    glm::vec4 shadow{0.0f};
-    glm::vec4 shadowBias{0.0f};
-    glm::vec4 placement{0.0f};  // lights.glsl's LightData.placement
-    glm::vec4 soft{0.0f};
-};
 
 class TiledLights;
 class TransmittancePass;

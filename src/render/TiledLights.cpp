@@ -13,15 +13,15 @@ namespace {
 shadow::LightReach reachOf(const GpuLight& g, bool shadowed, const glm::mat4& viewFromWorld) {
     shadow::LightReach r;
     r.shadowed = shadowed;
-    const int type = int(g.position.w);
+    const int type = g.type;
     if (type != gpu::kSpot && type != gpu::kPoint) return r;  // directional, area
     // Records are in world space; tiles are culled in the view's.
-    r.position = glm::vec3(viewFromWorld * glm::vec4(glm::vec3(g.position), 1.0f));
-    r.range = g.direction.w > 0.0f ? g.direction.w : 0.0f;
+    r.position = glm::vec3(viewFromWorld * glm::vec4(g.position, 1.0f));
+    r.range = g.range > 0.0f ? g.range : 0.0f;
     if (type == gpu::kSpot) {
         r.shape = shadow::LightReach::Shape::Cone;
-        r.direction = glm::mat3(viewFromWorld) * glm::vec3(g.direction);
-        r.cosOuter = g.attenuation.w;
+        r.direction = glm::mat3(viewFromWorld) * g.direction;
+        r.cosOuter = g.cosOuter;
     } else if (r.range > 0.0f) {
         r.shape = shadow::LightReach::Shape::Sphere;
     }
