@@ -7,7 +7,7 @@ Run from anywhere after `make build`:
     scripts/broad-check.py [--scenes DIR | --models A.obj,B.3ds] [--size WxH]
                            [--lights sun,point,spot] [--only A,B]
                            [--random N [--seed S]] [--flags "--bias-slope 0"]
-                           [--out docs/broad-check.md]
+                           [--out FILE]
 
 Views per model, each with and without `--ground`:
 - sun: the model's own camera under four suns (`--sun` at the default, 30,60, 200,20, 120,8);

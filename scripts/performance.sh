@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the sweeps of docs/performance.md: one `gnomon bench --sweep` per parameter on
+# Renders the sweeps of docs/results/performance.md: one `gnomon bench --sweep` per parameter on
 # tutorial-room at 512x512, into docs/images/performance/ (CSV, SVG plot, JSON). Takes a few
 # minutes; the machine should be otherwise idle.
 set -euo pipefail
