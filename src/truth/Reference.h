@@ -1,9 +1,10 @@
-// Ray-traced ground truth (no GL): Embree 3 holds the scene's world-space triangles; for each
-// pixel of the view the surface the camera sees is traced from the same camera (through the
-// pixel's centre, where rasterisation samples too), and a shadow ray per light gives the
-// exact hard-shadow answer. Soft references: the fraction of N rays to points on the light's
-// surface (a disc of lightRadius for spot, point and area lights, a cone of lightAngle for
-// directional ones: the emitters PCSS models). Rows are split over all cores.
+// Ray-traced ground truth (no GL): a tracer (truth/Tracer.h; Embree 3 natively) holds the
+// scene's world-space triangles; for each pixel of the view the surface the camera sees is
+// traced from the same camera (through the pixel's centre, where rasterisation samples too),
+// and a shadow ray per light gives the exact hard-shadow answer. Soft references: the
+// fraction of N rays to points on the light's surface (a disc of lightRadius for spot, point
+// and area lights, a cone of lightAngle for directional ones: the emitters PCSS models). Rows
+// are split over all cores.
 #pragma once
 
 #include <atomic>
