@@ -130,6 +130,7 @@ void Viewer::renderViews(int mainW, int mainH, int sideW) {
             if (mScripted) fail(std::string("frame: ") + e.what());
         }
     }
+    dropStaleOverlay();
     if (mState.side == view::SideView::ShadowMap && sideW > 0 && mainH > 0 &&
         (mSideDirty || sideW != mSideW || mainH != mSideH || mState.selectedLight != mSideLight)) {
         mSideDirty = false;
@@ -139,6 +140,18 @@ void Viewer::renderViews(int mainW, int mainH, int sideW) {
         mSideTexture = mFrameError.empty()
                            ? mRenderer.drawShadowMapPanel(mState.selectedLight, sideW, mainH)
                            : GlTexture{};
+    }
+}
+
+// The error map belongs to the frame it scored: over a moved camera, another setting or
+// another size it would paint a double exposure, so it goes as soon as the frame moves on
+// (view-only toggles keep it). Scoring again (F5) brings a fresh one.
+void Viewer::dropStaleOverlay() {
+    if (!mOverlayTexture || !mScore) return;
+    if (mScoredRevision != mState.revision || mScore->errors.width != mDrawnWidth ||
+        mScore->errors.height != mDrawnHeight) {
+        mOverlayTexture = gl::Texture{};
+        mOverlay = false;
     }
 }
 
