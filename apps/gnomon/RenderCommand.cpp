@@ -47,6 +47,10 @@ std::optional<glm::vec3> numbers(const std::string& text, int n) {
 
 }  // namespace
 
+UpAxis RenderFlags::upAxis() const {
+    return parseEnum<UpAxis>("--up", up, parseUpAxis, "x, y, z");
+}
+
 void RenderFlags::editScene(Scene& scene) const {
     if (ground) addGround(scene);
     placeCameraAndSun(scene);
@@ -112,6 +116,11 @@ void RenderFlags::add(CLI::App& a) {
                "add a grey ground under the scene (receives shadows, casts none), for models "
                "without a floor")
         ->group("Output");
+    a.add_option("--up", up,
+                 "the model file's up axis, turned to +y as it loads (glTF is y by its "
+                 "specification; STL, older OBJ and CAD exports are often z)")
+        ->type_name("x|y|z")
+        ->group("Scene");
     a.add_option("--camera-eye", cameraEye, "place the camera's eye at X,Y,Z (world units)")
         ->type_name("X,Y,Z")
         ->group("Scene");

@@ -164,7 +164,7 @@ int runTune(const TuneArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput, "--budget-ms must be in [0, 1e6)");
     if (!(args.options.timeLimitSeconds >= 0.0 && args.options.timeLimitSeconds < 1e7))
         throw Error(ErrorKind::InvalidInput, "--time-limit must be in [0, 1e7) seconds");
-    Scene scene = loadWithProgress(args.scene);
+    Scene scene = loadWithProgress(args.scene, args.flags.upAxis());
     args.flags.editSceneAndWarn(scene);
     const RenderOptions start = args.flags.resolve(scene);
     TuneOptions options = args.options;

@@ -96,7 +96,7 @@ int runRender(const RenderArgs& args, bool verbose) {
             "--out: '" + args.out + "': the format follows the extension: .png, .jpg or .jpeg");
     }
     const auto loadStart = std::chrono::steady_clock::now();
-    gnomon::Scene scene = gnomon::cli::loadWithProgress(args.scene);
+    gnomon::Scene scene = gnomon::cli::loadWithProgress(args.scene, args.flags.upAxis());
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart)
             .count();

@@ -351,6 +351,20 @@ scene_flags)
     run render --scene tutorial-room --size 32x32 --out "$work/f.png" --camera-eye 6,4,8
     grep -q "sees none" "$work/stderr" && fail "warned of a camera that sees the room"
     ;;
+up_axis)
+    # A Z-up model (CAD's STL) stands up with --up z; --up names model files' axes only.
+    post="$(dirname "$0")/../data/models/post_z_up.stl"
+    run render --scene "$post" --size 32x32 --out "$work/lying.png"
+    skip_without_gl
+    run render --scene "$post" --size 32x32 --out "$work/standing.png" --up z
+    [[ $(cat "$work/code") == 0 ]] || fail "--up z: $(cat "$work/stderr")"
+    cmp -s "$work/lying.png" "$work/standing.png" && fail "--up z changed nothing"
+    run render --scene "$post" --out "$work/bad.png" --up w
+    expect 2 "--up: expected one of x, y, z, got 'w'"
+    run render --scene tutorial-room --out "$work/bad.png" --up z
+    expect 2 "--up applies to model files; 'tutorial-room' is a built-in scene"
+    [[ ! -e "$work/bad.png" ]] || fail "a refused render left bad.png"
+    ;;
 pointless_flags)
     # A flag the other options make pointless is said once, and the render still runs.
     run render --scene book-triangle --size 32x32 --out "$work/p.png" --filter pcss --pcf-size 5

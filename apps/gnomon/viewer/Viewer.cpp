@@ -277,7 +277,7 @@ int runView(const ViewArgs& args, bool verbose) {
         script = view::parseScript(text.str(), args.script);
     }
     view::State state;
-    view::load(state, args.scene, args.flags.ground);
+    view::load(state, args.scene, args.flags.ground, args.flags.upAxis());
     args.flags.placeCameraAndSun(state.scene);
     printWarnings(state.scene);
     state.options = args.flags.resolve(state.scene);
