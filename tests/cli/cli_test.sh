@@ -351,6 +351,19 @@ scene_flags)
     run render --scene tutorial-room --size 32x32 --out "$work/f.png" --camera-eye 6,4,8
     grep -q "sees none" "$work/stderr" && fail "warned of a camera that sees the room"
     ;;
+install)
+    # README's way to a bare `gnomon`: `make install` into a prefix that needs no root.
+    src="$(dirname "$0")/../.."
+    build="$(cd "$(dirname "$gnomon")/../.." && pwd)"
+    make -n -C "$src" install PREFIX="$work/prefix" >"$work/stdout" 2>&1 ||
+        fail "make install: $(cat "$work/stdout")"
+    grep -qF -- "--install build/release --prefix $work/prefix" "$work/stdout" ||
+        fail "make install does not install into PREFIX: $(cat "$work/stdout")"
+    grep -q "make install" "$src/README.md" || fail "README does not say how to install"
+    cmake --install "$build" --prefix "$work/prefix" >/dev/null || fail "cmake --install failed"
+    PATH="$work/prefix/bin:$PATH" gnomon --version >"$work/stdout" 2>&1 ||
+        fail "the installed gnomon does not run: $(cat "$work/stdout")"
+    ;;
 up_axis)
     # A Z-up model (CAD's STL) stands up with --up z; --up names model files' axes only.
     post="$(dirname "$0")/../data/models/post_z_up.stl"
