@@ -85,6 +85,13 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
         // within).
         fitCameraDepth(scene, c);
     }
+    // Eye and target given, the framing camera a loader added is replaced: its warning would
+    // only mislead.
+    if (given("--camera-eye") && given("--camera-target")) {
+        std::erase_if(scene.warnings, [](const std::string& w) {
+            return w.ends_with("no camera: one framing the scene was added");
+        });
+    }
     if (given("--sun")) {
         const auto v = numbers(sun, 2);
         if (!v || !(v->y > 0.0f && v->y <= 90.0f))

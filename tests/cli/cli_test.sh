@@ -183,7 +183,7 @@ view_input)
     run view --window 10x10
     expect 2 "--window: 10x10 is outside"
     run view --script "$work/missing.txt"
-    expect 1 "--script: cannot read"
+    expect 2 "--script: no such file"
     printf 'wait 1\nexplode now\n' >"$work/bad.txt"
     run view --script "$work/bad.txt"
     expect 2 "bad.txt:2: unknown command 'explode'"
@@ -350,6 +350,13 @@ scene_flags)
     expect 0 "sees none of the scene, or all of it within a pixel"
     run render --scene tutorial-room --size 32x32 --out "$work/f.png" --camera-eye 6,4,8
     grep -q "sees none" "$work/stderr" && fail "warned of a camera that sees the room"
+    # A model without a camera gets a framing one, unless the flags place the camera.
+    post="$(dirname "$0")/../data/models/post_z_up.stl"
+    run render --scene "$post" --size 32x32 --out "$work/g.png"
+    expect 0 "no camera: one framing the scene was added"
+    run render --scene "$post" --size 32x32 --out "$work/g.png" --camera-eye 3,2,3 \
+        --camera-target 0,0.5,0 --camera-fov 40
+    grep -q "no camera" "$work/stderr" && fail "warned of a framing camera the flags replaced"
     ;;
 install)
     # README's way to a bare `gnomon`: `make install` into a prefix that needs no root.
@@ -424,6 +431,9 @@ usage)
     # Words nobody took are named as given.
     run render --scene book-triangle --out "$work/w.png" --bogus 1
     expect 2 "gnomon: error: unknown flag or stray value: --bogus 1 (see gnomon render --help)"
+    # A mistyped flag: the nearest one named.
+    run render --scene book-triangle --out "$work/w.png" --map-sise 512
+    expect 2 "unknown flag or stray value: --map-sise 512; did you mean --map-size? (see"
     run
     expect 2 "gnomon: error: "
     ;;

@@ -270,6 +270,10 @@ int runView(const ViewArgs& args, bool verbose) {
     }
     std::vector<view::Command> script;
     if (!args.script.empty()) {
+        std::error_code missing;
+        if (!std::filesystem::is_regular_file(args.script, missing)) {
+            throw Error(ErrorKind::InvalidInput, "--script: no such file '" + args.script + "'");
+        }
         std::ifstream in(args.script, std::ios::binary);
         if (!in) throw Error(ErrorKind::Io, "--script: cannot read '" + args.script + "'");
         std::stringstream text;
