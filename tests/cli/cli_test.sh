@@ -130,7 +130,8 @@ score)
     expect 2 "--error-maps needs --path"
     # tune: a line per trial, the front, and a scene file render takes as is.
     run tune --scene tutorial-room --size 48x48 --sweeps 1 --out-dir "$work/t"
-    expect 0 "front (nothing tried is both faster and better)"
+    expect 0 "front (nothing tried is both faster and better; <- marks the start)"
+    expect 0 "<- start"
     for f in tuned.json tune.json front.svg; do [[ -s "$work/t/$f" ]] || fail "no $f"; done
     run render --scene "$work/t/tuned.json" --out "$work/t/r.png"
     [[ $(cat "$work/code") == 0 && -s "$work/t/r.png" ]] || fail "tuned.json does not render"
