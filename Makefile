@@ -17,8 +17,11 @@ else
 endif
 GNOMON := $(BUILD_DIR)/apps/gnomon/gnomon
 OUT ?= out
+# `make install`: gnomon into PREFIX/bin (and the library for find_package); the default needs
+# no root and ~/.local/bin is on PATH in Debian's default profile once it exists.
+PREFIX ?= $(HOME)/.local
 
-.PHONY: all deps configure build demo test format clean
+.PHONY: all deps configure build demo test install format clean
 all: build
 
 deps:
@@ -35,6 +38,10 @@ demo: build
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+install: build
+	@cmake --install $(BUILD_DIR) --prefix $(PREFIX) >/dev/null
+	@echo "installed $(PREFIX)/bin/gnomon"
 
 format:
 	@git ls-files --cached --others --exclude-standard '*.cpp' '*.h' | xargs clang-format -i

@@ -314,7 +314,7 @@ int runBench(const BenchArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput,
                     "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
     }
-    Scene base = loadWithProgress(args.scene);
+    Scene base = loadWithProgress(args.scene, args.flags.upAxis());
     args.flags.editSceneAndWarn(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     const std::vector<std::string> values = sweepValues(args);

@@ -87,10 +87,10 @@ void Activity::run() {
     }
 }
 
-Scene loadWithProgress(const std::string& nameOrPath) {
+Scene loadWithProgress(const std::string& nameOrPath, UpAxis up) {
     Scene scene = [&] {
         const Activity activity("loading " + nameOrPath);
-        return loadScene(nameOrPath);
+        return loadScene(nameOrPath, up);
     }();
     checkInterrupt("loading " + nameOrPath);
     return scene;

@@ -56,6 +56,6 @@ private:
 };
 
 // loadScene with an activity line ("loading Sponza.gltf"), then an interrupt check.
-Scene loadWithProgress(const std::string& nameOrPath);
+Scene loadWithProgress(const std::string& nameOrPath, UpAxis up = UpAxis::Y);
 
 }  // namespace gnomon::cli

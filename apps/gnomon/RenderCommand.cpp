@@ -47,6 +47,10 @@ std::optional<glm::vec3> numbers(const std::string& text, int n) {
 
 }  // namespace
 
+UpAxis RenderFlags::upAxis() const {
+    return parseEnum<UpAxis>("--up", up, parseUpAxis, "x, y, z");
+}
+
 void RenderFlags::editScene(Scene& scene) const {
     if (ground) addGround(scene);
     placeCameraAndSun(scene);
@@ -81,6 +85,13 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
         // within).
         fitCameraDepth(scene, c);
     }
+    // Eye and target given, the framing camera a loader added is replaced: its warning would
+    // only mislead.
+    if (given("--camera-eye") && given("--camera-target")) {
+        std::erase_if(scene.warnings, [](const std::string& w) {
+            return w.ends_with("no camera: one framing the scene was added");
+        });
+    }
     if (given("--sun")) {
         const auto v = numbers(sun, 2);
         if (!v || !(v->y > 0.0f && v->y <= 90.0f))
@@ -112,6 +123,11 @@ void RenderFlags::add(CLI::App& a) {
                "add a grey ground under the scene (receives shadows, casts none), for models "
                "without a floor")
         ->group("Output");
+    a.add_option("--up", up,
+                 "the model file's up axis, turned to +y as it loads (glTF is y by its "
+                 "specification; STL, older OBJ and CAD exports are often z)")
+        ->type_name("x|y|z")
+        ->group("Scene");
     a.add_option("--camera-eye", cameraEye, "place the camera's eye at X,Y,Z (world units)")
         ->type_name("X,Y,Z")
         ->group("Scene");

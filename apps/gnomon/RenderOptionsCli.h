@@ -24,6 +24,7 @@ struct RenderFlags {
     // One text per option of the schema (gnomon/OptionSchema.h), by name: what was given.
     std::map<std::string, std::string> values;
     bool ground = false;
+    std::string up = "y";  // --up: the model file's up axis, a load setting
     // Scene edits: the camera, and one sun instead of the scene's lights.
     std::string cameraEye, cameraTarget, sun;
     float cameraFov = 0.0f;
@@ -31,6 +32,8 @@ struct RenderFlags {
 
     // Declares the flags on `app`.
     void add(CLI::App& app);
+    // --up as an axis; throws gnomon::Error for anything but x, y or z.
+    UpAxis upAxis() const;
     // The options for `scene`: the --preset's (default: the scene's own), then every flag
     // given applied over them. Throws gnomon::Error for bad values.
     RenderOptions resolve(const Scene& scene) const;

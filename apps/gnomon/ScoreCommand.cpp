@@ -157,7 +157,7 @@ int runScore(const ScoreArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput, "--max-error must be a fraction in [0, 1], got " +
                                                  std::to_string(args.maxError));
     }
-    Scene scene = loadWithProgress(args.scene);
+    Scene scene = loadWithProgress(args.scene, args.flags.upAxis());
     args.flags.editSceneAndWarn(scene);
     const RenderOptions options = args.flags.resolve(scene);
     ContextOptions context;

@@ -58,15 +58,15 @@ double pct(double f) {
     return 100.0 * f;
 }
 
-void printTrial(std::size_t i, const TuneTrial& t, double budget) {
+void printTrial(std::size_t i, const TuneTrial& t, double budget, const char* mark = "") {
     if (!t.failure.empty()) {
         std::printf("%5zu  failed (never chosen): %s: %s\n", i, t.flags.c_str(), t.failure.c_str());
         std::fflush(stdout);
         return;
     }
-    std::printf("%5zu  %13.3f%%  %13.3f%%  %9.1f%s  %s\n", i, pct(t.misclassified),
+    std::printf("%5zu  %13.3f%%  %13.3f%%  %9.1f%s  %s%s\n", i, pct(t.misclassified),
                 pct(t.awayFromEdges), t.frameMs, t.frameMs > budget ? "*" : " ",
-                t.flags.empty() ? "(starting settings)" : t.flags.c_str());
+                t.flags.empty() ? "(starting settings)" : t.flags.c_str(), mark);
     std::fflush(stdout);
 }
 
@@ -110,22 +110,37 @@ void printSummary(const TuneResult& r, double timeLimit) {
             "best found so far is kept (--time-limit 0 searches to the end)\n",
             timeLimit, r.trials.size(), r.sweeps);
     }
-    std::printf("\nfront (nothing tried is both faster and better):\n");
-    for (int i : r.front)
-        printTrial(std::size_t(i), r.trials[std::size_t(i)], r.budgetMs);
+    // The front, fastest first, with the starting settings in their place among it.
+    std::printf("\nfront (nothing tried is both faster and better; <- marks the start):\n");
+    bool startShown = false;
+    for (int i : r.front) {
+        if (!startShown && i != 0 && start.frameMs < r.trials[std::size_t(i)].frameMs) {
+            printTrial(0, start, r.budgetMs, "  <- start, not on the front");
+            startShown = true;
+        }
+        printTrial(std::size_t(i), r.trials[std::size_t(i)], r.budgetMs,
+                   i == 0 ? "  <- start" : "");
+        startShown = startShown || i == 0;
+    }
+    if (!startShown) printTrial(0, start, r.budgetMs, "  <- start, not on the front");
     if (r.beatsStart < 0) {
-        std::printf("the starting settings are on the front\n");
+        std::printf("nothing tried beats the starting settings\n");
     } else {
-        std::printf(
-            "the starting settings are not on the front: trial %d is better and no "
-            "slower\n",
-            r.beatsStart);
+        std::printf("trial %d beats the starting settings (%s)\n", r.beatsStart,
+                    r.trials[std::size_t(r.beatsStart)].error < start.error ? "better, no slower"
+                                                                            : "as good, faster");
     }
     if (r.best < 0) {
         std::printf("no setting tried fits the budget of %.1f ms\n", r.budgetMs);
         return;
     }
     const TuneTrial& best = r.trials[std::size_t(r.best)];
+    if (r.chosen > 0 && r.sameQuality) {
+        const TuneTrial& c = r.trials[std::size_t(r.chosen)];
+        std::printf("same quality, %.0f %% cheaper: `%s` (%.1f ms from %.1f)\n",
+                    100.0 * (1.0 - c.frameMs / start.frameMs), c.flags.c_str(), c.frameMs,
+                    start.frameMs);
+    }
     if (r.best == 0) {
         std::printf(
             "the starting settings are already the best within %.1f ms: %.3f%% "
@@ -164,7 +179,7 @@ int runTune(const TuneArgs& args, bool verbose) {
         throw Error(ErrorKind::InvalidInput, "--budget-ms must be in [0, 1e6)");
     if (!(args.options.timeLimitSeconds >= 0.0 && args.options.timeLimitSeconds < 1e7))
         throw Error(ErrorKind::InvalidInput, "--time-limit must be in [0, 1e7) seconds");
-    Scene scene = loadWithProgress(args.scene);
+    Scene scene = loadWithProgress(args.scene, args.flags.upAxis());
     args.flags.editSceneAndWarn(scene);
     const RenderOptions start = args.flags.resolve(scene);
     TuneOptions options = args.options;

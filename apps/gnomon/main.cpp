@@ -96,7 +96,7 @@ int runRender(const RenderArgs& args, bool verbose) {
             "--out: '" + args.out + "': the format follows the extension: .png, .jpg or .jpeg");
     }
     const auto loadStart = std::chrono::steady_clock::now();
-    gnomon::Scene scene = gnomon::cli::loadWithProgress(args.scene);
+    gnomon::Scene scene = gnomon::cli::loadWithProgress(args.scene, args.flags.upAxis());
     const double loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loadStart)
             .count();
@@ -218,6 +218,25 @@ bool unknownCommand(int argc, char** argv, const CLI::App& app) {
     return false;
 }
 
+// For a word nobody took that looks like a flag ("--map-sise"), the nearest flag of `app` a
+// few typing slips away ("; did you mean --map-size?"), else "".
+std::string nearestFlag(const std::string& word, const CLI::App& app) {
+    if (word.rfind("--", 0) != 0) return "";
+    const std::string typed = word.substr(2, word.find('=') - 2);
+    std::string nearest;
+    std::size_t best = std::max<std::size_t>(2, typed.size() / 4) + 1;
+    for (const CLI::Option* o : app.get_options()) {
+        for (const std::string& name : o->get_lnames()) {
+            const std::size_t d = editDistance(typed, name);
+            if (d < best) {
+                best = d;
+                nearest = name;
+            }
+        }
+    }
+    return nearest.empty() ? "" : "; did you mean --" + nearest + "?";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -289,8 +308,14 @@ int main(int argc, char** argv) {
         std::string what = e.what();
         if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
             what = "unknown flag or stray value:";
-            for (const std::string& word : app.remaining())
+            const CLI::App& command =
+                app.get_subcommands().empty() ? app : *app.get_subcommands().front();
+            std::string hint;
+            for (const std::string& word : app.remaining()) {
                 what += " " + word;
+                if (hint.empty()) hint = nearestFlag(word, command);
+            }
+            what += hint;
         }
         std::fprintf(stderr, "gnomon: error: %s (see gnomon%s --help)\n", what.c_str(),
                      app.get_subcommands().empty()

@@ -282,8 +282,18 @@ bool cameraSeesScene(const Scene& scene, int width, int height);
 std::vector<SceneInfo> builtinScenes();
 // A built-in scene by name; throws gnomon::Error listing the known names.
 Scene builtinScene(const std::string& name);
-// A built-in scene name or a path to a model file; throws gnomon::Error.
-Scene loadScene(const std::string& nameOrPath);
+// Which model axis points up. glTF is Y-up by its specification; STL, 3DS-era OBJ and CAD
+// exports are often Z-up. assimp already turns COLLADA files by their up_axis and 3DS files
+// from Z-up, so the axis names the model as assimp hands it over.
+enum class UpAxis { Y, Z, X };
+const char* toString(UpAxis v);
+// "x", "y" or "z" (any case); nullopt for anything else.
+std::optional<UpAxis> parseUpAxis(const std::string& text);
+
+// A built-in scene name or a path to a model file; throws gnomon::Error. A model file is
+// turned so that `up` becomes +y before its camera and sun are placed; `up` other than Y for
+// a built-in scene or a scene file (whose includes carry their own "up") is an error.
+Scene loadScene(const std::string& nameOrPath, UpAxis up = UpAxis::Y);
 // Adds a grey ground under the scene (a receiver that casts nothing) so models without a
 // floor show their shadows: a square ten times the scene's radius wide, facing +y (glTF's
 // up) just below the lowest point at options.time 0. Does nothing to an empty scene.

@@ -25,9 +25,10 @@ Scene parseSceneFile(const std::string& text, const std::string& path);
 // or scene file, written relative to the output file's folder) without its lights and camera,
 // followed by `scene`'s lights, camera and ambient and every field of `options`: what a viewer
 // saves so `gnomon render --scene saved.json` reproduces what was tuned. `ground` writes
-// "ground": true (the scene had addGround() applied over its source). Throws gnomon::Error
-// (Io when it cannot write, InvalidInput for a value JSON cannot hold, such as NaN).
+// "ground": true (the scene had addGround() applied over its source); `up` other than Y, the
+// include's "up" (the model file was loaded with --up). Throws gnomon::Error (Io when it
+// cannot write, InvalidInput for a value JSON cannot hold, such as NaN).
 void saveSceneFile(const std::string& path, const std::string& source, const Scene& scene,
-                   const RenderOptions& options, bool ground = false);
+                   const RenderOptions& options, bool ground = false, UpAxis up = UpAxis::Y);
 
 }  // namespace gnomon

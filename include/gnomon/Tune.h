@@ -65,15 +65,19 @@ struct TuneTrial {
 
 struct TuneResult {
     std::vector<TuneTrial> trials;  // trials[0]: the starting settings
-    int best = -1;                  // the lowest error within the budget (-1: none fits)
-    std::vector<int> front;         // error-versus-time front, fastest first
-    // No trial has a lower error for no more time than the starting settings (-1: none
-    // beats them), else the first trial that does.
+    // The lowest error within the budget and, of the errors the same as it, the fastest (-1:
+    // none fits).
+    int best = -1;
+    std::vector<int> front;  // error-versus-time front, fastest first
+    // The first trial that beats the starting settings (-1: none): a lower error for no more
+    // time, or the same error for less. Errors are the same when they differ by less than 2 %
+    // of the larger or 2 pixels, whichever is more; times within 5 % are the same, and a
+    // trial within 5 % over the budget fits it.
     int beatsStart = -1;
     // The best against the starting settings on the views shifted by half a pixel
     // (TuneOptions::checkShifted), one error per shift (the mean over the views), and whether
-    // the best's was lower on each: a sign test, which four shifts out of four pass by chance
-    // once in sixteen where the two settings are alike. Not done (`done` false) when the best
+    // the best's was no worse on each (lower, or the same as above): a setting whose gain is
+    // the pixel grid's loses on some shift. Not done (`done` false) when the best
     // is the starting settings, none fits the budget, or the search was interrupted.
     struct ShiftCheck {
         bool done = false;
@@ -84,6 +88,9 @@ struct TuneResult {
     // the best, unless the shifted views did not bear its gain out, then the starting
     // settings (0); -1 when no setting fits the budget.
     int chosen = -1;
+    // The chosen setting (not the starting one) has the starting settings' error, as above:
+    // it saves time at the same quality.
+    bool sameQuality = false;
     double budgetMs = 0.0;
     int views = 0;
     int sweeps = 0;

@@ -301,7 +301,7 @@ Camera shiftedCamera(const Camera& c, int height, float dx, float dy) {
 TuneResult::ShiftCheck checkShifted(Renderer& renderer, Scene& scene,
                                     const std::vector<Camera>& views, const TuneOptions& options,
                                     const Setting& first, const Setting& best,
-                                    double& traceSeconds) {
+                                    const search::Noise& noise, double& traceSeconds) {
     const glm::vec2 shifts[] = {{0.5f, 0.0f}, {-0.5f, 0.0f}, {0.0f, 0.5f}, {0.0f, -0.5f}};
     TuneResult::ShiftCheck check;
     check.done = check.holds = true;
@@ -312,7 +312,8 @@ TuneResult::ShiftCheck checkShifted(Renderer& renderer, Scene& scene,
         Evaluator evaluator(renderer, scene, moved, options);
         check.startErrors.push_back(evaluator.error(first, traceSeconds));
         check.bestErrors.push_back(evaluator.error(best, traceSeconds));
-        check.holds = check.holds && check.bestErrors.back() < check.startErrors.back();
+        check.holds = check.holds &&
+                      search::noWorse(check.bestErrors.back(), check.startErrors.back(), noise);
     }
     return check;
 }
@@ -352,6 +353,9 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     // first trial's are kept back.
     const double checkSeconds =
         options.checkShifted ? 4.0 * result.traceSeconds + 8.0 * evaluator.lastScoreSeconds() : 0.0;
+    // Errors are fractions of the pixels of every view: two pixels is the score's floor.
+    search::Noise noise;
+    noise.pixels = double(start.width) * double(start.height) * double(views.size());
     std::map<search::Point, int> trialOf = {{startPoint, 0}};
     const search::SearchResult found = search::coordinateDescent(
         space.parameters, startPoint, result.budgetMs,
@@ -372,7 +376,8 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
             result.timedOut = options.timeLimitSeconds > 0.0 &&
                               elapsed() + checkSeconds >= options.timeLimitSeconds;
             return result.timedOut;
-        });
+        },
+        noise);
     result.sweeps = found.sweeps;
     result.trades = found.trades;
     result.interrupted = found.stopped && !result.timedOut;
@@ -383,7 +388,7 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
         const TuneTrial& bestTrial = result.trials[std::size_t(result.best)];
         const Setting best{bestTrial.options, bestTrial.mapSizes};
         result.shifted =
-            checkShifted(renderer, scene, views, options, first, best, result.traceSeconds);
+            checkShifted(renderer, scene, views, options, first, best, noise, result.traceSeconds);
         if (!result.shifted.holds) result.chosen = 0;
         result.seconds = elapsed();
     }
@@ -391,10 +396,10 @@ TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
     for (const TuneTrial& t : result.trials)
         all.push_back({{}, {t.error, t.frameMs}});
     result.front = search::paretoFront(all);
-    // An equal error found faster is timing noise as often as not: it does not count.
-    for (std::size_t i = 1; i < result.trials.size() && result.beatsStart < 0; ++i) {
-        const TuneTrial &t = result.trials[i], &s0 = result.trials.front();
-        if (t.error < s0.error && t.frameMs <= s0.frameMs) result.beatsStart = int(i);
+    result.beatsStart = search::beatsFirst(all, noise);
+    if (result.chosen > 0) {
+        const TuneTrial& c = result.trials[std::size_t(result.chosen)];
+        result.sameQuality = search::errorsTie(c.error, result.trials[0].error, noise);
     }
     return result;
 }
@@ -433,6 +438,7 @@ std::string toJson(const TuneResult& r, const std::string& scene) {
     j["start_on_front"] = r.beatsStart < 0;
     j["beats_start"] = r.beatsStart;
     j["chosen"] = r.chosen;
+    j["same_quality"] = r.sameQuality;
     if (r.shifted.done) {
         j["shifted"] = {{"start_errors", r.shifted.startErrors},
                         {"best_errors", r.shifted.bestErrors},

@@ -1,6 +1,7 @@
 #include "lab/TuneSearch.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 
@@ -34,19 +35,17 @@ class Descent {
 public:
     Descent(const std::vector<Parameter>& parameters, double budgetMs,
             const std::function<Evaluation(const Point&)>& evaluate,
-            const std::function<bool()>& stop, SearchResult& result)
+            const std::function<bool()>& stop, const Noise& noise, SearchResult& result)
         : mParameters(parameters),
           mBudget(budgetMs),
+          mNoise(noise),
           mStop(stop),
           mResult(result),
           mMemo(result, evaluate) {}
 
     // The start is always evaluated, asked to stop or not: it is the point every result
     // holds (and, in gnomon tune, the budget).
-    void start(const Point& p) {
-        mCurrent = mMemo.trial(p);
-        consider(mCurrent);
-    }
+    void start(const Point& p) { mCurrent = mMemo.trial(p); }
 
     // Every other value of each parameter in turn, the rest held; the current point moves
     // to the best within the budget that lowers the error (an over-budget current point
@@ -77,7 +76,9 @@ public:
         for (std::size_t p = 0; p < mParameters.size(); ++p) {
             // Every trial is known already after a sweep that stayed.
             const bool going = eachOtherValue(p, [&](int t) {
-                if (!feasible(t) && error(t) < error(mCurrent)) over.push_back({p, t});
+                if (!feasible(t) && error(t) < error(mCurrent) &&
+                    !errorsTie(error(t), error(mCurrent), mNoise))
+                    over.push_back({p, t});
                 if (ms(t) < ms(mCurrent)) faster.push_back({p, t});
             });
             if (!going) return std::nullopt;
@@ -119,20 +120,19 @@ private:
     const Point& point(int t) const { return mResult.trials[std::size_t(t)].point; }
     double error(int t) const { return mResult.trials[std::size_t(t)].eval.error; }
     double ms(int t) const { return mResult.trials[std::size_t(t)].eval.ms; }
-    bool feasible(int t) const { return ms(t) <= mBudget; }
+    bool feasible(int t) const { return fitsBudget(ms(t), mBudget, mNoise); }
     bool stopping() { return mStop && (mResult.stopped = mStop()); }
-    void consider(int t) {
-        if (feasible(t) && (mResult.best < 0 || error(t) < error(mResult.best))) mResult.best = t;
-    }
     // `t` (just evaluated) or `incumbent`, whichever the current point should move to.
-    int better(int t, int incumbent) {
-        consider(t);
-        const bool wins = feasible(t) && (!feasible(incumbent) || error(t) < error(incumbent));
+    int better(int t, int incumbent) const {
+        const Evaluation& a = mResult.trials[std::size_t(t)].eval;
+        const Evaluation& b = mResult.trials[std::size_t(incumbent)].eval;
+        const bool wins = feasible(t) && (!feasible(incumbent) || preferred(a, b, mNoise));
         return wins ? t : incumbent;
     }
 
     const std::vector<Parameter>& mParameters;
     double mBudget;
+    const Noise& mNoise;
     const std::function<bool()>& mStop;
     SearchResult& mResult;
     Memo mMemo;
@@ -141,23 +141,77 @@ private:
 
 }  // namespace
 
+bool errorsTie(double a, double b, const Noise& noise) {
+    const double pixel = noise.pixels > 0.0 ? noise.minPixels / noise.pixels : 0.0;
+    return std::abs(a - b) < std::max(noise.relative * std::max(a, b), pixel) || a == b;
+}
+
+bool noWorse(double a, double b, const Noise& noise) {
+    return a <= b || errorsTie(a, b, noise);
+}
+
+bool fitsBudget(double ms, double budgetMs, const Noise& noise) {
+    return ms <= budgetMs * (1.0 + noise.budgetSlack);
+}
+
+bool preferred(const Evaluation& a, const Evaluation& b, const Noise& noise) {
+    if (errorsTie(a.error, b.error, noise)) return a.ms < b.ms;
+    return a.error < b.error;
+}
+
+// The least error is found first, then the cheapest of its ties: ties do not chain (a trial
+// tying a tie of the least error may be clearly worse than it).
+int chooseBest(const std::vector<Trial>& trials, double budgetMs, const Noise& noise) {
+    int least = -1;
+    for (std::size_t i = 0; i < trials.size(); ++i) {
+        if (!fitsBudget(trials[i].eval.ms, budgetMs, noise)) continue;
+        if (least < 0 || trials[i].eval.error < trials[std::size_t(least)].eval.error)
+            least = int(i);
+    }
+    if (least < 0) return -1;
+    int best = least;
+    for (std::size_t i = 0; i < trials.size(); ++i) {
+        const Evaluation& e = trials[i].eval;
+        if (fitsBudget(e.ms, budgetMs, noise) &&
+            errorsTie(e.error, trials[std::size_t(least)].eval.error, noise) &&
+            e.ms < trials[std::size_t(best)].eval.ms)
+            best = int(i);
+    }
+    return best;
+}
+
+int beatsFirst(const std::vector<Trial>& trials, const Noise& noise) {
+    if (trials.empty()) return -1;
+    const Evaluation& s = trials.front().eval;
+    for (std::size_t i = 1; i < trials.size(); ++i) {
+        const Evaluation& t = trials[i].eval;
+        const bool tie = errorsTie(t.error, s.error, noise);
+        if ((!tie && t.error < s.error && fitsBudget(t.ms, s.ms, noise)) ||
+            (tie && t.ms * (1.0 + noise.budgetSlack) < s.ms))
+            return int(i);
+    }
+    return -1;
+}
+
 SearchResult coordinateDescent(const std::vector<Parameter>& parameters, const Point& start,
                                double budgetMs,
                                const std::function<Evaluation(const Point&)>& evaluate,
-                               int maxSweeps, const std::function<bool()>& stop) {
+                               int maxSweeps, const std::function<bool()>& stop,
+                               const Noise& noise) {
     SearchResult result;
-    Descent descent(parameters, budgetMs, evaluate, stop, result);
+    Descent descent(parameters, budgetMs, evaluate, stop, noise, result);
     descent.start(start);
     for (int sweep = 0; sweep < maxSweeps; ++sweep) {
         const std::optional<bool> moved = descent.sweep();
-        if (!moved) return result;
+        if (!moved) break;
         result.sweeps = sweep + 1;
         if (*moved) continue;
         const std::optional<bool> traded = descent.trade();
-        if (!traded) return result;
+        if (!traded) break;
         if (!*traded) break;
         ++result.trades;
     }
+    result.best = chooseBest(result.trials, budgetMs, noise);
     return result;
 }
 

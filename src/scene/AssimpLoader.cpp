@@ -430,7 +430,7 @@ std::string assimpExtensions() {
 // and spot lights; the first camera. Errors name the file, the element and what is wrong, with
 // assimp's own message where it is the one refusing the file. Every file assimp opens (the
 // model, an OBJ's .mtl) must lie inside the model's folder.
-Scene loadWithAssimp(const std::string& path) {
+Scene loadWithAssimp(const std::string& path, UpAxis up) {
     using namespace assimp_parts;
     checkFile(path);
     const Fail fail{path};
@@ -451,6 +451,7 @@ Scene loadWithAssimp(const std::string& path) {
     LoadedModel loaded;
     loaded.file = path;
     loaded.zeroAreaTriangles = cx.zeroArea;
+    loaded.up = up;
     if (cx.ai.mNumCameras > 0) {
         loaded.placeCamera = [&cx](Camera& cam, const Aabb& bounds) {
             readCamera(cx, cam, bounds);

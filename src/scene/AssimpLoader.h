@@ -17,6 +17,6 @@ std::string assimpExtensions();
 // element and what is wrong for anything malformed or unusable (assimp's own message
 // included). External files (materials, textures) are read only from inside the model's
 // folder.
-Scene loadWithAssimp(const std::string& path);
+Scene loadWithAssimp(const std::string& path, UpAxis up = UpAxis::Y);
 
 }  // namespace gnomon

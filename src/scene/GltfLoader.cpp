@@ -440,7 +440,7 @@ void placeCamera(const tinygltf::Camera& c, const glm::mat4& w, Camera& cam, con
 
 }  // namespace
 
-Scene loadGltf(const std::string& path) {
+Scene loadGltf(const std::string& path, UpAxis up) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
         throw Error(ErrorKind::InvalidInput, "cannot load scene '" + path + "': no such file");
@@ -452,7 +452,7 @@ Scene loadGltf(const std::string& path) {
     std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
                                      std::istreambuf_iterator<char>());
     if (!in.good() && !in.eof()) throw Error(ErrorKind::Io, "cannot read '" + path + "'");
-    return loadGltf(bytes, path, fs::absolute(path).parent_path().string());
+    return loadGltf(bytes, path, fs::absolute(path).parent_path().string(), up);
 }
 
 // What it reads: the default scene's node hierarchy (matrix or TRS), triangle primitives
@@ -464,7 +464,7 @@ Scene loadGltf(const std::string& path) {
 // casters), KHR_lights_punctual and cameras. Skins and animations are left
 // at the rest pose. Errors name the file, the element (`accessors[3]`) and what is wrong.
 Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
-               const std::string& folderPath) {
+               const std::string& folderPath, UpAxis up) {
     const tinygltf::Model model = parseModel(bytes, path, folderPath);
     const Reader read(model, path);
 
@@ -483,6 +483,7 @@ Scene loadGltf(const std::vector<unsigned char>& bytes, const std::string& path,
     loaded.file = path;
     loaded.zeroAreaTriangles = cx.zeroArea;
     loaded.photometricLights = true;
+    loaded.up = up;
     if (!walk.cameras.empty() && std::size_t(walk.cameras.front().index) < model.cameras.size()) {
         const tinygltf::Camera& c = model.cameras[std::size_t(walk.cameras.front().index)];
         const glm::mat4 world = walk.cameras.front().world;

@@ -81,9 +81,9 @@ GltfHeader peekGltf(const std::string& path) {
 
 // A glTF file: tinygltf for 2.0, assimp for what it refuses as 1.0 (asked only after a
 // refusal, so a 2.0 file is read once); a refusal names the extensions the file requires.
-Scene loadAnyGltf(const std::string& path) {
+Scene loadAnyGltf(const std::string& path, UpAxis up) {
     try {
-        return loadGltf(path);
+        return loadGltf(path, up);
     } catch (const Error& e) {
         const GltfHeader h = peekGltf(path);
         if (!h.version1) {
@@ -102,7 +102,7 @@ Scene loadAnyGltf(const std::string& path) {
                             "nor assimp reads; convert it to glTF 2.0");
         }
     }
-    return loadWithAssimp(path);
+    return loadWithAssimp(path, up);
 }
 
 std::string lowerExtension(const std::filesystem::path& p) {
@@ -134,9 +134,15 @@ std::string lowerExtension(const std::filesystem::path& p) {
                 "cannot load scene '" + path + "': it is a folder; " + hint);
 }
 
+// --up names a model file's axis; scene files and built-in scenes are already upright.
+[[noreturn]] void refuseUp(const std::string& nameOrPath, const std::string& what) {
+    throw Error(ErrorKind::InvalidInput,
+                "--up applies to model files; '" + nameOrPath + "' is " + what);
+}
+
 }  // namespace
 
-Scene loadScene(const std::string& nameOrPath) {
+Scene loadScene(const std::string& nameOrPath, UpAxis up) {
     namespace fs = std::filesystem;
     std::error_code ec;
     const bool looksLikePath =
@@ -149,15 +155,19 @@ Scene loadScene(const std::string& nameOrPath) {
         }
         if (fs::is_directory(nameOrPath, ec)) refuseFolder(nameOrPath);
         const std::string ext = lowerExtension(nameOrPath);
-        if (ext == ".gltf" || ext == ".glb") return loadAnyGltf(nameOrPath);
-        if (ext == ".json") return loadSceneFile(nameOrPath);
-        if (assimpReads(ext)) return loadWithAssimp(nameOrPath);
+        if (ext == ".gltf" || ext == ".glb") return loadAnyGltf(nameOrPath, up);
+        if (ext == ".json") {
+            if (up != UpAxis::Y) refuseUp(nameOrPath, "a scene file: give \"up\" on its include");
+            return loadSceneFile(nameOrPath);
+        }
+        if (assimpReads(ext)) return loadWithAssimp(nameOrPath, up);
         throw Error(ErrorKind::InvalidInput,
                     "cannot load scene '" + nameOrPath + "': '" + ext +
                         "' files are not supported; gnomon reads glTF 2.0 (.gltf, .glb), scene "
                         "files (.json) and, through assimp, glTF 1.0 and " +
                         assimpExtensions());
     }
+    if (up != UpAxis::Y) refuseUp(nameOrPath, "a built-in scene, which stands as it is");
     return builtinScene(nameOrPath);
 }
 

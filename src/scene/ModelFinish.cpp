@@ -32,7 +32,61 @@ void scaleLights(Scene& scene, float radius) {
     }
 }
 
+// Turns what the file placed (objects, their spins, lights, the file's camera) by `t`.
+void turnModel(Scene& scene, const glm::mat4& t) {
+    const glm::mat3 r(t);
+    for (Object& o : scene.objects) {
+        o.worldFromModel = t * o.worldFromModel;
+        o.spin.pivot = r * o.spin.pivot;
+        o.spin.axis = r * o.spin.axis;
+    }
+    for (Light& l : scene.lights) {
+        l.position = r * l.position;
+        l.direction = r * l.direction;
+    }
+}
+
+void turnCamera(Camera& camera, const glm::mat4& t) {
+    const glm::mat3 r(t);
+    camera.eye = r * camera.eye;
+    camera.centre = r * camera.centre;
+    camera.up = r * camera.up;
+}
+
 }  // namespace
+
+const char* toString(UpAxis v) {
+    switch (v) {
+        case UpAxis::Y:
+            return "y";
+        case UpAxis::Z:
+            return "z";
+        case UpAxis::X:
+            return "x";
+    }
+    return "?";
+}
+
+std::optional<UpAxis> parseUpAxis(const std::string& text) {
+    if (text == "y" || text == "Y") return UpAxis::Y;
+    if (text == "z" || text == "Z") return UpAxis::Z;
+    if (text == "x" || text == "X") return UpAxis::X;
+    return std::nullopt;
+}
+
+glm::mat4 worldFromUp(UpAxis up) {
+    switch (up) {
+        case UpAxis::Z:
+            return glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0),
+                             glm::vec4(0, 0, 0, 1));
+        case UpAxis::X:
+            return glm::mat4(glm::vec4(0, 1, 0, 0), glm::vec4(-1, 0, 0, 0), glm::vec4(0, 0, 1, 0),
+                             glm::vec4(0, 0, 0, 1));
+        case UpAxis::Y:
+            break;
+    }
+    return glm::mat4(1.0f);
+}
 
 void untextureObjectsWithoutUvs(Scene& scene) {
     std::map<std::uint32_t, std::uint32_t> copyOf;
@@ -109,14 +163,19 @@ void finishModelScene(Scene& scene, const LoadedModel& loaded) {
     }
     if (scene.objects.empty()) fail("the scene has no triangles to draw");
 
-    // World bounds of what is drawn (as the renderer's fitting sees them).
-    const Aabb bounds = worldBounds(scene, meshBounds(scene), 0.0, false);
-    if (loaded.photometricLights) scaleLights(scene, std::max(bounds.radius(), 1e-6f));
+    // The file's camera is placed in the file's frame, then turned with the model; a camera
+    // framing the model is placed once the model stands up.
+    const glm::mat4 upright = worldFromUp(loaded.up);
+    const std::vector<Aabb> modelBounds = meshBounds(scene);
     if (loaded.placeCamera) {
-        loaded.placeCamera(scene.camera, bounds);
-    } else {
-        frameWithCamera(scene, bounds);
+        loaded.placeCamera(scene.camera, worldBounds(scene, modelBounds, 0.0, false));
+        turnCamera(scene.camera, upright);
     }
+    if (loaded.up != UpAxis::Y) turnModel(scene, upright);
+    // World bounds of what is drawn (as the renderer's fitting sees them).
+    const Aabb bounds = worldBounds(scene, modelBounds, 0.0, false);
+    if (loaded.photometricLights) scaleLights(scene, std::max(bounds.radius(), 1e-6f));
+    if (!loaded.placeCamera) frameWithCamera(scene, bounds);
     addDefaultSun(scene);  // placed for the camera
     scene.options.width = scene.options.height = 512;
     scene.options.shading.output = OutputEncoding::Srgb;

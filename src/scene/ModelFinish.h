@@ -17,17 +17,22 @@ struct LoadedModel {
     std::string file;                // named in the error when nothing was read
     long zeroAreaTriangles = 0;      // skipped by the loader; reported once
     bool photometricLights = false;  // intensities in candela and lux (glTF)
+    UpAxis up = UpAxis::Y;           // the model's up axis, turned to +y (--up)
     // Places the file's own camera, given the bounds of what is drawn; empty when the file
     // has no camera (one framing the model is added).
     std::function<void(Camera&, const Aabb& bounds)> placeCamera;
 };
 
-// The loaders' last step: objects whose material is textured but whose mesh has no texture
-// coordinates untextured, skipped triangles reported, photometric lights scaled for display,
-// a default sun when there is no light, the file's camera or one framing the model, and a
-// model's render settings (512x512, sRGB output as viewers show authored colours). Throws
-// gnomon::Error (InvalidInput, naming the file) when there is nothing to draw or the result
-// is inconsistent.
+// The rotation that takes `up` to +y: Z-up models turn -90 degrees about x (+z to +y, +y to
+// -z), X-up ones +90 degrees about z.
+glm::mat4 worldFromUp(UpAxis up);
+
+// The loaders' last step: the model turned by worldFromUp(loaded.up), objects whose material is
+// textured but whose mesh has no texture coordinates untextured, skipped triangles reported,
+// photometric lights scaled for display, a default sun when there is no light, the file's camera or
+// one framing the model, and a model's render settings (512x512, sRGB output as viewers show
+// authored colours). Throws gnomon::Error (InvalidInput, naming the file) when there is nothing to
+// draw or the result is inconsistent.
 void finishModelScene(Scene& scene, const LoadedModel& loaded);
 
 // Objects whose material is textured but whose mesh has no texture coordinates get an

@@ -57,10 +57,12 @@ Scene loadFile(const std::string& path, LoadState& state) {
     return parseText(readFileText(path, "scene file"), path, state);
 }
 
-// The included scene, as a built-in name or a path relative to the including file's folder.
+// The included scene, as a built-in name or a path relative to the including file's folder;
+// a model file turned so that `up` stands up (built-in scenes and scene files are upright).
 Scene loadInclude(const Reader& r, const std::string& name, const std::string& at,
-                  const std::string& folder, LoadState& state) {
+                  const std::string& folder, UpAxis up, LoadState& state) {
     if (!looksLikePath(name)) {
+        if (up != UpAxis::Y) r.fail(at, "\"up\" applies to model files, not built-in scenes");
         try {
             return builtinScene(name);
         } catch (const Error& e) {
@@ -73,7 +75,8 @@ Scene loadInclude(const Reader& r, const std::string& name, const std::string& a
     if (!fs::exists(file, ec)) r.fail(at, "no such file '" + file + "'");
     const std::string ext = lowerExtension(file);
     try {
-        if (ext != ".json") return loadScene(file);
+        if (ext != ".json") return loadScene(file, up);
+        if (up != UpAxis::Y) r.fail(at, "\"up\" applies to model files, not scene files");
         const std::string canonical = canonicalName(file);
         const auto again = std::find(state.open.begin(), state.open.end(), canonical);
         if (again != state.open.end()) {
@@ -208,10 +211,11 @@ Included readIncludes(const Fields& root, const std::string& folder, LoadState& 
         r.array(*inc, root.at("include"), 0, kMaxIncludes);
         for (std::size_t i = 0; i < inc->size(); ++i) {
             const std::string at = element(root.at("include"), i);
-            const Fields f(
-                r, (*inc)[i], at,
-                {"scene", "transform", "lights", "camera", "casts-shadows", "receives-shadows"});
+            const Fields f(r, (*inc)[i], at,
+                           {"scene", "up", "transform", "lights", "camera", "casts-shadows",
+                            "receives-shadows"});
             const std::string name = r.string(f.need("scene"), f.at("scene"));
+            const UpAxis up = f.find("up") ? readUpAxis(r, *f.find("up"), f.at("up")) : UpAxis::Y;
             glm::mat4 t(1.0f);
             if (const Json* tj = f.find("transform")) t = readTransform(r, *tj, f.at("transform"));
             bool useLights = true, useCamera = true;
@@ -219,7 +223,7 @@ Included readIncludes(const Fields& root, const std::string& folder, LoadState& 
             f.get("camera", useCamera);
             useLights = useLights && !root.has("lights");
             useCamera = useCamera && !root.has("camera");
-            Scene s = loadInclude(r, name, f.at("scene"), folder, state);
+            Scene s = loadInclude(r, name, f.at("scene"), folder, up, state);
             if (i == 0) {
                 included.options = s.options;
                 included.textbook = s.textbookOptions;
@@ -454,7 +458,7 @@ Scene loadSceneFile(const std::string& path) {
 }
 
 void saveSceneFile(const std::string& path, const std::string& source, const Scene& scene,
-                   const RenderOptions& options, bool ground) {
+                   const RenderOptions& options, bool ground, UpAxis up) {
     std::string include = source;
     if (looksLikePath(source)) {
         const fs::path folder = fs::absolute(fs::path(path)).parent_path().lexically_normal();
@@ -462,7 +466,7 @@ void saveSceneFile(const std::string& path, const std::string& source, const Sce
         const fs::path relative = model.lexically_relative(folder);
         include = relative.empty() ? model.generic_string() : relative.generic_string();
     }
-    writeSceneFile(path, include, scene, options, ground);
+    writeSceneFile(path, include, scene, options, ground, up);
 }
 
 namespace scenefile {

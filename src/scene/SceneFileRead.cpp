@@ -135,6 +135,13 @@ const std::vector<std::string>& optionKeys() {
 
 }  // namespace
 
+UpAxis readUpAxis(const Reader& r, const Json& j, const std::string& path) {
+    const std::string text = r.string(j, path);
+    const std::optional<UpAxis> up = parseUpAxis(text);
+    if (!up) r.fail(path, "expected one of x, y, z, got \"" + text + "\"");
+    return *up;
+}
+
 glm::mat4 readTransform(const Reader& r, const Json& j, const std::string& path) {
     if (!j.is_array()) return readOneTransform(r, j, path);
     r.array(j, path, 1, 64);

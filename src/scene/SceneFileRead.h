@@ -18,6 +18,8 @@ namespace gnomon::scenefile {
 // those multiplied in order (the first outermost).
 glm::mat4 readTransform(const Reader& r, const Json& j, const std::string& path);
 glm::vec3 transformPoint(const glm::mat4& m, const glm::vec3& p);
+// An include's "up": "x", "y" or "z".
+UpAxis readUpAxis(const Reader& r, const Json& j, const std::string& path);
 
 // ---- Shapes: "box", "quad", "triangle" or "mesh", and the keys each takes.
 const std::vector<std::string>& shapeNames();

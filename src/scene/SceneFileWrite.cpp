@@ -174,13 +174,14 @@ void writePretty(std::string& out, const OJson& j, int indent) {
 }  // namespace
 
 void writeSceneFile(const std::string& path, const std::string& include, const Scene& scene,
-                    const RenderOptions& options, bool ground) {
+                    const RenderOptions& options, bool ground, UpAxis up) {
     OJson doc;
     doc["gnomon-scene"] = kVersion;
     doc["name"] = scene.name;
     doc["description"] = scene.description;
-    doc["include"] =
-        OJson::array({OJson{{"scene", include}, {"lights", false}, {"camera", false}}});
+    OJson included{{"scene", include}, {"lights", false}, {"camera", false}};
+    if (up != UpAxis::Y) included["up"] = toString(up);
+    doc["include"] = OJson::array({included});
     doc["lights"] = OJson::array();
     for (const Light& l : scene.lights)
         doc["lights"].push_back(lightJson(l));

@@ -11,8 +11,9 @@ namespace gnomon::scenefile {
 
 // Writes (atomically) to `path` a scene file including `include` (as written in the file)
 // without its lights and camera, then `scene`'s lights, camera and ambient and every field of
-// `options`; "ground": true when `ground`. Throws Error (InvalidInput for NaN or infinity).
+// `options`; "ground": true when `ground`; the include's "up" when `up` is not Y. Throws Error
+// (InvalidInput for NaN or infinity).
 void writeSceneFile(const std::string& path, const std::string& include, const Scene& scene,
-                    const RenderOptions& options, bool ground);
+                    const RenderOptions& options, bool ground, UpAxis up = UpAxis::Y);
 
 }  // namespace gnomon::scenefile

@@ -130,7 +130,8 @@ score)
     expect 2 "--error-maps needs --path"
     # tune: a line per trial, the front, and a scene file render takes as is.
     run tune --scene tutorial-room --size 48x48 --sweeps 1 --out-dir "$work/t"
-    expect 0 "front (nothing tried is both faster and better)"
+    expect 0 "front (nothing tried is both faster and better; <- marks the start)"
+    expect 0 "<- start"
     for f in tuned.json tune.json front.svg; do [[ -s "$work/t/$f" ]] || fail "no $f"; done
     run render --scene "$work/t/tuned.json" --out "$work/t/r.png"
     [[ $(cat "$work/code") == 0 && -s "$work/t/r.png" ]] || fail "tuned.json does not render"
@@ -183,7 +184,7 @@ view_input)
     run view --window 10x10
     expect 2 "--window: 10x10 is outside"
     run view --script "$work/missing.txt"
-    expect 1 "--script: cannot read"
+    expect 2 "--script: no such file"
     printf 'wait 1\nexplode now\n' >"$work/bad.txt"
     run view --script "$work/bad.txt"
     expect 2 "bad.txt:2: unknown command 'explode'"
@@ -350,6 +351,40 @@ scene_flags)
     expect 0 "sees none of the scene, or all of it within a pixel"
     run render --scene tutorial-room --size 32x32 --out "$work/f.png" --camera-eye 6,4,8
     grep -q "sees none" "$work/stderr" && fail "warned of a camera that sees the room"
+    # A model without a camera gets a framing one, unless the flags place the camera.
+    post="$(dirname "$0")/../data/models/post_z_up.stl"
+    run render --scene "$post" --size 32x32 --out "$work/g.png"
+    expect 0 "no camera: one framing the scene was added"
+    run render --scene "$post" --size 32x32 --out "$work/g.png" --camera-eye 3,2,3 \
+        --camera-target 0,0.5,0 --camera-fov 40
+    grep -q "no camera" "$work/stderr" && fail "warned of a framing camera the flags replaced"
+    ;;
+install)
+    # README's way to a bare `gnomon`: `make install` into a prefix that needs no root.
+    src="$(dirname "$0")/../.."
+    build="$(cd "$(dirname "$gnomon")/../.." && pwd)"
+    make -n -C "$src" install PREFIX="$work/prefix" >"$work/stdout" 2>&1 ||
+        fail "make install: $(cat "$work/stdout")"
+    grep -qF -- "--install build/release --prefix $work/prefix" "$work/stdout" ||
+        fail "make install does not install into PREFIX: $(cat "$work/stdout")"
+    grep -q "make install" "$src/README.md" || fail "README does not say how to install"
+    cmake --install "$build" --prefix "$work/prefix" >/dev/null || fail "cmake --install failed"
+    PATH="$work/prefix/bin:$PATH" gnomon --version >"$work/stdout" 2>&1 ||
+        fail "the installed gnomon does not run: $(cat "$work/stdout")"
+    ;;
+up_axis)
+    # A Z-up model (CAD's STL) stands up with --up z; --up names model files' axes only.
+    post="$(dirname "$0")/../data/models/post_z_up.stl"
+    run render --scene "$post" --size 32x32 --out "$work/lying.png"
+    skip_without_gl
+    run render --scene "$post" --size 32x32 --out "$work/standing.png" --up z
+    [[ $(cat "$work/code") == 0 ]] || fail "--up z: $(cat "$work/stderr")"
+    cmp -s "$work/lying.png" "$work/standing.png" && fail "--up z changed nothing"
+    run render --scene "$post" --out "$work/bad.png" --up w
+    expect 2 "--up: expected one of x, y, z, got 'w'"
+    run render --scene tutorial-room --out "$work/bad.png" --up z
+    expect 2 "--up applies to model files; 'tutorial-room' is a built-in scene"
+    [[ ! -e "$work/bad.png" ]] || fail "a refused render left bad.png"
     ;;
 pointless_flags)
     # A flag the other options make pointless is said once, and the render still runs.
@@ -397,6 +432,9 @@ usage)
     # Words nobody took are named as given.
     run render --scene book-triangle --out "$work/w.png" --bogus 1
     expect 2 "gnomon: error: unknown flag or stray value: --bogus 1 (see gnomon render --help)"
+    # A mistyped flag: the nearest one named.
+    run render --scene book-triangle --out "$work/w.png" --map-sise 512
+    expect 2 "unknown flag or stray value: --map-sise 512; did you mean --map-size? (see"
     run
     expect 2 "gnomon: error: "
     ;;

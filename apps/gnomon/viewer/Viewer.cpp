@@ -130,6 +130,7 @@ void Viewer::renderViews(int mainW, int mainH, int sideW) {
             if (mScripted) fail(std::string("frame: ") + e.what());
         }
     }
+    dropStaleOverlay();
     if (mState.side == view::SideView::ShadowMap && sideW > 0 && mainH > 0 &&
         (mSideDirty || sideW != mSideW || mainH != mSideH || mState.selectedLight != mSideLight)) {
         mSideDirty = false;
@@ -139,6 +140,18 @@ void Viewer::renderViews(int mainW, int mainH, int sideW) {
         mSideTexture = mFrameError.empty()
                            ? mRenderer.drawShadowMapPanel(mState.selectedLight, sideW, mainH)
                            : GlTexture{};
+    }
+}
+
+// The error map belongs to the frame it scored: over a moved camera, another setting or
+// another size it would paint a double exposure, so it goes as soon as the frame moves on
+// (view-only toggles keep it). Scoring again (F5) brings a fresh one.
+void Viewer::dropStaleOverlay() {
+    if (!mOverlayTexture || !mScore) return;
+    if (mScoredRevision != mState.revision || mScore->errors.width != mDrawnWidth ||
+        mScore->errors.height != mDrawnHeight) {
+        mOverlayTexture = gl::Texture{};
+        mOverlay = false;
     }
 }
 
@@ -257,6 +270,10 @@ int runView(const ViewArgs& args, bool verbose) {
     }
     std::vector<view::Command> script;
     if (!args.script.empty()) {
+        std::error_code missing;
+        if (!std::filesystem::is_regular_file(args.script, missing)) {
+            throw Error(ErrorKind::InvalidInput, "--script: no such file '" + args.script + "'");
+        }
         std::ifstream in(args.script, std::ios::binary);
         if (!in) throw Error(ErrorKind::Io, "--script: cannot read '" + args.script + "'");
         std::stringstream text;
@@ -264,7 +281,7 @@ int runView(const ViewArgs& args, bool verbose) {
         script = view::parseScript(text.str(), args.script);
     }
     view::State state;
-    view::load(state, args.scene, args.flags.ground);
+    view::load(state, args.scene, args.flags.ground, args.flags.upAxis());
     args.flags.placeCameraAndSun(state.scene);
     printWarnings(state.scene);
     state.options = args.flags.resolve(state.scene);

@@ -91,6 +91,7 @@ private:
     bool dirty() const;
     void frame();
     void renderViews(int mainW, int mainH, int sideW);
+    void dropStaleOverlay();
     void recordPasses();
 
     // ---- Controls (ViewerControls.cpp) ----

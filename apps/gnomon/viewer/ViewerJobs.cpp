@@ -154,7 +154,7 @@ void Viewer::screenshot(const std::string& path) {
 }
 
 void Viewer::save(const std::string& path) {
-    saveSceneFile(path, mState.source, mState.scene, mMainOptions, mState.ground);
+    saveSceneFile(path, mState.source, mState.scene, mMainOptions, mState.ground, mState.up);
     mLastWritten = path;
     std::printf("gnomon view: wrote %s\n", path.c_str());
 }

@@ -315,6 +315,10 @@ void Viewer::scorePanel() {
             "where the render drew another surface than the reference sees, or none (a part "
             "seen edge-on, an alpha mask at another mip level)");
     }
+    if (!mOverlayTexture) {
+        ImGui::TextDisabled("error overlay: dropped with the frame it scored (F5 scores again)");
+        return;
+    }
     ImGui::Checkbox("error overlay", &mOverlay);
     tooltip("red: false shadow (acne), blue: light leak; pale inside the aliasing band");
     ImGui::SameLine();

@@ -195,13 +195,14 @@ const PresetEntry* findPreset(const std::string& name) {
     return nullptr;
 }
 
-void load(State& state, const std::string& source, bool ground) {
-    Scene scene = loadScene(source);
+void load(State& state, const std::string& source, bool ground, UpAxis up) {
+    Scene scene = loadScene(source, up);
     if (ground) addGround(scene);
     const int width = state.options.width, height = state.options.height;
     state.scene = std::move(scene);
     state.source = source;
     state.ground = ground;
+    state.up = up;
     state.options = state.scene.options;
     if (!state.fitView) {
         state.options.width = width;
@@ -232,8 +233,11 @@ void applyFlags(State& state, const std::vector<std::string>& args) {
             all += (all.empty() ? "" : " ") + a;
         bad("flags '" + all + "': " + e.what());
     }
-    if (!scene.empty() || (flags.ground && !state.ground)) {
-        load(state, scene.empty() ? state.source : scene, flags.ground || state.ground);
+    // A new scene loads with the --up given (default y); --up alone reloads the source.
+    const bool upGiven = app.count("--up") > 0;
+    const UpAxis up = upGiven || !scene.empty() ? flags.upAxis() : state.up;
+    if (!scene.empty() || (flags.ground && !state.ground) || up != state.up) {
+        load(state, scene.empty() ? state.source : scene, flags.ground || state.ground, up);
     }
     flags.placeCameraAndSun(state.scene);
     RenderOptions options = state.options;

@@ -22,6 +22,7 @@ enum class SideView {
 struct State {
     std::string source;     // what was loaded: a built-in name or a file path
     bool ground = false;    // addGround() over the source (--ground)
+    UpAxis up = UpAxis::Y;  // the model file's up axis it was loaded with (--up)
     Scene scene;            // as loaded, then edited: camera, lights, ambient
     RenderOptions options;  // every render option; width/height used when !fitView
     bool fitView = true;    // render at the size of the view's area in the window
@@ -47,11 +48,12 @@ struct PresetEntry {
 const std::vector<PresetEntry>& presets();
 const PresetEntry* findPreset(const std::string& name);
 
-// Loads `source` (anything `gnomon render --scene` takes) with its authored options; keeps
-// the view toggles and, unless fitView is off, the size. Throws gnomon::Error.
-void load(State& state, const std::string& source, bool ground);
+// Loads `source` (anything `gnomon render --scene` takes, a model file turned so that `up`
+// stands up) with its authored options; keeps the view toggles and, unless fitView is off,
+// the size. Throws gnomon::Error.
+void load(State& state, const std::string& source, bool ground, UpAxis up = UpAxis::Y);
 // Applies flags spelled as `gnomon render` spells them ({"--map-size", "64", ...}) over the
-// state: --scene (loads first), --ground, --preset (options restart from it), then every
+// state: --scene and --up (load first), --ground, --preset (options restart from it), then every
 // other flag; --size also turns fitView off. Throws gnomon::Error naming the bad flag.
 void applyFlags(State& state, const std::vector<std::string>& args);
 void applyPreset(State& state, const PresetEntry& preset);
