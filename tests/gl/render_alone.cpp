@@ -31,8 +31,7 @@ int main() {
                 brighter += d > 3;
             }
         }
-        // The book's triangle shadows a patch of the plane below it: a few hundred of the
-        // 4 096 pixels at this size.
+        // The book's triangle shadows a patch of the plane below it; shadows only take light.
         if (darker < 100 || brighter > 0) {
             std::fprintf(stderr, "render_alone: %d pixels darkened, %d brightened by shadows\n",
                          darker, brighter);
