@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "render/GpuScene.h"
@@ -35,9 +36,9 @@ inline Cull casterCull(const DrawItem& item, const ShadowOptions& options, bool 
 // culled triangles and then the others; the depth kept is the nearest either way. Face
 // culling is off afterwards.
 template <typename AlphaTested, typename CullOf, typename UseProgram>
-void drawDepthRuns(const GpuScene& scene, const std::vector<std::uint32_t>& indices,
-                   GLsizei instances, bool standIns, const AlphaTested& alphaTested,
-                   const CullOf& cull, const UseProgram& useProgram) {
+void drawDepthRuns(const GpuScene& scene, std::span<const std::uint32_t> indices, GLsizei instances,
+                   bool standIns, const AlphaTested& alphaTested, const CullOf& cull,
+                   const UseProgram& useProgram) {
     bool alpha = false;
     GLuint texture = ~0u;
     useProgram(false);

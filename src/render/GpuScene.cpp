@@ -264,6 +264,12 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         return std::make_tuple(int(a.alphaMode), a.texture, a.doubleSided) <
                std::make_tuple(int(b.alphaMode), b.texture, b.doubleSided);
     });
+    mPlanItems.resize(mItems.size());
+    for (std::size_t i = 0; i < mItems.size(); ++i) {
+        const DrawItem& d = mItems[i];
+        mPlanItems[i] = {d.bounds,         d.dataHash, d.object,   d.alphaMode,
+                         d.indexCount > 0, d.casts,    d.receives, d.closedIndexCount > 0};
+    }
     if (uploadDrawCommands()) changed = true;
     if (dataChanged) {
         if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {

@@ -18,6 +18,7 @@
 #include "gl/Objects.h"
 #include "gnomon/Scene.h"
 #include "scene/MeshTopology.h"
+#include "shadow/FramePlan.h"
 #include "shadow/StandIn.h"
 
 namespace gnomon::render {
@@ -74,13 +75,11 @@ enum class Part { All, Closed, Open };
 // --blend-shadows coloured only their fully opaque texels do (the rest tints the light
 // through the transmittance maps).
 inline bool castsShadow(const DrawItem& item, const ShadowOptions& options) {
-    return item.casts && item.indexCount > 0 &&
-           !(item.alphaMode == AlphaMode::Blend && options.blendShadows == BlendShadows::None);
+    return shadow::castsDepth(item.casts, item.indexCount > 0, item.alphaMode, options);
 }
 // Does it tint the light through it (drawn into the transmittance maps)?
 inline bool castsTint(const DrawItem& item, const ShadowOptions& options) {
-    return item.casts && item.indexCount > 0 && item.alphaMode == AlphaMode::Blend &&
-           options.blendShadows == BlendShadows::Coloured;
+    return shadow::castsTint(item.casts, item.indexCount > 0, item.alphaMode, options);
 }
 // Does it need the alpha-tested depth programs (masked, or blended and dithered or coloured)?
 inline bool alphaTestedCaster(const DrawItem& item, const ShadowOptions& options) {
@@ -110,6 +109,11 @@ public:
     void drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances = 1,
                    bool standIns = false, Part part = Part::All) const;
     const std::vector<DrawItem>& items() const { return mItems; }
+    // The items as the frame plan sees them (same order), with the bounds and counters that
+    // tell it what changed.
+    shadow::PlanScene planScene() const {
+        return {&mPlanItems, mBounds, mRevision, geometryHash()};
+    }
     // The item's base colour texture, or a 1x1 white one (alpha 1) when it has none.
     GLuint textureOf(const DrawItem& item) const {
         return item.texture ? item.texture : mWhite.id();
@@ -177,6 +181,7 @@ private:
     // the maps and refit the lights (a new revision).
     std::vector<std::uint8_t> mCasts;
     std::vector<DrawItem> mItems;
+    std::vector<shadow::SceneItem> mPlanItems;               // mItems' plan data, same order
     std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
     // Stand-in casters by detail: the ones made for the current geometry (empty indices: the
     // mesh's own), at most kKeptStandIns of them, and where each mesh's lies in the index

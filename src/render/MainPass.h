@@ -11,7 +11,7 @@
 #include "gl/Objects.h"
 #include "gnomon/Options.h"
 #include "render/GpuScene.h"
-#include "render/LightRecord.h"
+#include "shadow/LightRecord.h"
 #include "render/ShadowPass.h"
 
 namespace gnomon::render {
@@ -32,11 +32,11 @@ struct MainPassInputs {
     // cascaded records).
     const TiledLights* tiled = nullptr;
     bool hasCascades = false;  // some light is cascaded this frame
-    bool pointFaces = false;   // point lights' faces are maps of their own (LightPlan)
+    bool pointFaces = false;   // point lights' faces are maps of their own (shadow::FramePlan)
     // The kind (lights.glsl's type code) every single-map record shares, or -1 when they mix
-    // (LightPlan::singleMapKind): the program drops the other kinds' light code.
+    // (FramePlan::singleMapKind): the program drops the other kinds' light code.
     int singleMapKind = -1;
-    // No light falls off with distance (LightPlan::constantFalloff): the program drops the
+    // No light falls off with distance (FramePlan::constantFalloff): the program drops the
     // distance terms.
     bool constantFalloff = false;
     const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one

@@ -1,5 +1,5 @@
 // Orchestrates a frame: validate, sync the GPU scene, sample the view's depth where fitted
-// lights need it, plan the lights (render/LightPlan), render the shadow maps, render the main
+// lights need it, plan the frame (shadow/FramePlan), render the shadow maps, render the main
 // pass into an offscreen target, read back.
 #include "gnomon/Renderer.h"
 
@@ -13,7 +13,6 @@
 #include "gnomon/Error.h"
 #include "render/DebugPass.h"
 #include "render/GpuScene.h"
-#include "render/LightPlan.h"
 #include "render/MainPass.h"
 #include "render/MomentPass.h"
 #include "render/PassClock.h"
@@ -24,6 +23,7 @@
 #include "render/ViewDepthPass.h"
 #include "render/VisibilityTarget.h"
 #include "scene/SceneUtil.h"
+#include "shadow/FramePlan.h"
 
 namespace gnomon {
 
@@ -60,7 +60,7 @@ struct Renderer::Impl {
     gl::Texture panelColour;  // drawShadowMapPanel's target
     gl::Framebuffer panelTarget;
     render::ViewDepthPass viewDepth;
-    render::LightPlan plan;
+    shadow::FramePlan plan;
     render::RelativeScene relative;  // the scene near the origin (RelativeScene.h)
     Camera relativeFit;              // the fit camera moved as the scene is
     Camera lastCamera;               // the last frame's view and size, for mapUsage()
@@ -183,7 +183,7 @@ struct Renderer::Impl {
         render::PassClock* timer = passTiming ? clock.get() : nullptr;
         const shadow::ViewSamples* samples = nullptr;
         const bool contact = options.shadow.enabled && options.shadow.contactLength > 0.0f;
-        if (render::LightPlan::wantsViewSamples(s, options) || contact ||
+        if (shadow::FramePlan::wantsViewSamples(s, options) || contact ||
             render::TiledLights::wantsDepth(s, options)) {
             if (timer) timer->start();
             samples = &viewDepth.sample(scene, fitCamera ? *fitCamera : view, options.width,
@@ -191,9 +191,10 @@ struct Renderer::Impl {
             if (timer) stats.passes.push_back(timer->stop("view depth", -1, 0));
         }
         // Drawn for the tiles alone, the samples do not fit the lights.
-        const bool fitSamples = render::LightPlan::wantsViewSamples(s, options) || contact;
+        const bool fitSamples = shadow::FramePlan::wantsViewSamples(s, options) || contact;
         plan.setRecordLimit(mainPass.maxLights());
-        plan.plan(s, options, scene, fitSamples ? samples : nullptr, fitCamera);
+        plan.plan(s, options, scene.planScene(), fitSamples ? samples : nullptr, fitCamera,
+                  shadowPass.held());
         if (fitCamera) {
             // The samples were the fit camera's view: contact shadows need the drawn one's,
             // and the tiles are not worth it for this rare frame.
@@ -211,7 +212,7 @@ struct Renderer::Impl {
         }
 
         const render::ShadowPassStats passStats =
-            shadowPass.render(scene, plan.shadowed(), options.shadow, timer, &stats.passes);
+            shadowPass.render(scene, plan, options.shadow, timer, &stats.passes);
         stats.shadowPasses = passStats.rendered;
         stats.shadowTriangles = passStats.triangles;
         stats.castersCulled = passStats.culled;
@@ -237,7 +238,6 @@ struct Renderer::Impl {
         } else {
             transmittancePass.release();
         }
-        plan.finish(shadowPass);
 
         ensureTarget(options.width, options.height, options.shading.output);
         render::MainPassInputs in;

@@ -126,7 +126,11 @@ void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
         fb.checkComplete();
         mFramebuffers.push_back(std::move(fb));
     }
-    mLayers.clear();  // every map is drawn again into the new texture
+    // Every map is drawn again into the new texture.
+    mHeld.layout.size2D = size;
+    mHeld.layout.layers2D = layers;
+    mHeld.layout.format2D = format;
+    mHeld.maps2D.clear();
 }
 
 void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
@@ -152,7 +156,10 @@ void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
             mCubeFaceFramebuffers.push_back(std::move(fb));
         }
     }
-    mCubeLayers.assign(size_t(cubes), LayerState{});
+    mHeld.layout.sizeCube = size;
+    mHeld.layout.cubes = cubes;
+    mHeld.layout.formatCube = isColourFormat(format) ? DepthFormat::Depth32F : format;
+    mHeld.cubes.assign(size_t(cubes), shadow::MapKey{});
 }
 
 std::size_t ShadowPass::bytes() const {
@@ -176,37 +183,20 @@ void ShadowPass::setDepthState(const ShadowOptions& options, bool depthClamp) co
     depthClamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
 }
 
-std::uint64_t ShadowPass::collectCasters(const GpuScene& scene, const ShadowedLight& light,
-                                         const ShadowOptions& options) {
-    mVisible.clear();
-    const LightVolume volume(light);
-    mHoldsLight.assign(scene.items().size(), 0);
-    std::uint64_t hash = scene.geometryHash();
-    const std::vector<DrawItem>& items = scene.items();
-    for (std::uint32_t i = 0; i < items.size(); ++i) {
-        const DrawItem& item = items[i];
-        // Tinting casters are drawn by the transmittance pass, after this map: they count in
-        // the hash (moving one redraws both); their opaque texels are drawn here too.
-        const bool depth = castsShadow(item, options), tints = castsTint(item, options);
-        if (!depth && !tints) continue;
-        if (volume.outside(item.bounds)) {
-            if (depth) ++mCulled;
-            continue;
-        }
-        if (depth) mVisible.push_back(i);
-        mHoldsLight[item.object] =
-            char(item.closedIndexCount > 0 && volume.holdsLight(item.bounds));
-        hash = (hash ^ item.dataHash) * 0x100000001b3ull + i;
-    }
-    return hash;
-}
-
 template <typename SetUniforms>
-void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options, int variant,
+void ShadowPass::drawCasters(const GpuScene& scene, const shadow::FramePlan& plan,
+                             const ShadowedLight& light, const ShadowOptions& options, int variant,
                              GLsizei instances, const SetUniforms& setUniforms) {
+    const std::span<const std::uint32_t> casters(plan.casters().data() + light.firstCaster,
+                                                 light.casterCount);
+    mHoldsLight.resize(scene.items().size());
+    for (std::uint32_t k = 0; k < light.casterCount; ++k) {
+        mHoldsLight[scene.items()[casters[k]].object] =
+            char(plan.castersHoldLight()[light.firstCaster + k]);
+    }
     // Stand-in casters always: at --caster-detail 1 they are the full meshes.
     drawDepthRuns(
-        scene, mVisible, instances, /*standIns=*/true,
+        scene, casters, instances, /*standIns=*/true,
         [&](const DrawItem& item) { return alphaTestedCaster(item, options); },
         [&](const DrawItem& item) {
             return casterCull(item, options, mHoldsLight[item.object] != 0);
@@ -218,17 +208,11 @@ void ShadowPass::drawCasters(const GpuScene& scene, const ShadowOptions& options
         });
 }
 
-bool ShadowPass::LayerState::serves(const LayerState& want) const {
-    LayerState same = want;
-    same.faces = faces;
-    return *this == same && (want.faces & ~faces) == 0;
-}
-
 void ShadowPass::invalidate() {
-    for (LayerState& l : mLayers)
-        l = LayerState{};
-    for (LayerState& l : mCubeLayers)
-        l = LayerState{};
+    for (shadow::MapKey& k : mHeld.maps2D)
+        k = shadow::MapKey{};
+    for (shadow::MapKey& k : mHeld.cubes)
+        k = shadow::MapKey{};
 }
 
 double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFromWorld, int size) {
@@ -272,65 +256,39 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
         .count();
 }
 
-// Sizes the arrays for `lights`' maps and gives each its layer (and, for 2D maps, its
-// square in the layer).
-void ShadowPass::layOut(std::vector<ShadowedLight>& lights, const ShadowOptions& options) {
-    int size2D = 0, sizeCube = 0, countCube = 0;
-    mSizes.clear();
-    for (ShadowedLight& l : lights) {
-        if (l.frame.kind == shadow::FrameKind::Cube) {
-            sizeCube = std::max(sizeCube, l.mapSize);
-            l.layer = countCube++;
-        } else {
-            size2D = std::max(size2D, l.mapSize);
-            mSizes.push_back(l.mapSize);
-        }
+void ShadowPass::allocate(const shadow::MapLayout& layout) {
+    const shadow::MapLayout& have = mHeld.layout;
+    if (layout.layers2D > 0 &&
+        (!mMaps || have.size2D != layout.size2D || have.layers2D != layout.layers2D ||
+         have.format2D != layout.format2D)) {
+        allocate2D(layout.size2D, layout.layers2D, layout.format2D);
     }
-    // A cube map array has one size, and a cube's lookups read whole faces: every cube is
-    // drawn at the largest size asked for, its texel shrunk to match (a light that asked for
-    // less gets the finer map).
-    for (ShadowedLight& l : lights) {
-        if (l.frame.kind != shadow::FrameKind::Cube || l.mapSize == sizeCube) continue;
-        l.frame.texelWorldSize *= float(l.mapSize) / float(sizeCube);
-        l.mapSize = sizeCube;
+    if (layout.cubes > 0 && (!mCubes || have.sizeCube != layout.sizeCube ||
+                             have.cubes != layout.cubes || have.formatCube != layout.formatCube)) {
+        allocateCubes(layout.sizeCube, layout.cubes, layout.format2D);
     }
-    const int count2D = shadow::packMaps(mSizes, size2D, mSlots);
-    std::size_t next2D = 0;
-    for (ShadowedLight& l : lights) {
-        if (l.frame.kind == shadow::FrameKind::Cube) continue;
-        l.layer = mSlots[next2D].layer;
-        l.origin = mSlots[next2D++].origin;
-    }
-    const DepthFormat format = options.depthFormat;
-    const GLenum cubeFormat = nativeFormat(format);
-    if (count2D > 0 &&
-        (!mMaps || mMaps.width() != size2D || mMaps.layers() != count2D || mMapFormat != format)) {
-        allocate2D(size2D, count2D, format);
-    }
-    mLayers.resize(mSizes.size());
-    if (countCube > 0 && (!mCubes || mCubes.width() != sizeCube ||
-                          mCubes.layers() != 6 * countCube || mCubes.format() != cubeFormat)) {
-        allocateCubes(sizeCube, countCube, format);
-    }
-    // A kind of map no light has this frame gives its memory back: a point light switched
-    // off kept its 24 MiB of cubes, and the frame's statistics counted them.
-    if (countCube == 0 && mCubes) {
+    // A kind of map no light has this frame gives its memory back (and the frame's
+    // statistics stop counting it).
+    if (layout.cubes == 0 && mCubes) {
         mCubes = gl::Texture();
         mCubeFramebuffer = gl::Framebuffer();
         mCubeFaceFramebuffers.clear();
-        mCubeLayers.clear();
+        mHeld.cubes.clear();
+        mHeld.layout.sizeCube = mHeld.layout.cubes = 0;
     }
-    if (count2D == 0 && mMaps) {
+    if (layout.layers2D == 0 && mMaps) {
         mMaps = gl::Texture();
         mColourDepth = gl::Texture();
         mFramebuffers.clear();
-        mLayers.clear();
+        mHeld.maps2D.clear();
+        mHeld.layout.size2D = mHeld.layout.layers2D = 0;
     }
 }
 
 // Clears `light`'s map and draws its casters into it through `m` (a cube's six faces).
-void ShadowPass::drawMap(const GpuScene& scene, const ShadowedLight& light,
-                         const ShadowOptions& options, const std::array<glm::mat4, 6>& m) {
+void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
+                         const ShadowedLight& light, const ShadowOptions& options) {
+    const std::array<glm::mat4, 6>& m = light.key.clipFromWorld;
     const bool cube = light.frame.kind == shadow::FrameKind::Cube;
     const DepthFormat format = options.depthFormat;
     const float one = 1.0f;
@@ -354,7 +312,7 @@ void ShadowPass::drawMap(const GpuScene& scene, const ShadowedLight& light,
             glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
         }
         glDisable(GL_SCISSOR_TEST);
-        drawCasters(scene, options, variant, 1,
+        drawCasters(scene, plan, light, options, variant, 1,
                     [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]); });
     } else {
         // Only this light's six faces are cleared; other cubes keep their maps.
@@ -368,7 +326,7 @@ void ShadowPass::drawMap(const GpuScene& scene, const ShadowedLight& light,
         }
         if (mLayered) {
             glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());
-            drawCasters(scene, options, kCube, count, [&] {
+            drawCasters(scene, plan, light, options, kCube, count, [&] {
                 glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
                 glUniform1i(7, 6 * light.layer);
                 glUniform1iv(8, count, faces.data());
@@ -377,49 +335,34 @@ void ShadowPass::drawMap(const GpuScene& scene, const ShadowedLight& light,
             for (int face : std::span(faces.data(), size_t(count))) {
                 glBindFramebuffer(GL_FRAMEBUFFER,
                                   mCubeFaceFramebuffers[size_t(6 * light.layer + face)].id());
-                drawCasters(scene, options, kPlain, 1,
+                drawCasters(scene, plan, light, options, kPlain, 1,
                             [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[size_t(face)][0][0]); });
             }
         }
     }
 }
 
-ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
+ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePlan& plan,
                                    const ShadowOptions& options, PassClock* clock,
                                    std::vector<PassTiming>* timings) {
-    layOut(lights, options);
-    const DepthFormat format = options.depthFormat;
+    allocate(plan.layout());
+    const std::vector<ShadowedLight>& lights = plan.shadowed();
+    std::size_t count2D = 0;
+    for (const ShadowedLight& light : lights)
+        count2D += light.frame.kind == shadow::FrameKind::Cube ? 0 : 1;
+    mHeld.maps2D.resize(count2D);
 
     ShadowPassStats stats;
-    mCulled = 0;
+    stats.culled = plan.castersCulled();
     bool any = false;
     std::size_t index2D = 0;
     mDrawn.clear();
     for (std::size_t li = 0; li < lights.size(); ++li) {
         const ShadowedLight& light = lights[li];
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
-        LayerState want{
-            {},
-            light.mapSize,
-            cube ? glm::ivec3(0, 0, light.layer) : glm::ivec3(light.origin, light.layer),
-            collectCasters(scene, light, options),
-            options.cull,
-            options.biasSlope,
-            options.biasUnits,
-            light.depthClamp,
-            format,
-            options.blendShadows,
-            cube ? light.frame.faces : shadow::kAllCubeFaces};
-        if (cube) {
-            for (int face = 0; face < 6; ++face) {
-                want.clipFromWorld[size_t(face)] = light.frame.faceClipFromWorld(face);
-            }
-        } else {
-            want.clipFromWorld[0] = light.frame.clipFromWorld();
-        }
-        LayerState& have = cube ? mCubeLayers[size_t(light.layer)] : mLayers[index2D++];
-        if (have.serves(want)) continue;  // nothing changed: keep the map
-        have = want;
+        shadow::MapKey& held = cube ? mHeld.cubes[size_t(light.layer)] : mHeld.maps2D[index2D++];
+        if (!light.redraw) continue;  // nothing changed: keep the map
+        held = light.key;
         if (clock) clock->start();
         if (!any) {
             scene.bind();
@@ -427,12 +370,13 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         }
         setDepthState(options, light.depthClamp);
         glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
-        drawMap(scene, light, options, have.clipFromWorld);
+        drawMap(scene, plan, light, options);
         mDrawn.push_back(int(li));
         ++stats.rendered;
         std::uint64_t triangles = 0;
-        for (std::uint32_t index : mVisible) {
-            triangles += std::uint64_t(scene.items()[index].standInIndexCount / 3) *
+        for (std::uint32_t k = 0; k < light.casterCount; ++k) {
+            const DrawItem& item = scene.items()[plan.casters()[light.firstCaster + k]];
+            triangles += std::uint64_t(item.standInIndexCount / 3) *
                          std::uint64_t(cube ? std::popcount(light.frame.faces) : 1);
         }
         stats.triangles += triangles;
@@ -445,7 +389,6 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, std::vector<ShadowedLi
         glDisable(GL_DEPTH_CLAMP);
         glDisable(GL_CULL_FACE);
     }
-    stats.culled = mCulled;
     return stats;
 }
 

@@ -1,11 +1,12 @@
-// The shadow pass: one depth-only rendering per shadowed light.
+// The shadow pass: one depth-only rendering per map the frame plan (shadow::FramePlan) draws
+// again, into the arrays its layout asks for.
 // Single-frustum lights (directional, spot, area, textbook point cameras) each own a square of
 // a layer of a 2D array (layers as large as the largest map; smaller maps share layers,
 // placed by shadow::packMaps);
 // omnidirectional point lights own six layers of a cube-map array, drawn in one instanced
 // pass with gl_Layer from the vertex shader, or six passes where the driver cannot.
-// Casters outside a light's volume are not drawn into its map, and a map is re-rendered
-// only when its camera, the depth state or a caster inside its volume changed.
+// A map gets the casters the plan found inside its light's volume; the maps the plan keeps are
+// not touched.
 #pragma once
 
 #include <array>
@@ -17,75 +18,11 @@
 #include "gnomon/Options.h"
 #include "gnomon/Renderer.h"
 #include "render/GpuScene.h"
-#include "shadow/FrustumClip.h"
-#include "shadow/MapAtlas.h"
-#include "shadow/ShadowMath.h"
+#include "shadow/FramePlan.h"
 
 namespace gnomon::render {
 
-struct ShadowedLight {
-    int light = 0;  // index into Scene::lights
-    int mapSize = 1024;
-    shadow::LightCameraFrame frame;
-    bool depthClamp = false;  // fitted cameras: casters in front of near still cast
-    int layer = 0;            // 2D array layer, or cube index in the cube-map array
-    int record = 0;           // the main pass light record this map belongs to
-    int cascade = -1;         // cascade index of a directional light, -1 if not cascaded
-    // The view depths whose pixels read this map (a cascade's slice and the previous
-    // cascade's blend band; every depth for the others).
-    float depthFrom = 0.0f, depthTo = std::numeric_limits<float>::max();
-    glm::ivec2 origin{0};  // 2D maps: the map's lower-left texel in its layer (shadow pass)
-    int face = -1;         // a point light's face drawn as a map of its own (0..5), else -1
-};
-
-// What a light's map sees, for culling what it need not draw: its clip volume (casters in
-// front of the near plane count when the depth is clamped), or its cube's: within the far
-// sphere and, when only some faces are drawn, inside one of theirs.
-class LightVolume {
-public:
-    explicit LightVolume(const ShadowedLight& light)
-        : mLight(light),
-          mCube(light.frame.kind == shadow::FrameKind::Cube),
-          mClipFromWorld(mCube ? glm::mat4(1.0f) : light.frame.clipFromWorld()),
-          mEye(glm::inverse(light.frame.lightFromWorld)[3]) {
-        for (int face = 0; mCube && light.frame.faces != shadow::kAllCubeFaces && face < 6;
-             ++face) {
-            if (light.frame.drawsFace(face))
-                mFaces[std::size_t(mFaceCount++)] = light.frame.faceClipFromWorld(face);
-        }
-    }
-    bool outside(const Aabb& box) const {
-        if (!mCube) return shadow::outsideClipVolume(box, mClipFromWorld, mLight.depthClamp);
-        if (shadow::outsideCube(box, mLight.frame)) return true;
-        for (int i = 0; i < mFaceCount; ++i) {
-            if (!shadow::outsideClipVolume(box, mFaces[std::size_t(i)], true)) return false;
-        }
-        return mFaceCount > 0;
-    }
-    // Might `box` hold the light (a spot's or point light's position)? Then a closed caster
-    // in it is seen from inside, every face turned away, and culling would drop it all: a
-    // point light inside the spider's abdomen (assimp-testmodels' spider.fbx) lit the whole
-    // view, where the trace finds it shut in (34 % of the view leaked).
-    bool holdsLight(const Aabb& box) const {
-        return !mLight.frame.orthographic && glm::all(glm::lessThanEqual(box.min, mEye)) &&
-               glm::all(glm::lessThanEqual(mEye, box.max));
-    }
-
-private:
-    const ShadowedLight& mLight;
-    bool mCube;
-    glm::mat4 mClipFromWorld;
-    glm::vec3 mEye;                     // the light's position (perspective and cube frames)
-    std::array<glm::mat4, 6> mFaces{};  // the drawn faces' clip volumes, when not all six
-    int mFaceCount = 0;
-};
-
-// A pass's name for one map in FrameStats::passes: "<what> light N[, cascade K | face F]".
-inline std::string mapPassName(const char* what, const ShadowedLight& light) {
-    return std::string(what) + " light " + std::to_string(light.light) +
-           (light.cascade >= 0 ? ", cascade " + std::to_string(light.cascade) : "") +
-           (light.face >= 0 ? ", face " + std::to_string(light.face) : "");
-}
+using shadow::ShadowedLight;
 
 // The passes that follow the shadow pass per map (moments, transmittance) run for the maps
 // it drew (`drawn`: indices into `lights`), or for every map when `all` (their own targets
@@ -114,12 +51,13 @@ class ShadowPass {
 public:
     // `layeredCubes` false forces six passes per cube (to test the fallback path).
     explicit ShadowPass(bool layeredCubes = true);
-    // Renders (or keeps) every light's map. Lights with frame.kind == Cube go to the cube
-    // array (layer = cube index), others to the 2D array.
-    // With `clock`, each map drawn is timed into `timings`.
-    ShadowPassStats render(const GpuScene& scene, std::vector<ShadowedLight>& lights,
+    // Draws the maps `plan` marks for redrawing (ShadowedLight::redraw), after remaking the
+    // arrays if its layout differs. With `clock`, each map drawn is timed into `timings`.
+    ShadowPassStats render(const GpuScene& scene, const shadow::FramePlan& plan,
                            const ShadowOptions& options, PassClock* clock = nullptr,
                            std::vector<PassTiming>* timings = nullptr);
+    // What the arrays hold: the plan's input for what it may keep.
+    const shadow::HeldMaps& held() const { return mHeld; }
     // Every map is drawn again next frame.
     void invalidate();
     // A bare depth-only draw of every caster into a size x size buffer through
@@ -145,24 +83,10 @@ public:
     Image16 readBack(const ShadowedLight& light) const;
 
 private:
-    void layOut(std::vector<ShadowedLight>& lights, const ShadowOptions& options);
-    void drawMap(const GpuScene& scene, const ShadowedLight& light, const ShadowOptions& options,
-                 const std::array<glm::mat4, 6>& m);
-    struct LayerState {
-        std::array<glm::mat4, 6> clipFromWorld{};  // one (2D map) or six (cube) used
-        int mapSize = 0;
-        glm::ivec3 place{-1};               // 2D maps: origin and layer
-        std::uint64_t castersHash = ~0ull;  // geometry + the casters in the volume
-        CullMode cull = CullMode::Back;
-        float slope = -1.0f, units = -1.0f;
-        bool depthClamp = false;
-        DepthFormat format = DepthFormat::Depth32F;
-        BlendShadows blend = BlendShadows::Dithered;
-        std::uint8_t faces = shadow::kAllCubeFaces;  // cubes: the faces drawn
-        bool operator==(const LayerState&) const = default;
-        // A map drawn as `this` serves `want`: the same, its faces a superset of want's.
-        bool serves(const LayerState& want) const;
-    };
+    // Remakes or releases the arrays where `layout` differs from what they are.
+    void allocate(const shadow::MapLayout& layout);
+    void drawMap(const GpuScene& scene, const shadow::FramePlan& plan, const ShadowedLight& light,
+                 const ShadowOptions& options);
     void allocate2D(int size, int layers, DepthFormat format);
     void allocateCubes(int size, int cubes, DepthFormat format);
     // Depth programs: kPlain (2D maps, native depth), kCube (six faces at once), kColour +
@@ -172,15 +96,12 @@ private:
     static constexpr int kPlain = 0, kCube = 1, kColour = 2;
     const gl::Program& program(int variant, bool alphaTested, bool opaqueParts = false);
     void setDepthState(const ShadowOptions& options, bool depthClamp) const;
-    // The casters of `light` that can reach its map (indices into scene.items()), and a hash
-    // of them; fills mVisible.
-    std::uint64_t collectCasters(const GpuScene& scene, const ShadowedLight& light,
-                                 const ShadowOptions& options);
-    // Draws mVisible with program `variant`, switching to its alpha-tested twin for masked
+    // Draws `light`'s casters with program `variant`, switching to its alpha-tested twin for masked
     // and dithered casters (their textures on unit 4); `setUniforms()` runs after each
     // program change.
     template <typename SetUniforms>
-    void drawCasters(const GpuScene& scene, const ShadowOptions& options, int variant,
+    void drawCasters(const GpuScene& scene, const shadow::FramePlan& plan,
+                     const ShadowedLight& light, const ShadowOptions& options, int variant,
                      GLsizei instances, const SetUniforms& setUniforms);
 
     bool mLayered;
@@ -191,15 +112,11 @@ private:
     std::vector<gl::Framebuffer> mFramebuffers;          // one per 2D layer
     gl::Framebuffer mCubeFramebuffer;                    // layered: the whole cube array
     std::vector<gl::Framebuffer> mCubeFaceFramebuffers;  // fallback: one per cube face
-    std::vector<LayerState> mLayers, mCubeLayers;        // per 2D map (in lights' order), per cube
-    std::vector<int> mSizes;                             // reused every frame
-    std::vector<shadow::MapSlot> mSlots;                 // reused every frame
-    std::vector<std::uint32_t> mVisible;                 // reused every frame
-    std::vector<char> mHoldsLight;  // per item: its box holds the light (no face culling)
+    shadow::HeldMaps mHeld;
+    std::vector<char> mHoldsLight;  // per object: its box holds the light (no face culling)
     std::vector<int> mDrawn;        // reused every frame
     gl::Texture mBareDepth;         // bareDepthPass's target
     gl::Framebuffer mBareFramebuffer;
-    int mCulled = 0;
     int mGeneration = 0;
 };
 

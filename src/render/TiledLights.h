@@ -29,7 +29,7 @@ struct LightTile {
 
 class TiledLights {
 public:
-    // Plans one frame. `records` and `ranges` as LightPlan makes them (world-space records,
+    // Plans one frame. `records` and `ranges` as shadow::FramePlan makes them (world-space records,
     // the ends of each kind), seen through `viewFromWorld` and `clipFromView`; `triangles`: what
     // one more drawing of the scene costs. Tiles only when `allowed` and the cost model
     // (shadow::tilingGainMs) expects a gain. `depth`: the view's reduced depth, which bounds each

@@ -72,7 +72,7 @@ void TransmittancePass::allocate(const ShadowPass& pass) {
 void TransmittancePass::collect(const GpuScene& scene, const ShadowedLight& light,
                                 const ShadowOptions& options) {
     mVisible.clear();
-    const LightVolume volume(light);
+    const shadow::LightVolume volume(light);
     const std::vector<DrawItem>& items = scene.items();
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         if (castsTint(items[i], options) && !volume.outside(items[i].bounds)) mVisible.push_back(i);

@@ -1,9 +1,9 @@
 // When every single-map light of a frame has one kind (all spots, say), the main pass is a
-// program with that kind compiled in (LightPlan::singleMapKind); with kinds mixed, the
+// program with that kind compiled in (FramePlan::singleMapKind); with kinds mixed, the
 // program reads each record's kind. Both must light the same: adding a light of another
 // kind that adds nothing (intensity 0, with its own map) turns the specialised program into
 // the mixed one and must leave every byte of the image as it was. Likewise a frame whose
-// lights have no distance falloff (LightPlan::constantFalloff), or whose lit objects have no
+// lights have no distance falloff (FramePlan::constantFalloff), or whose lit objects have no
 // specular highlight (DrawItem::specular, per draw), against the general program.
 #include <gtest/gtest.h>
 

@@ -374,12 +374,17 @@ TEST(PointLights, SixPassFallbackWritesTheSameCubes) {
     // holds its caster and plate, each other one stays cleared to the far plane.
     for (const std::uint8_t faces : {shadow::kAllCubeFaces, std::uint8_t(0x25)}) {
         frame.faces = faces;
-        std::vector<render::ShadowedLight> a{{0, light.shadowMapSize, frame, true, 0}}, b = a;
+        const std::vector<shadow::ShadowedLight> maps{
+            {.light = 0, .mapSize = light.shadowMapSize, .frame = frame, .depthClamp = true}};
         render::ShadowPass layered(true), sixPasses(false);
         const ShadowOptions options;
+        shadow::FramePlan a, b;
+        a.planMaps(maps, gpu.planScene(), options, layered.held());
+        b.planMaps(maps, gpu.planScene(), options, sixPasses.held());
         ASSERT_EQ(layered.render(gpu, a, options).rendered, 1);
         ASSERT_EQ(sixPasses.render(gpu, b, options).rendered, 1);
-        const Image16 ma = layered.readBack(a[0]), mb = sixPasses.readBack(b[0]);
+        const Image16 ma = layered.readBack(a.shadowed()[0]),
+                      mb = sixPasses.readBack(b.shadowed()[0]);
         ASSERT_EQ(ma.width, 6 * light.shadowMapSize);
         EXPECT_EQ(ma.pixels, mb.pixels);
         for (int face = 0; face < 6; ++face) {

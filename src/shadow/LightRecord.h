@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-namespace gnomon::render::gpu {
+namespace gnomon::gpu {
 
 using vec2 = glm::vec2;
 using vec3 = glm::vec3;
@@ -39,8 +39,8 @@ inline LightRecord emptyLightRecord() {
     return r;
 }
 
-}  // namespace gnomon::render::gpu
+}  // namespace gnomon::gpu
 
-namespace gnomon::render {
+namespace gnomon {
 using GpuLight = gpu::LightRecord;
-}  // namespace gnomon::render
+}  // namespace gnomon

@@ -1,4 +1,4 @@
-#include "render/LightPlan.h"
+#include "shadow/FramePlan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "scene/SceneUtil.h"
 
-namespace gnomon::render {
+namespace gnomon::shadow {
 
 namespace {
 // LightRecord::type (shaders/light_record.glsl).
@@ -29,7 +29,7 @@ bool casts(const Scene& s, const RenderOptions& options, std::size_t i) {
 }
 
 // The map-related fields of a light record for a single-frustum or cube frame.
-void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const Light& light,
+void fillShadowRecord(GpuLight& g, const LightCameraFrame& frame, const Light& light,
                       const ShadowOptions& options) {
     g.texelWorldSize = frame.texelWorldSize;
     g.mapNear = frame.near;
@@ -49,16 +49,16 @@ void fillShadowRecord(GpuLight& g, const shadow::LightCameraFrame& frame, const 
         g.emitterAngular = 0;
         g.emitterDistance = offset;
     }
-    g.frame = frame.kind == shadow::FrameKind::Cube           ? gpu::kFrameCube
-              : frame.kind == shadow::FrameKind::Orthographic ? gpu::kFrameOrthographic
-                                                              : gpu::kFramePerspective;
-    if (frame.kind != shadow::FrameKind::Cube) {
-        g.textureFromWorld = shadow::textureFromClip() * frame.clipFromWorld();
+    g.frame = frame.kind == FrameKind::Cube           ? gpu::kFrameCube
+              : frame.kind == FrameKind::Orthographic ? gpu::kFrameOrthographic
+                                                      : gpu::kFramePerspective;
+    if (frame.kind != FrameKind::Cube) {
+        g.textureFromWorld = textureFromClip() * frame.clipFromWorld();
     }
 }
 }  // namespace
 
-bool LightPlan::wantsViewSamples(const Scene& s, const RenderOptions& options) {
+bool FramePlan::wantsViewSamples(const Scene& s, const RenderOptions& options) {
     if (options.shadow.fitTo != FitTo::ViewDepth) return false;
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         const Light& l = s.lights[i];
@@ -69,53 +69,57 @@ bool LightPlan::wantsViewSamples(const Scene& s, const RenderOptions& options) {
     return false;
 }
 
-LightPlan::Held* LightPlan::held(std::size_t i) {
+FramePlan::Held* FramePlan::held(std::size_t i) {
     if (!mFollowing) return nullptr;
     if (mHeld.size() <= i) mHeld.resize(i + 1);
     return &mHeld[i];
 }
 
-bool LightPlan::unchanged(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-                          const shadow::ViewSamples* samples, const Camera* fitCamera) const {
+bool FramePlan::unchanged(const Scene& s, const RenderOptions& options, const PlanScene& scene,
+                          const ViewSamples* samples, const Camera* fitCamera) const {
     const Made& m = mMade;
     // Samples filled some other way than viewSamples() carry no generation: always replan.
     const std::uint64_t generation = samples ? samples->generation : 0;
-    return m.valid && (!samples || generation != 0) && m.geometry == scene.revision() &&
+    return m.valid && (!samples || generation != 0) && m.geometry == scene.revision &&
            m.samples == generation && m.following == mFollowing &&
            m.hasFitCamera == (fitCamera != nullptr) && (!fitCamera || m.fitCamera == *fitCamera) &&
            m.camera == s.camera && m.options == options && m.lights == s.lights;
 }
 
-void LightPlan::plan(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-                     const shadow::ViewSamples* samples, const Camera* fitCamera) {
-    if (unchanged(s, options, scene, samples, fitCamera)) return;
-    mMade.valid = false;  // until this plan is whole
-    mFitCamera = fitCamera ? *fitCamera : s.camera;
-    // Faces of their own only with the view's samples to fit them to (a face fitted to boxes
-    // is no finer than the cube's), and while their records fit the main pass. Not under PCSS:
-    // its 48-texel search widens each face by ~106 texels a side (cubeLookupReachTexels), a
-    // face map 1.2x coarser than the cube's, and on tutorial-point it shadowed 0.055 % of
-    // the view away from edges where the cube shadowed none.
-    const bool faces = samples && !samples->empty() &&
-                       options.shadow.pointMaps == PointMaps::Faces &&
-                       options.shadow.filter != ShadowFilter::Pcss;
-    planLights(s, options, scene, samples, faces);
-    if (mHasFaces && int(mLights.size() + mCascadeRecords.size()) > mRecordLimit)
-        planLights(s, options, scene, samples, false);
-    orderLights(s.lights.size());
-    mMade.geometry = scene.revision();
-    mMade.samples = samples ? samples->generation : 0;
-    mMade.lights = s.lights;
-    mMade.camera = s.camera;
-    mMade.hasFitCamera = fitCamera != nullptr;
-    if (fitCamera) mMade.fitCamera = *fitCamera;
-    mMade.following = mFollowing;
-    mMade.options = options;
-    mMade.valid = true;
+void FramePlan::plan(const Scene& s, const RenderOptions& options, const PlanScene& scene,
+                     const ViewSamples* samples, const Camera* fitCamera, const HeldMaps& held) {
+    if (!unchanged(s, options, scene, samples, fitCamera)) {
+        mMade.valid = false;  // until this plan is whole
+        mFitCamera = fitCamera ? *fitCamera : s.camera;
+        // Faces of their own only with the view's samples to fit them to (a face fitted to
+        // boxes is no finer than the cube's), and while their records fit the main pass. Not
+        // under PCSS: its blocker search widens each face (cubeLookupReachTexels) until a face
+        // map is coarser than the cube's.
+        const bool faces = samples && !samples->empty() &&
+                           options.shadow.pointMaps == PointMaps::Faces &&
+                           options.shadow.filter != ShadowFilter::Pcss;
+        planLights(s, options, scene, samples, faces);
+        if (mHasFaces && int(mLights.size() + mCascadeRecords.size()) > mRecordLimit)
+            planLights(s, options, scene, samples, false);
+        orderLights(s.lights.size());
+        layOutMaps(options.shadow);
+        fillMapRecords();
+        collectCasters(scene, options.shadow);
+        mMade.geometry = scene.revision;
+        mMade.samples = samples ? samples->generation : 0;
+        mMade.lights = s.lights;
+        mMade.camera = s.camera;
+        mMade.hasFitCamera = fitCamera != nullptr;
+        if (fitCamera) mMade.fitCamera = *fitCamera;
+        mMade.following = mFollowing;
+        mMade.options = options;
+        mMade.valid = true;
+    }
+    chooseRedraws(held);
 }
 
-void LightPlan::planLights(const Scene& s, const RenderOptions& options, const GpuScene& scene,
-                           const shadow::ViewSamples* samples, bool faces) {
+void FramePlan::planLights(const Scene& s, const RenderOptions& options, const PlanScene& scene,
+                           const ViewSamples* samples, bool faces) {
     mShadowed.clear();
     mLights.clear();
     mCascadeRecords.clear();
@@ -124,9 +128,10 @@ void LightPlan::planLights(const Scene& s, const RenderOptions& options, const G
     // What fitted light cameras look at: the items' boxes, the view and what it sees.
     mFit.casters.clear();
     mFit.receivers.clear();
-    for (const DrawItem& item : scene.items()) {
-        if (item.indexCount == 0) continue;
-        if (castsShadow(item, options.shadow)) mFit.casters.push_back(item.bounds);
+    for (const SceneItem& item : *scene.items) {
+        if (!item.drawable) continue;
+        if (castsDepth(item.casts, item.drawable, item.alphaMode, options.shadow))
+            mFit.casters.push_back(item.bounds);
         if (item.receives) mFit.receivers.push_back(item.bounds);
     }
     mFit.viewKnown = true;
@@ -159,28 +164,31 @@ void LightPlan::planLights(const Scene& s, const RenderOptions& options, const G
         g.normalOffset = options.shadow.normalOffset;
         const bool cascadable = shadowing && light.type == LightType::Directional &&
                                 light.shadowCamera.policy == ShadowCameraPolicy::Fit &&
-                                !scene.bounds().empty();
+                                !scene.bounds.empty();
         int cascades = options.shadow.cascades;
         if (cascades == 0) {
             cascades = samples && !samples->empty()
-                           ? shadow::autoCascadeCount(samples->nearest, samples->farthest)
+                           ? autoCascadeCount(samples->nearest, samples->farthest)
                            : 1;
         }
         if (cascadable && cascades > 1 && !(samples && samples->empty())) {
-            planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds(), g);
+            planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds, g);
         } else if (shadowing) {
             Held* h = held(i);
             int size = 0;
-            const shadow::LightCameraFrame frame = shadow::sizedLightCameraFrame(
+            const LightCameraFrame frame = sizedLightCameraFrame(
                 light, options.shadow, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr);
-            if (frame.valid && frame.kind == shadow::FrameKind::Cube && faces) {
+            if (frame.valid && frame.kind == FrameKind::Cube && faces) {
                 planFaces(s, options, i, frame.faces, size, g);
             } else if (frame.valid) {
                 fillShadowRecord(g, frame, light, options.shadow);
                 g.sceneLight = int(i);
-                mShadowed.push_back({int(i), size, frame,
-                                     light.shadowCamera.policy == ShadowCameraPolicy::Fit, 0,
-                                     int(i), -1});
+                mShadowed.push_back(
+                    {.light = int(i),
+                     .mapSize = size,
+                     .frame = frame,
+                     .depthClamp = light.shadowCamera.policy == ShadowCameraPolicy::Fit,
+                     .record = int(i)});
             }
         }
         mLights.push_back(g);
@@ -191,13 +199,12 @@ void LightPlan::planLights(const Scene& s, const RenderOptions& options, const G
 // are off are dropped; unshadowed, single-map, cube and cascaded lights follow each other,
 // then the cascade records. Indices into the records (shadowed lights, cascaded lights'
 // first cascade) are rewritten to match.
-void LightPlan::orderLights(std::size_t sceneLights) {
+void FramePlan::orderLights(std::size_t sceneLights) {
     mOrdered.clear();
     mRemap.assign(sceneLights, -1);
     mHasMap.assign(sceneLights, 0);
     for (const ShadowedLight& sl : mShadowed)
         mHasMap[std::size_t(sl.light)] = 1;
-    // (Map layers are assigned later, by the shadow pass: layer says nothing yet.)
     // The record classes in uLightRanges' order: unshadowed, one map, cube, cascaded.
     auto kindOf = [&](std::size_t i) {
         const GpuLight& g = mLights[i];
@@ -227,7 +234,7 @@ void LightPlan::orderLights(std::size_t sceneLights) {
     mLights.swap(mOrdered);
 }
 
-int LightPlan::singleMapKind() const {
+int FramePlan::singleMapKind() const {
     int kind = -1;
     for (int i = mRanges.x; i < mRanges.y; ++i) {
         const int type = mLights[std::size_t(i)].type;
@@ -237,7 +244,7 @@ int LightPlan::singleMapKind() const {
     return kind;
 }
 
-bool LightPlan::constantFalloff() const {
+bool FramePlan::constantFalloff() const {
     for (int i = 0; i < mRanges.w; ++i) {
         const GpuLight& g = mLights[std::size_t(i)];
         const int type = g.type;
@@ -252,11 +259,11 @@ bool LightPlan::constantFalloff() const {
 // samples: split over the depth range they span, each cascade fitted to the samples that
 // may read it (its own slice and the previous cascade's blend band). Without: from the
 // camera's near plane to where the scene ends, each a stabilised sphere around its slice.
-void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
+void FramePlan::planCascades(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
                              const glm::vec3& direction, int mapSize, int count, float aspect,
                              const Aabb& sceneBounds, GpuLight& g) {
     const Camera& cam = mFitCamera;
-    const shadow::ViewSamples* samples = mFit.samples;
+    const ViewSamples* samples = mFit.samples;
     float near = cam.near, far = cam.far;
     if (samples) {
         // The samples' pad: the surface between them may come a little nearer or go farther.
@@ -271,13 +278,13 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
     }
     if (options.shadow.stabilise) {
         float n = near, f = far;
-        shadow::stabiliseDepthRange(n, f);
+        stabiliseDepthRange(n, f);
         n = std::max(n, cam.near);
         f = std::min(f, cam.far);
         // A held range serves while it holds [near, far] and is not much looser than n..f.
         Held* h = held(lightIndex);
         if (h && h->cascades == count && h->splitRange.x <= near && h->splitRange.y >= far &&
-            h->splitRange.y / h->splitRange.x <= shadow::kHoldSlack * (f / n)) {
+            h->splitRange.y / h->splitRange.x <= kHoldSlack * (f / n)) {
             n = h->splitRange.x;
             f = h->splitRange.y;
         } else if (h) {
@@ -288,8 +295,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         far = f;
     }
     const float blend = options.shadow.cascadeBlend;
-    const std::vector<float> splits =
-        shadow::cascadeSplits(near, far, count, options.shadow.cascadeLambda);
+    const std::vector<float> splits = cascadeSplits(near, far, count, options.shadow.cascadeLambda);
     const int first = int(s.lights.size() + mCascadeRecords.size());
     mHasCascades = true;
     g.frame = gpu::kFrameCascaded;
@@ -299,7 +305,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
     g.cascadeBlend = blend;
     for (int k = 0; k < count; ++k) {
         const float from = splits[std::size_t(k)], to = splits[std::size_t(k) + 1];
-        shadow::LightCameraFrame frame;
+        LightCameraFrame frame;
         frame.valid = false;
         // Where the previous cascade starts blending into this one (shadow_lookup.glsl's
         // cascadeVisibility: the first cascade's band is measured from depth 0).
@@ -307,14 +313,14 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         const float reach = k == 0 ? 0.0f : from - blend * (from - previous);
         if (samples) {
             Held* h = held(lightIndex);
-            frame = shadow::sampledCascadeFrame(
-                direction, mFit, reach, k + 1 == count ? std::numeric_limits<float>::max() : to,
-                mapSize, h && k < kMaxCascades ? &h->maps[k] : nullptr);
+            frame = sampledCascadeFrame(direction, mFit, reach,
+                                        k + 1 == count ? std::numeric_limits<float>::max() : to,
+                                        mapSize, h && k < kMaxCascades ? &h->maps[k] : nullptr);
         }
         // No sample or no caster in this slice: a sphere around it still shadows correctly.
         if (!frame.valid) {
-            frame = shadow::cascadeFrame(direction, cam, aspect, from, to, sceneBounds, mapSize,
-                                         options.shadow.stabilise);
+            frame = cascadeFrame(direction, cam, aspect, from, to, sceneBounds, mapSize,
+                                 options.shadow.stabilise);
         }
         GpuLight c = g;
         fillShadowRecord(c, frame, s.lights[lightIndex], options.shadow);
@@ -325,8 +331,14 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
         c.firstSubRecord = c.cascadeCount = 0;  // a map of its own, not the light's list
         c.cascadeBlend = 0.0f;
         mCascadeRecords.push_back(c);
-        mShadowed.push_back({int(lightIndex), mapSize, frame, true, 0, first + k, k, reach,
-                             k + 1 == count ? std::numeric_limits<float>::max() : to});
+        mShadowed.push_back({.light = int(lightIndex),
+                             .mapSize = mapSize,
+                             .frame = frame,
+                             .depthClamp = true,
+                             .record = first + k,
+                             .cascade = k,
+                             .depthFrom = reach,
+                             .depthTo = k + 1 == count ? std::numeric_limits<float>::max() : to});
     }
 }
 
@@ -335,7 +347,7 @@ void LightPlan::planCascades(const Scene& s, const RenderOptions& options, std::
 // says where they are (light_record.glsl, kFrameFaces): firstSubRecord the first, faceSlots a
 // table of six 3-bit slots, face f's record at first + slot, 7 for a face with no map (no
 // pixel the view drew looks it up).
-void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
+void FramePlan::planFaces(const Scene& s, const RenderOptions& options, std::size_t lightIndex,
                           std::uint8_t faces, int mapSize, GpuLight& g) {
     const Light& light = s.lights[lightIndex];
     const int first = int(s.lights.size() + mCascadeRecords.size());
@@ -344,7 +356,7 @@ void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::siz
         int slot = 7;
         if ((faces >> face) & 1u) {
             Held* h = held(lightIndex);
-            const shadow::LightCameraFrame frame = shadow::pointFaceFrame(
+            const LightCameraFrame frame = pointFaceFrame(
                 light, face, options.shadow, mFit, mapSize, h ? &h->maps[1 + face] : nullptr);
             if (frame.valid) {
                 GpuLight c = g;
@@ -352,9 +364,12 @@ void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::siz
                 c.mapCorner = glm::vec2(0.0f);
                 c.mapNear = frame.near;
                 mCascadeRecords.push_back(c);
-                ShadowedLight sl{int(lightIndex), mapSize, frame, true, 0, first + count};
-                sl.face = face;
-                mShadowed.push_back(sl);
+                mShadowed.push_back({.light = int(lightIndex),
+                                     .mapSize = mapSize,
+                                     .frame = frame,
+                                     .depthClamp = true,
+                                     .record = first + count,
+                                     .face = face});
                 slot = count++;
             }
         }
@@ -368,18 +383,4 @@ void LightPlan::planFaces(const Scene& s, const RenderOptions& options, std::siz
     g.faceSlots = table;
 }
 
-void LightPlan::finish(const ShadowPass& pass) {
-    for (const ShadowedLight& sl : mShadowed) {
-        GpuLight& g = mLights[std::size_t(sl.record)];
-        const bool cube = sl.frame.kind == shadow::FrameKind::Cube;
-        const int arraySize = cube ? pass.cubes().width() : pass.mapArraySize();
-        g.layer = sl.layer;
-        g.texelWorldSize = sl.frame.texelWorldSize;  // a cube drawn larger has finer texels
-        g.uvScale = float(sl.mapSize) / float(arraySize);
-        g.texelUv = 1.0f / float(arraySize);
-        // A 2D map's square in its layer (LightRecord::mapCorner).
-        if (!cube) g.mapCorner = glm::vec2(sl.origin) / float(arraySize);
-    }
-}
-
-}  // namespace gnomon::render
+}  // namespace gnomon::shadow

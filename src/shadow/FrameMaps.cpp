@@ -1,0 +1,134 @@
+// The maps' side of the frame plan: where each map lies in its array, which casters reach it,
+// the key it is drawn under, and which maps are drawn again this frame.
+#include <algorithm>
+
+#include "shadow/FramePlan.h"
+
+namespace gnomon::shadow {
+
+// Sizes the arrays for the maps and gives each its layer (and, for 2D maps, its square in the
+// layer).
+void FramePlan::layOutMaps(const ShadowOptions& options) {
+    MapLayout layout;
+    mSizes.clear();
+    for (ShadowedLight& l : mShadowed) {
+        if (l.frame.kind == FrameKind::Cube) {
+            layout.sizeCube = std::max(layout.sizeCube, l.mapSize);
+            l.layer = layout.cubes++;
+        } else {
+            layout.size2D = std::max(layout.size2D, l.mapSize);
+            mSizes.push_back(l.mapSize);
+        }
+    }
+    // A cube map array has one size, and a cube's lookups read whole faces: every cube is
+    // drawn at the largest size asked for, its texel shrunk to match (a light that asked for
+    // less gets the finer map).
+    for (ShadowedLight& l : mShadowed) {
+        if (l.frame.kind != FrameKind::Cube || l.mapSize == layout.sizeCube) continue;
+        l.frame.texelWorldSize *= float(l.mapSize) / float(layout.sizeCube);
+        l.mapSize = layout.sizeCube;
+    }
+    layout.layers2D = packMaps(mSizes, layout.size2D, mSlots);
+    std::size_t next2D = 0;
+    for (ShadowedLight& l : mShadowed) {
+        if (l.frame.kind == FrameKind::Cube) continue;
+        l.layer = mSlots[next2D].layer;
+        l.origin = mSlots[next2D++].origin;
+    }
+    layout.format2D = options.depthFormat;
+    // Cubes of colour formats store native depth.
+    layout.formatCube =
+        isColourFormat(options.depthFormat) ? DepthFormat::Depth32F : options.depthFormat;
+    mLayout = layout;
+}
+
+// The records' map fields from where the maps went.
+void FramePlan::fillMapRecords() {
+    for (const ShadowedLight& sl : mShadowed) {
+        GpuLight& g = mLights[std::size_t(sl.record)];
+        const bool cube = sl.frame.kind == FrameKind::Cube;
+        const int arraySize = cube ? mLayout.sizeCube : mLayout.size2D;
+        g.layer = sl.layer;
+        g.texelWorldSize = sl.frame.texelWorldSize;  // a cube drawn larger has finer texels
+        g.uvScale = float(sl.mapSize) / float(arraySize);
+        g.texelUv = 1.0f / float(arraySize);
+        // A 2D map's square in its layer (LightRecord::mapCorner).
+        if (!cube) g.mapCorner = glm::vec2(sl.origin) / float(arraySize);
+    }
+}
+
+void FramePlan::planMaps(const std::vector<ShadowedLight>& maps, const PlanScene& scene,
+                         const ShadowOptions& options, const HeldMaps& held) {
+    mMade.valid = false;
+    mLights.clear();
+    mRanges = glm::ivec4(0);
+    mHasCascades = mHasFaces = false;
+    mShadowed = maps;
+    layOutMaps(options);
+    collectCasters(scene, options);
+    chooseRedraws(held);
+}
+
+// Each map's depth casters (those inside its light's volume) and the key it is drawn under.
+// Tinting casters are drawn by the transmittance pass after the map: they count in the key's
+// hash (moving one redraws both), not in the list.
+void FramePlan::collectCasters(const PlanScene& scene, const ShadowOptions& options) {
+    mCasters.clear();
+    mHoldsLight.clear();
+    mCulled = 0;
+    const std::vector<SceneItem>& items = *scene.items;
+    for (ShadowedLight& l : mShadowed) {
+        const LightVolume volume(l);
+        const bool cube = l.frame.kind == FrameKind::Cube;
+        l.firstCaster = std::uint32_t(mCasters.size());
+        std::uint64_t hash = scene.geometryHash;
+        for (std::uint32_t i = 0; i < items.size(); ++i) {
+            const SceneItem& item = items[i];
+            const bool depth = castsDepth(item.casts, item.drawable, item.alphaMode, options);
+            if (!depth && !castsTint(item.casts, item.drawable, item.alphaMode, options)) continue;
+            if (volume.outside(item.bounds)) {
+                if (depth) ++mCulled;
+                continue;
+            }
+            if (depth) {
+                mCasters.push_back(i);
+                mHoldsLight.push_back(std::uint8_t(item.closed && volume.holdsLight(item.bounds)));
+            }
+            hash = (hash ^ item.dataHash) * 0x100000001b3ull + i;
+        }
+        l.casterCount = std::uint32_t(mCasters.size()) - l.firstCaster;
+        MapKey& key = l.key;
+        key = MapKey{};
+        key.mapSize = l.mapSize;
+        key.place = cube ? glm::ivec3(0, 0, l.layer) : glm::ivec3(l.origin, l.layer);
+        key.castersHash = hash;
+        key.cull = options.cull;
+        key.slope = options.biasSlope;
+        key.units = options.biasUnits;
+        key.depthClamp = l.depthClamp;
+        key.format = options.depthFormat;
+        key.blend = options.blendShadows;
+        key.faces = cube ? l.frame.faces : kAllCubeFaces;
+        for (int face = 0; face < (cube ? 6 : 1); ++face)
+            key.clipFromWorld[std::size_t(face)] =
+                cube ? l.frame.faceClipFromWorld(face) : l.frame.clipFromWorld();
+    }
+}
+
+// A map is kept when its array was not remade and what it holds serves the key wanted now.
+void FramePlan::chooseRedraws(const HeldMaps& held) {
+    const MapLayout& have = held.layout;
+    const bool same2D = have.size2D == mLayout.size2D && have.layers2D == mLayout.layers2D &&
+                        have.format2D == mLayout.format2D;
+    const bool sameCubes = have.sizeCube == mLayout.sizeCube && have.cubes == mLayout.cubes &&
+                           have.formatCube == mLayout.formatCube;
+    std::size_t next2D = 0;
+    for (ShadowedLight& l : mShadowed) {
+        const bool cube = l.frame.kind == FrameKind::Cube;
+        const std::size_t slot = cube ? std::size_t(l.layer) : next2D++;
+        const std::vector<MapKey>& keys = cube ? held.cubes : held.maps2D;
+        l.redraw = !((cube ? sameCubes : same2D) && slot < keys.size() && keys[slot].serves(l.key));
+    }
+}
+
+}  // namespace gnomon::shadow
