@@ -149,6 +149,10 @@ unknown_scene)
     run render --scene no-such-scene --out "$work/a.png"
     expect 2 "unknown scene 'no-such-scene'"
     expect 2 "book-triangle"  # the message lists the known scenes
+    ! grep -q "did you mean" "$work/stderr" || fail "a name far from every scene got a guess"
+    # A slip of the keyboard: the scene meant is named before the list.
+    run render --scene tutorial-rom --out "$work/a.png"
+    expect 2 "unknown scene 'tutorial-rom'; did you mean tutorial-room? (built-in scenes:"
     ;;
 gltf)
     corpus=$(dirname "$0")/../data/gltf
@@ -421,6 +425,9 @@ usage)
     # A mistyped command: the nearest one named, exit 2.
     run rendr --scene book-triangle
     expect 2 "gnomon: error: unknown command 'rendr'; did you mean 'render'?"
+    # A word no command is near: the list alone.
+    run xyzzy --scene book-triangle
+    expect 2 "gnomon: error: unknown command 'xyzzy' (commands: scenes, options, render"
     # Global flags after the command, as before it.
     run render --verbose --scene book-triangle --size 32x32 --out "$work/v.png"
     skip_without_gl

@@ -60,6 +60,25 @@ TEST(Scene, UnknownNameThrowsListingKnownNames) {
     }
 }
 
+// A slip of the keyboard gets the name meant; a word far from every name gets none.
+TEST(Scene, MistypedNameSuggestsTheNearest) {
+    try {
+        builtinScene("tutorial-rom");
+        FAIL() << "builtinScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown scene 'tutorial-rom'; did you mean "
+                                             "tutorial-room? (built-in scenes: book-triangle"),
+                  std::string::npos)
+            << e.what();
+    }
+    try {
+        builtinScene("no-such-scene");
+        FAIL() << "builtinScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).find("did you mean"), std::string::npos) << e.what();
+    }
+}
+
 // book-triangle: light (0, 7, 2), perspective 70 deg, aspect 1, near 1, far 100, looking at
 // the origin with up +y; view eye (0, 7, 9) at the origin, 45 deg, near 1, far 100; 400x400;
 // shadowed colour x 0.7.
