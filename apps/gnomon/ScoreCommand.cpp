@@ -20,7 +20,11 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
         ->required();
     cmd->add_option("--out-dir", args.outDir,
                     "folder for render.png, errors.png (false shadow red, leaks blue, pale "
-                    "inside the aliasing band) and score.json (default score)");
+                    "inside the aliasing band), score.json, errors.csv (a row per misclassified "
+                    "pixel and light) and, where the scene has coloured shadows (blended casters "
+                    "with --blend-shadows coloured), tint-errors.png; with --path, path.json and "
+                    "the --error-maps (default score)")
+        ->type_name("DIR");
     cmd->add_option("--band", args.options.bandTexels,
                     "aliasing band: map texels either side of a reference shadow boundary "
                     "(along the surface), 0..64 (default " +
@@ -188,7 +192,7 @@ int runScore(const ScoreArgs& args, bool verbose) {
     for (const ShadowScore& s : r.lights)
         printRow(s);
     printRow(r.overall);
-    if (options.shadow.blendShadows == BlendShadows::Coloured) {
+    if (!r.tintErrors.empty()) {
         std::printf(
             "coloured shadows: transmitted light off by %.2f/255 on average over %ld "
             "tinted pixel x light pairs (%.2f/255 over the %ld away from edges; its colour, "

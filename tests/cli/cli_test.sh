@@ -98,8 +98,25 @@ score)
     skip_without_gl
     expect 0 "misclassified"
     expect 0 "directional"
-    for f in render.png errors.png score.json; do [[ -s "$work/s/$f" ]] || fail "no $f"; done
+    for f in render.png errors.png score.json errors.csv; do
+        [[ -s "$work/s/$f" ]] || fail "no $f"
+    done
     grep -q '"false_shadow"' "$work/s/score.json" || fail "score.json lacks false_shadow"
+    # Nothing in the room is translucent: no coloured-shadow line, map or numbers.
+    [[ ! -e "$work/s/tint-errors.png" ]] || fail "tint-errors.png for an opaque scene"
+    ! grep -q "coloured shadows" "$work/stdout" || fail "coloured-shadow line for an opaque scene"
+    ! grep -q '"tint"' "$work/s/score.json" || fail "score.json has tint for an opaque scene"
+    # Panes of coloured glass: the tinted light is scored, mapped and listed.
+    glass=$(dirname "$0")/../../examples/stained-glass.json
+    run score --scene "$glass" --size 96x96 --out-dir "$work/g"
+    expect 0 "coloured shadows: transmitted light off by"
+    expect 0 "tint-errors.png"
+    [[ -s "$work/g/tint-errors.png" ]] || fail "no tint-errors.png for coloured glass"
+    grep -q '"tint"' "$work/g/score.json" || fail "score.json lacks tint for coloured glass"
+    # The same glass with dithered shadows tints nothing.
+    run score --scene "$glass" --size 96x96 --blend-shadows dithered --out-dir "$work/d"
+    expect 0 "misclassified"
+    [[ ! -e "$work/d/tint-errors.png" ]] || fail "tint-errors.png with --blend-shadows dithered"
     # A score that fails leaves no folder behind; one that cannot write leaves no files.
     run score --scene tutorial-room --size 96x96 --light-only 9 --out-dir "$work/none"
     expect 2 "light-only 9"
