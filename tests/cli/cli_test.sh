@@ -106,6 +106,9 @@ score)
     [[ ! -e "$work/s/tint-errors.png" ]] || fail "tint-errors.png for an opaque scene"
     ! grep -q "coloured shadows" "$work/stdout" || fail "coloured-shadow line for an opaque scene"
     ! grep -q '"tint"' "$work/s/score.json" || fail "score.json has tint for an opaque scene"
+    # The table fits 80 columns (so do the notes: the acne below has them all).
+    wide=$(awk 'length > 80' "$work/stdout")
+    [[ -z $wide ]] || fail "score lines over 80 columns: $wide"
     # Panes of coloured glass: the tinted light is scored, mapped and listed.
     glass=$(dirname "$0")/../../examples/stained-glass.json
     run score --scene "$glass" --size 96x96 --out-dir "$work/g"
@@ -113,6 +116,8 @@ score)
     expect 0 "tint-errors.png"
     [[ -s "$work/g/tint-errors.png" ]] || fail "no tint-errors.png for coloured glass"
     grep -q '"tint"' "$work/g/score.json" || fail "score.json lacks tint for coloured glass"
+    wide=$(awk 'length > 80' "$work/stdout")
+    [[ -z $wide ]] || fail "score lines over 80 columns: $wide"
     # The same glass with dithered shadows tints nothing.
     run score --scene "$glass" --size 96x96 --blend-shadows dithered --out-dir "$work/d"
     expect 0 "misclassified"
@@ -128,8 +133,12 @@ score)
     # No tolerance at all: acne everywhere, above any sensible bound: exit 3.
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --bias-constant 0 \
         --bias-depth-aware 0 --bias-slope 0 --bias-units 0 --normal-offset 0 --cull none --receiver-plane off \
-        --max-error 0.05
+        --max-error 0.05 --contact-range 0.1
     expect 3 "exceeds --max-error"
+    expect 3 "away from edges (pixel x light pairs)"
+    expect 3 "at contacts (occluder within 0.1)"
+    wide=$(awk 'length > 80' "$work/stdout")
+    [[ -z $wide ]] || fail "score lines over 80 columns: $wide"
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --max-error 2
     expect 2 "--max-error must be a fraction"
     # Over a path: a line per frame, path.json and each frame's error map.
