@@ -67,6 +67,8 @@ names = [p["name"] for p in r["passes"]]
 assert names == ["view depth", "shadow light 0", "main", "read-back"], names
 for p in r["passes"]:
     assert set(p) == {"name", "ms", "triangles", "fragments"}, p
+# The view's depth is drawn each frame (its sun is fitted to it): every triangle of the room.
+assert r["passes"][0]["triangles"] == r["main_triangles"] > 0, r["passes"][0]
 assert r["moment_passes"] == 0, r["moment_passes"]
 # The floor, as two medians and as each frame's own ratio. Its value is a timing and this
 # machine is noisy (a 64x64 frame can take either pass first), so only its presence and
