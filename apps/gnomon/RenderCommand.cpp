@@ -97,12 +97,10 @@ void RenderFlags::placeCameraAndSun(Scene& scene) const {
         if (!v || !(v->y > 0.0f && v->y <= 90.0f))
             bad("--sun",
                 "expected AZIMUTH,ELEVATION in degrees, elevation in (0, 90], got '" + sun + "'");
-        const float az = glm::radians(v->x), el = glm::radians(v->y);
         Light l;
         l.name = "sun (--sun)";
         l.type = LightType::Directional;
-        l.direction =
-            -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+        l.direction = sunDirection(v->x, v->y);
         scene.lights = {l};
         // The model's added sun is gone with the rest: its warning would only mislead.
         std::erase_if(scene.warnings,

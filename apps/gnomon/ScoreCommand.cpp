@@ -1,7 +1,10 @@
 #include "ScoreCommand.h"
 
+#include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include "OutputSet.h"
 #include "Progress.h"
@@ -20,7 +23,11 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
         ->required();
     cmd->add_option("--out-dir", args.outDir,
                     "folder for render.png, errors.png (false shadow red, leaks blue, pale "
-                    "inside the aliasing band) and score.json (default score)");
+                    "inside the aliasing band), score.json, errors.csv (a row per misclassified "
+                    "pixel and light) and, where the scene has coloured shadows (blended casters "
+                    "with --blend-shadows coloured), tint-errors.png; with --path, path.json and "
+                    "the --error-maps (default score)")
+        ->type_name("DIR");
     cmd->add_option("--band", args.options.bandTexels,
                     "aliasing band: map texels either side of a reference shadow boundary "
                     "(along the surface), 0..64 (default " +
@@ -53,12 +60,53 @@ CLI::App* addScoreCommand(CLI::App& app, ScoreArgs& args) {
 
 namespace {
 
+// What score prints fits a terminal of this many columns.
+constexpr std::size_t kColumns = 80;
+
+// `text` and a newline, broken at spaces into lines of at most kColumns, the lines after
+// the first indented (a word longer than a line keeps a line of its own).
+void printWrapped(const std::string& text) {
+    std::string line, word;
+    bool empty = true;  // no word on the line yet
+    std::istringstream words(text);
+    while (words >> word) {
+        if (!empty && line.size() + 1 + word.size() > kColumns) {
+            std::printf("%s\n", line.c_str());
+            line = "  ";
+            empty = true;
+        }
+        line += (empty ? "" : " ") + word;
+        empty = false;
+    }
+    std::printf("%s\n", line.c_str());
+}
+// printf into a string (checked as printf's format is).
+[[gnu::format(printf, 1, 2)]] std::string format(const char* pattern, ...) {
+    std::va_list values, again;
+    va_start(values, pattern);
+    va_copy(again, values);
+    std::string text(std::size_t(std::max(0, std::vsnprintf(nullptr, 0, pattern, values))), ' ');
+    std::vsnprintf(text.data(), text.size() + 1, pattern, again);
+    va_end(again);
+    va_end(values);
+    return text;
+}
+
+// The table: a row per light and one for all, 79 columns (the false shadow and leak columns
+// under two headings, misclassified and outside the band).
+void printHeader() {
+    std::printf("%27s %26s  %16s %6s\n", "", "----- misclassified ------", "outside the band",
+                "mean");
+    std::printf("%5s  %-11s %8s %8s %8s %8s %8s %8s %6s\n", "light", "type", "pixels", "all",
+                "false", "leak", "false", "leak", "|err|");
+    std::printf("%5s  %-11s %8s %8s %8s %8s %8s\n", "", "", "", "", "shadow", "", "shadow");
+}
 void printRow(const ShadowScore& s) {
     const std::string light = s.light < 0 ? "all" : std::to_string(s.light);
-    std::printf("%5s  %-11s %9ld  %12.3f%%  %11.3f%%  %8.3f%%  %12.3f%%  %8.3f%%  %9.4f\n",
-                light.c_str(), s.type.c_str(), s.pixels, 100.0 * s.misclassified,
-                100.0 * s.falseShadow, 100.0 * s.leak, 100.0 * s.falseShadowOutsideBand,
-                100.0 * s.leakOutsideBand, s.meanAbsError);
+    std::printf("%5s  %-11s %8ld %7.3f%% %7.3f%% %7.3f%% %7.3f%% %7.3f%% %6.4f\n", light.c_str(),
+                s.type.c_str(), s.pixels, 100.0 * s.misclassified, 100.0 * s.falseShadow,
+                100.0 * s.leak, 100.0 * s.falseShadowOutsideBand, 100.0 * s.leakOutsideBand,
+                s.meanAbsError);
 }
 // The errors away from edges by cause (ErrorCauses), when there are any.
 void printCauses(const ScoreResult& r) {
@@ -66,13 +114,49 @@ void printCauses(const ScoreResult& r) {
     const long falseShadow = k.falseShadowGrazing + k.falseShadowOther;
     const long leak = k.leakGrazing + k.leakContact + k.leakOther;
     if (falseShadow + leak == 0) return;
-    std::printf(
+    printWrapped(format(
         "away from edges (pixel x light pairs): false shadow %ld (%ld on surfaces within 5.7 "
         "degrees of edge-on to the light, %ld other); leak %ld (%ld within 5.7 degrees of "
         "edge-on, %ld at contacts: occluder within 4 map texels of the surface, %ld other); "
-        "every error in errors.csv\n",
+        "every error in errors.csv",
         falseShadow, k.falseShadowGrazing, k.falseShadowOther, leak, k.leakGrazing, k.leakContact,
-        k.leakOther);
+        k.leakOther));
+}
+// A frame's score on stdout: what was scored, the table, then the notes that apply.
+void printScore(const ScoreResult& r, const Scene& scene, const RenderOptions& options,
+                const std::string& outDir) {
+    printWrapped(format("gnomon score: %s, %dx%d, filter %s, %s", scene.name.c_str(), options.width,
+                        options.height, toString(options.shadow.filter),
+                        toString(options.shadow.depthFormat)));
+    printWrapped(format("reference: %s shadows, traced in %.2f s",
+                        r.softReference ? "soft (pcss)" : "hard", r.traceSeconds));
+    printHeader();
+    for (const ShadowScore& s : r.lights)
+        printRow(s);
+    printRow(r.overall);
+    if (!r.tintErrors.empty()) {
+        printWrapped(
+            format("coloured shadows: transmitted light off by %.2f/255 on average over %ld "
+                   "tinted pixel x light pairs (%.2f/255 over the %ld away from edges; its colour, "
+                   "where both pass light: %.2f/255 over %ld)",
+                   255.0 * r.tint.meanError, r.tint.cells, 255.0 * r.tint.meanErrorOutsideBand,
+                   r.tint.cellsOutsideBand, 255.0 * r.tint.meanColourError, r.tint.cellsBothLit));
+    }
+    if (r.contactRange > 0.0f) {
+        printWrapped(
+            format("at contacts (occluder within %g): %ld pixel x light pairs in shadow, %.3f%% of "
+                   "them rendered lit",
+                   double(r.contactRange), r.overall.contactPixels, 100.0 * r.overall.contactLeak));
+    }
+    printCauses(r);
+    if (r.otherSurfacePixels > 0) {
+        printWrapped(
+            format("not scored: %ld pixels where the render drew another surface than the "
+                   "reference sees (or none)",
+                   r.otherSurfacePixels));
+    }
+    printWrapped(format("wrote %s/render.png, errors.png, %sscore.json, errors.csv", outDir.c_str(),
+                        r.tintErrors.empty() ? "" : "tint-errors.png, "));
 }
 // score(), with an activity line for the render and the tracing (the share of rows traced);
 // Ctrl-C stops the tracing at the next row.
@@ -177,40 +261,7 @@ int runScore(const ScoreArgs& args, bool verbose) {
     writeTextFile(out.file("errors.csv"), errorCellsCsv(r));
     out.keep();
 
-    std::printf("gnomon score: %s, %dx%d, filter %s, %s; reference: %s shadows, traced in %.2f s\n",
-                scene.name.c_str(), options.width, options.height, toString(options.shadow.filter),
-                toString(options.shadow.depthFormat), r.softReference ? "soft (pcss)" : "hard",
-                r.traceSeconds);
-    std::printf("%5s  %-11s %9s  %13s  %12s  %9s  %13s  %9s  %9s\n", "light", "type", "pixels",
-                "misclassified", "false shadow", "leak", "outside band:", "leak", "mean |err|");
-    std::printf("%5s  %-11s %9s  %13s  %12s  %9s  %13s  %9s  %9s\n", "", "", "", "", "", "",
-                "false shadow", "", "");
-    for (const ShadowScore& s : r.lights)
-        printRow(s);
-    printRow(r.overall);
-    if (options.shadow.blendShadows == BlendShadows::Coloured) {
-        std::printf(
-            "coloured shadows: transmitted light off by %.2f/255 on average over %ld "
-            "tinted pixel x light pairs (%.2f/255 over the %ld away from edges; its colour, "
-            "where both pass light: %.2f/255 over %ld)\n",
-            255.0 * r.tint.meanError, r.tint.cells, 255.0 * r.tint.meanErrorOutsideBand,
-            r.tint.cellsOutsideBand, 255.0 * r.tint.meanColourError, r.tint.cellsBothLit);
-    }
-    if (r.contactRange > 0.0f) {
-        std::printf(
-            "at contacts (occluder within %g): %ld pixel x light pairs in shadow, %.3f%% of "
-            "them rendered lit\n",
-            double(r.contactRange), r.overall.contactPixels, 100.0 * r.overall.contactLeak);
-    }
-    printCauses(r);
-    if (r.otherSurfacePixels > 0) {
-        std::printf(
-            "not scored: %ld pixels where the render drew another surface than the "
-            "reference sees (or none)\n",
-            r.otherSurfacePixels);
-    }
-    std::printf("wrote %s/render.png, errors.png, %sscore.json, errors.csv\n", args.outDir.c_str(),
-                r.tintErrors.empty() ? "" : "tint-errors.png, ");
+    printScore(r, scene, options, args.outDir);
     if (args.maxError >= 0.0 && r.overall.misclassified > args.maxError) {
         std::fprintf(stderr, "gnomon: misclassified %.4f%% exceeds --max-error %.4f%%\n",
                      100.0 * r.overall.misclassified, 100.0 * args.maxError);

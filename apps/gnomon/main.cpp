@@ -177,26 +177,9 @@ int runRender(const RenderArgs& args, bool verbose) {
     return 0;
 }
 
-// Edits between two words (insertions, deletions, substitutions): how near a mistyped
-// command is to a real one.
-std::size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
 // The first word that is not a flag must be a command: when it is not, one line naming the
-// nearest command (global flags take no values, so the first word is the command).
+// nearest command if one is a few typing slips away (global flags take no values, so the
+// first word is the command).
 bool unknownCommand(int argc, char** argv, const CLI::App& app) {
     std::vector<std::string> names;
     for (const CLI::App* sub : app.get_subcommands({}))
@@ -205,14 +188,13 @@ bool unknownCommand(int argc, char** argv, const CLI::App& app) {
         const std::string word = argv[i];
         if (word.empty() || word[0] == '-') continue;
         if (std::find(names.begin(), names.end(), word) != names.end()) return false;
-        std::string nearest = names.front(), list;
-        for (const std::string& n : names) {
-            if (editDistance(word, n) < editDistance(word, nearest)) nearest = n;
+        std::string list;
+        for (const std::string& n : names)
             list += (list.empty() ? "" : ", ") + n;
-        }
-        std::fprintf(stderr,
-                     "gnomon: error: unknown command '%s'; did you mean '%s'? (commands: %s)\n",
-                     word.c_str(), nearest.c_str(), list.c_str());
+        const std::string nearest = gnomon::nearestName(word, names);
+        std::fprintf(stderr, "gnomon: error: unknown command '%s'%s (commands: %s)\n", word.c_str(),
+                     nearest.empty() ? "" : ("; did you mean '" + nearest + "'?").c_str(),
+                     list.c_str());
         return true;
     }
     return false;
@@ -222,18 +204,12 @@ bool unknownCommand(int argc, char** argv, const CLI::App& app) {
 // few typing slips away ("; did you mean --map-size?"), else "".
 std::string nearestFlag(const std::string& word, const CLI::App& app) {
     if (word.rfind("--", 0) != 0) return "";
-    const std::string typed = word.substr(2, word.find('=') - 2);
-    std::string nearest;
-    std::size_t best = std::max<std::size_t>(2, typed.size() / 4) + 1;
+    std::vector<std::string> flags;
     for (const CLI::Option* o : app.get_options()) {
-        for (const std::string& name : o->get_lnames()) {
-            const std::size_t d = editDistance(typed, name);
-            if (d < best) {
-                best = d;
-                nearest = name;
-            }
-        }
+        const std::vector<std::string>& names = o->get_lnames();
+        flags.insert(flags.end(), names.begin(), names.end());
     }
+    const std::string nearest = gnomon::nearestName(word.substr(2, word.find('=') - 2), flags);
     return nearest.empty() ? "" : "; did you mean --" + nearest + "?";
 }
 

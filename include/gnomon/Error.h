@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace gnomon {
 
@@ -22,5 +23,11 @@ public:
 private:
     ErrorKind mKind;
 };
+
+// For "did you mean" in messages about a mistyped name (a scene, a command, a flag): the one
+// of `names` fewest typing slips (a letter inserted, left out or changed) from `word`, if it
+// is within max(2, letters / 4) of them, else "" (a word that near is taken for a slip, one
+// further off for another name altogether). The first of equally near names wins.
+std::string nearestName(const std::string& word, const std::vector<std::string>& names);
 
 }  // namespace gnomon

@@ -170,6 +170,13 @@ struct Light {
     bool operator==(const Light&) const = default;
 };
 
+// Light::direction for a sun at `azimuthDegrees` and `elevationDegrees` (as `--sun AZ,EL`):
+// the azimuth turns from +z towards +x and names where the light comes from, the elevation
+// is above the horizon (the xz plane; +y is up). Unit length, pointing the way the light
+// goes: sunDirection(0, 90) = (0, -1, 0), straight down; sunDirection(90, 0) = (-1, 0, 0),
+// from +x along the horizon.
+glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees);
+
 // The map size of a light that names none: 2048 texels per side for a light drawn into one
 // map (directional, area and spot lights, point lights drawn as one frustum), and 1024 per
 // face for a point light drawn as a cube (six faces).

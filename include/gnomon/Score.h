@@ -93,7 +93,7 @@ struct ErrorCauses {
 struct ScoreResult {
     std::vector<ShadowScore> lights;  // one per shadowed light
     ShadowScore overall;
-    TintScore tint;              // cells 0 unless --blend-shadows coloured tinted something
+    TintScore tint;              // as tintErrors: scored only where there are coloured shadows
     bool softReference = false;  // filter pcss: compared with the soft reference
     // Pixels left out: the reference sees a receiving surface there and the render drew
     // another one, or none (a thin part seen edge-on that rasterisation misses, an alpha
@@ -103,7 +103,9 @@ struct ScoreResult {
     double traceSeconds = 0.0;  // ray tracing wall time
     Image render;               // the frame scored
     Image errors;               // the error map (see truth/Metrics.h)
-    Image tintErrors;           // --blend-shadows coloured: the transmitted-light error map
+    // The transmitted light's error map where the scene has coloured shadows (blended casters
+    // and --blend-shadows coloured); empty, and `tint` all zero, where it has none.
+    Image tintErrors;
     // With ScoreOptions::explain: every misclassified pixel x light, rows top first, and the
     // ones away from edges counted by cause.
     std::vector<ErrorCell> errorCells;

@@ -1,6 +1,7 @@
 // gnomon::score: the renderer's per-pixel visibility against the ray-traced reference.
 #include "gnomon/Score.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,6 +34,15 @@ void checkScoreOptions(const RenderOptions& options, const ScoreOptions& scoreOp
         throw Error(ErrorKind::InvalidInput,
                     "score needs the scene as rendered: use --debug-view none");
     }
+}
+// Are there coloured shadows to score: blended casters, which with --blend-shadows coloured
+// tint the light through them? Without any, the tinted light's error is no number at all.
+bool colouredShadows(const Scene& scene, const RenderOptions& options) {
+    if (options.shadow.blendShadows != BlendShadows::Coloured) return false;
+    return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const Object& o) {
+        return o.castsShadows && o.material < scene.materials.size() &&
+               scene.materials[o.material].alphaMode == AlphaMode::Blend;
+    });
 }
 // The contacts' distance: the one asked for, else the contact shadows' march length.
 float contactRange(const RenderOptions& options, const ScoreOptions& scoreOptions) {
@@ -102,8 +112,6 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
         truth::scoreVisibility(scene, same, visibility.visibility, band, result.softReference);
     result.lights = scores.lights;
     result.overall = scores.overall;
-    result.tint =
-        truth::scoreTint(same, visibility.visibility, visibility.tint, band, result.softReference);
     result.errors =
         truth::errorMap(same, visibility.visibility, band, result.softReference, result.render);
     if (scoreOptions.explain) {
@@ -112,7 +120,9 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
         result.errorCells = std::move(explained.cells);
         result.causes = explained.causes;
     }
-    if (options.shadow.blendShadows == BlendShadows::Coloured) {
+    if (colouredShadows(scene, options)) {
+        result.tint = truth::scoreTint(same, visibility.visibility, visibility.tint, band,
+                                       result.softReference);
         result.tintErrors = truth::tintErrorMap(same, visibility.visibility, visibility.tint,
                                                 result.softReference, result.render);
     }
@@ -182,7 +192,7 @@ std::string toJson(const ScoreResult& r, const std::string& scene, const RenderO
                                     {"leak_contact", k.leakContact},
                                     {"leak_other", k.leakOther}};
     }
-    if (o.shadow.blendShadows == BlendShadows::Coloured) {
+    if (!r.tintErrors.empty()) {
         j["tint"] = {{"cells", r.tint.cells},
                      {"cells_outside_band", r.tint.cellsOutsideBand},
                      {"mean_error", r.tint.meanError},

@@ -188,7 +188,9 @@ struct Renderer::Impl {
             if (timer) timer->start();
             samples = &viewDepth.sample(scene, fitCamera ? *fitCamera : view, options.width,
                                         options.height);
-            if (timer) stats.passes.push_back(timer->stop("view depth", -1, 0));
+            if (timer) {
+                stats.passes.push_back(timer->stop("view depth", -1, viewDepth.trianglesDrawn()));
+            }
         }
         // Drawn for the tiles alone, the samples do not fit the lights.
         const bool fitSamples = shadow::FramePlan::wantsViewSamples(s, options) || contact;

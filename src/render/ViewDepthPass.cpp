@@ -37,7 +37,10 @@ void ViewDepthPass::draw(const GpuScene& scene) {
     mItems.clear();
     const std::vector<DrawItem>& items = scene.items();
     for (std::uint32_t i = 0; i < items.size(); ++i) {
-        if (items[i].indexCount > 0 && items[i].alphaMode != AlphaMode::Blend) mItems.push_back(i);
+        if (items[i].indexCount > 0 && items[i].alphaMode != AlphaMode::Blend) {
+            mItems.push_back(i);
+            mTrianglesDrawn += std::uint64_t(items[i].indexCount / 3);  // submitted, culled too
+        }
     }
     const glm::mat4 clipFromWorld = mClipFromView * mViewFromWorld;
     drawDepthRuns(
@@ -95,6 +98,7 @@ const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Ca
                                                  int width, int height) {
     const float aspect = float(width) / float(height);
     const shadow::SampleGrid grid = shadow::sampleGrid(width, height, kGridLimit);
+    mTrianglesDrawn = 0;
     // The grid follows from the size alone, which holds() compares.
     if (holds(scene, camera, width, height)) return mSamples;
     if (grid.size != mGrid.size || !mTarget) allocate(grid);

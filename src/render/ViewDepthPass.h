@@ -40,6 +40,8 @@ public:
     const gl::Framebuffer& target() const { return mTarget; }
     // The reduced depth the last sample() read back: per cell, nearest and farthest.
     shadow::DepthCells cells() const { return {&mRead, mGrid}; }
+    // Triangles the last sample() drew: 0 when it kept the samples it had.
+    std::uint64_t trianglesDrawn() const { return mTrianglesDrawn; }
 
 private:
     const gl::Program& program(bool alphaTested);
@@ -55,6 +57,7 @@ private:
     gl::VertexArray mEmpty;  // the reduction's full-screen triangle has no attributes
     std::vector<glm::vec2> mRead;
     std::vector<std::uint32_t> mItems;  // the items drawn: reused every frame
+    std::uint64_t mTrianglesDrawn = 0;
     shadow::ViewSamples mSamples;
     // What mSamples were taken from.
     bool mValid = false;

@@ -451,12 +451,17 @@ std::vector<SceneInfo> builtinScenes() {
 
 Scene builtinScene(const std::string& name) {
     std::string known;
+    std::vector<std::string> names;
     for (const Builtin& b : builtins()) {
         if (name == b.name) return b.make(b.name, b.description);
         known += (known.empty() ? "" : ", ") + std::string(b.name);
+        names.push_back(b.name);
     }
+    const std::string nearest = nearestName(name, names);
     throw Error(ErrorKind::InvalidInput,
-                "unknown scene '" + name + "' (built-in scenes: " + known + ")");
+                "unknown scene '" + name + "'" +
+                    (nearest.empty() ? "" : "; did you mean " + nearest + "?") +
+                    " (built-in scenes: " + known + ")");
 }
 
 }  // namespace gnomon

@@ -182,6 +182,11 @@ std::vector<std::string> Scene::validateLightsAndCamera() const {
 // under a lamp 0.595 % to 0.332 %). A point light drawn as a cube gets 1024 per face
 // (LightPlan): six faces at 2048 hold 1.5 times the texels of a 2048² map and cost llvmpipe
 // 27 ms more per redraw (tutorial-point).
+glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees) {
+    const float az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
+    return -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+}
+
 int shadowMapSizeOf(const Light& light) {
     return light.shadowMapSize > 0 ? light.shadowMapSize : kDefaultShadowMapSize;
 }

@@ -67,6 +67,8 @@ names = [p["name"] for p in r["passes"]]
 assert names == ["view depth", "shadow light 0", "main", "read-back"], names
 for p in r["passes"]:
     assert set(p) == {"name", "ms", "triangles", "fragments"}, p
+# The view's depth is drawn each frame (its sun is fitted to it): every triangle of the room.
+assert r["passes"][0]["triangles"] == r["main_triangles"] > 0, r["passes"][0]
 assert r["moment_passes"] == 0, r["moment_passes"]
 # The floor, as two medians and as each frame's own ratio. Its value is a timing and this
 # machine is noisy (a 64x64 frame can take either pass first), so only its presence and
@@ -98,8 +100,30 @@ score)
     skip_without_gl
     expect 0 "misclassified"
     expect 0 "directional"
-    for f in render.png errors.png score.json; do [[ -s "$work/s/$f" ]] || fail "no $f"; done
+    for f in render.png errors.png score.json errors.csv; do
+        [[ -s "$work/s/$f" ]] || fail "no $f"
+    done
     grep -q '"false_shadow"' "$work/s/score.json" || fail "score.json lacks false_shadow"
+    # Nothing in the room is translucent: no coloured-shadow line, map or numbers.
+    [[ ! -e "$work/s/tint-errors.png" ]] || fail "tint-errors.png for an opaque scene"
+    ! grep -q "coloured shadows" "$work/stdout" || fail "coloured-shadow line for an opaque scene"
+    ! grep -q '"tint"' "$work/s/score.json" || fail "score.json has tint for an opaque scene"
+    # The table fits 80 columns (so do the notes: the acne below has them all).
+    wide=$(awk 'length > 80' "$work/stdout")
+    [[ -z $wide ]] || fail "score lines over 80 columns: $wide"
+    # Panes of coloured glass: the tinted light is scored, mapped and listed.
+    glass=$(dirname "$0")/../../examples/stained-glass.json
+    run score --scene "$glass" --size 96x96 --out-dir "$work/g"
+    expect 0 "coloured shadows: transmitted light off by"
+    expect 0 "tint-errors.png"
+    [[ -s "$work/g/tint-errors.png" ]] || fail "no tint-errors.png for coloured glass"
+    grep -q '"tint"' "$work/g/score.json" || fail "score.json lacks tint for coloured glass"
+    wide=$(awk 'length > 80' "$work/stdout")
+    [[ -z $wide ]] || fail "score lines over 80 columns: $wide"
+    # The same glass with dithered shadows tints nothing.
+    run score --scene "$glass" --size 96x96 --blend-shadows dithered --out-dir "$work/d"
+    expect 0 "misclassified"
+    [[ ! -e "$work/d/tint-errors.png" ]] || fail "tint-errors.png with --blend-shadows dithered"
     # A score that fails leaves no folder behind; one that cannot write leaves no files.
     run score --scene tutorial-room --size 96x96 --light-only 9 --out-dir "$work/none"
     expect 2 "light-only 9"
@@ -111,8 +135,12 @@ score)
     # No tolerance at all: acne everywhere, above any sensible bound: exit 3.
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --bias-constant 0 \
         --bias-depth-aware 0 --bias-slope 0 --bias-units 0 --normal-offset 0 --cull none --receiver-plane off \
-        --max-error 0.05
+        --max-error 0.05 --contact-range 0.1
     expect 3 "exceeds --max-error"
+    expect 3 "away from edges (pixel x light pairs)"
+    expect 3 "at contacts (occluder within 0.1)"
+    wide=$(awk 'length > 80' "$work/stdout")
+    [[ -z $wide ]] || fail "score lines over 80 columns: $wide"
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s" --max-error 2
     expect 2 "--max-error must be a fraction"
     # Over a path: a line per frame, path.json and each frame's error map.
@@ -149,6 +177,10 @@ unknown_scene)
     run render --scene no-such-scene --out "$work/a.png"
     expect 2 "unknown scene 'no-such-scene'"
     expect 2 "book-triangle"  # the message lists the known scenes
+    ! grep -q "did you mean" "$work/stderr" || fail "a name far from every scene got a guess"
+    # A slip of the keyboard: the scene meant is named before the list.
+    run render --scene tutorial-rom --out "$work/a.png"
+    expect 2 "unknown scene 'tutorial-rom'; did you mean tutorial-room? (built-in scenes:"
     ;;
 gltf)
     corpus=$(dirname "$0")/../data/gltf
@@ -421,6 +453,9 @@ usage)
     # A mistyped command: the nearest one named, exit 2.
     run rendr --scene book-triangle
     expect 2 "gnomon: error: unknown command 'rendr'; did you mean 'render'?"
+    # A word no command is near: the list alone.
+    run xyzzy --scene book-triangle
+    expect 2 "gnomon: error: unknown command 'xyzzy' (commands: scenes, options, render"
     # Global flags after the command, as before it.
     run render --verbose --scene book-triangle --size 32x32 --out "$work/v.png"
     skip_without_gl

@@ -18,12 +18,14 @@ TEST(PassTiming, ListsEveryPassInOrder) {
     r.invalidateShadowMaps();
     r.render(s, o);
     const FrameStats stats = r.lastFrameStats();
-    r.setPassTiming(false);
     ASSERT_EQ(stats.shadowPasses, 16);
     // The view depth pass (its sun is fitted to what the view sees), 16 maps, main, read-back.
     ASSERT_EQ(stats.passes.size(), 19u);
     EXPECT_EQ(stats.passes[0].name, "view depth");
     EXPECT_EQ(stats.passes[0].light, -1);
+    // Nothing in the scene blends: the view's depth draws every triangle the main pass does.
+    EXPECT_EQ(stats.passes[0].triangles, stats.mainTriangles);
+    EXPECT_GT(stats.passes[0].triangles, 0u);
     std::uint64_t triangles = 0;
     for (int i = 0; i < 16; ++i) {
         const PassTiming& p = stats.passes[size_t(i) + 1];
@@ -36,6 +38,12 @@ TEST(PassTiming, ListsEveryPassInOrder) {
     EXPECT_EQ(stats.passes[17].name, "main");
     EXPECT_EQ(stats.passes[17].triangles, stats.mainTriangles);
     EXPECT_EQ(stats.passes[18].name, "read-back");
+    // The same view again: the view depth pass keeps its samples and draws nothing.
+    r.render(s, o);
+    ASSERT_FALSE(r.lastFrameStats().passes.empty());
+    EXPECT_EQ(r.lastFrameStats().passes[0].name, "view depth");
+    EXPECT_EQ(r.lastFrameStats().passes[0].triangles, 0u);
+    r.setPassTiming(false);
     // Timing off: no passes listed.
     r.render(s, o);
     EXPECT_TRUE(r.lastFrameStats().passes.empty());

@@ -60,6 +60,40 @@ TEST(Scene, UnknownNameThrowsListingKnownNames) {
     }
 }
 
+// A slip of the keyboard gets the name meant; a word far from every name gets none.
+TEST(Scene, MistypedNameSuggestsTheNearest) {
+    try {
+        builtinScene("tutorial-rom");
+        FAIL() << "builtinScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown scene 'tutorial-rom'; did you mean "
+                                             "tutorial-room? (built-in scenes: book-triangle"),
+                  std::string::npos)
+            << e.what();
+    }
+    try {
+        builtinScene("no-such-scene");
+        FAIL() << "builtinScene did not throw";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).find("did you mean"), std::string::npos) << e.what();
+    }
+}
+
+// --sun's two angles: where the light comes from, and the way it goes (Light::direction).
+TEST(Scene, SunDirectionFromAzimuthAndElevation) {
+    test::expectVec(sunDirection(0.0f, 90.0f), {0.0f, -1.0f, 0.0f}, 1e-6f);  // overhead
+    test::expectVec(sunDirection(0.0f, 0.0f), {0.0f, 0.0f, -1.0f}, 1e-6f);   // from +z
+    test::expectVec(sunDirection(90.0f, 0.0f), {-1.0f, 0.0f, 0.0f}, 1e-6f);  // from +x
+    test::expectVec(sunDirection(180.0f, 0.0f), {0.0f, 0.0f, 1.0f}, 1e-6f);  // from -z
+    test::expectVec(sunDirection(-90.0f, 0.0f), {1.0f, 0.0f, 0.0f}, 1e-6f);  // from -x
+    const float h = std::sqrt(0.5f);
+    test::expectVec(sunDirection(0.0f, 45.0f), {0.0f, -h, -h}, 1e-6f);  // from +z, halfway up
+    // From between +z and +x, 30 degrees up: down by sin 30, across by cos 30 sin 45 each way.
+    const glm::vec3 d = sunDirection(45.0f, 30.0f);
+    test::expectVec(d, {-0.6123724f, -0.5f, -0.6123724f}, 1e-6f);
+    EXPECT_NEAR(glm::length(d), 1.0f, 1e-6f);
+}
+
 // book-triangle: light (0, 7, 2), perspective 70 deg, aspect 1, near 1, far 100, looking at
 // the origin with up +y; view eye (0, 7, 9) at the origin, 45 deg, near 1, far 100; 400x400;
 // shadowed colour x 0.7.
