@@ -24,11 +24,9 @@ const int kContactSteps = 4;
 // The receiver's own plane in the depth buffer: window depth is affine in screen space (for
 // perspective and orthographic views alike), so its depth at the fragment and its change
 // per pixel give the depth the receiver itself has at any pixel's centre, where the buffer
-// was sampled. Set by findContactPlane() before any discard (derivatives need the whole 2x2
-// quad).
-vec3 gContactPlane = vec3(0.0);
-void findContactPlane() {
-    gContactPlane = vec3(gl_FragCoord.z, dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
+// was sampled. Taken before any discard (derivatives need the whole 2x2 quad).
+vec3 findContactPlane() {
+    return vec3(gl_FragCoord.z, dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
 }
 
 // dz/dd, view z per unit of window depth at window depth d: the march converts its
@@ -40,11 +38,11 @@ float viewZPerDepth(float d) {
 }
 
 // `visible` (the map's visibility) when nothing in the depth buffer lies between the
-// fragment and the march's length towards the light, 0 when something does. The point `p`
-// and the direction `toLight` are in world space (the view's rotation keeps lengths).
-// `lightDistance` is the light's distance for point and spot lights (the march stops
-// there), or a large number for directional ones.
-float contactShadow(vec3 p, vec3 toLight, float lightDistance, float visible) {
+// fragment and the march's length towards the light, 0 when something does. `plane` is
+// findContactPlane()'s. The point `p` and the direction `toLight` are in world space (the
+// view's rotation keeps lengths). `lightDistance` is the light's distance for point and spot
+// lights (the march stops there), or a large number for directional ones.
+float contactShadow(vec3 plane, vec3 p, vec3 toLight, float lightDistance, float visible) {
     float len = min(uContactLength, 0.95 * lightDistance);
     if (!(len > 0.0)) return visible;
     // Steps are staggered per pixel (shadow_lookup.glsl's interleaved gradient noise), so a
@@ -103,7 +101,7 @@ float contactShadow(vec3 p, vec3 toLight, float lightDistance, float visible) {
         // texelFetch, which llvmpipe runs slower (tutorial-room's main pass with a march of 0.5
         // took 0.95 of the time this way, LP_NUM_THREADS=1, the picture identical).
         float scene = texture(uViewDepth, centre * invSize).r;
-        float own = gContactPlane.x + dot(gContactPlane.yz, centre - gl_FragCoord.xy);
+        float own = plane.x + dot(plane.yz, centre - gl_FragCoord.xy);
         float inFront = q.z - scene;  // > 0: the scene is nearer the camera than the step
         if (counts && inFront > tolerance && inFront < thickness && own - scene > tolerance) {
             visible = 0.0;

@@ -2,10 +2,9 @@
 // LightRecord): the receiver's plane, its depth gradient in a map, and the per-tap depth offsets
 // along it.
 
-// The receiver's plane, world space: set by main() from the screen-space derivatives of the
-// fragment's position, which give the triangle's own plane (the interpolated normal of a
+// The receiver's plane is Receiver.planeNormal (shadow_lookup.glsl): the triangle's own plane,
+// from the screen-space derivatives of the fragment's position (the interpolated normal of a
 // smooth mesh is not it). Its sign does not matter.
-vec3 gPlaneNormal = vec3(0.0, 1.0, 0.0);
 
 // Receiver-plane depth (Isidoro, "Shadow Mapping: GPU-based Tips and Techniques", GDC
 // 2006; Dou et al., "Adaptive Depth Bias for Shadow Maps", I3D 2014). A plane stays a plane
@@ -59,15 +58,31 @@ const float kCubeMaxApproach = 3.0;
 // within 0.05 points either way).
 const float kGrazingCosine = 0.01;
 const float kGrazingShift = 0.15;
-// |cos| of the angle between the receiver's plane normal and the light, set by
-// grazingPlaneOffset (every lookup calls it first).
-float gPlaneCosine = 1.0;
-vec3 grazingPlaneOffset(vec3 wsToLight, float texelWorld, float reach, float shift) {
-    float c = dot(gPlaneNormal, wsToLight);
+vec3 grazingPlaneOffset(vec3 planeNormal, vec3 wsToLight, float texelWorld, float reach,
+                        float shift) {
+    float c = dot(planeNormal, wsToLight);
     float a = abs(c);
-    gPlaneCosine = a;
     float share = a < 1e-3 ? 1.0 : shift * (1.0 - smoothstep(0.0, kGrazingCosine, a));
-    return (c < 0.0 ? -gPlaneNormal : gPlaneNormal) * (share * reach * texelWorld);
+    return (c < 0.0 ? -planeNormal : planeNormal) * (share * reach * texelWorld);
+}
+
+// The receiver's plane as one lookup's taps see it: stored depth per unit of tap offset,
+// capped (`g`, see kPlaneMaxSlope) and full; `spread`, the capped plane's change across half a
+// texel; `cosine`, |cos| of the angle between the plane's normal and the light. A lookup that
+// follows no plane has the flat one: no gradient, and a cosine of 1, far from any silhouette.
+struct TapPlane {
+    vec2 g;
+    vec2 full;
+    float spread;
+    float cosine;
+};
+const TapPlane kFlatPlane = TapPlane(vec2(0.0), vec2(0.0), 0.0, 1.0);
+float planeCosine(vec3 planeNormal, vec3 wsToLight) {
+#if defined(RECEIVER_PLANE)
+    return abs(dot(planeNormal, wsToLight));
+#else
+    return 1.0;
+#endif
 }
 // The silhouette rule. A plane within a degree or two of edge-on to the light, whose texels
 // beyond the point downhill along the plane (deeper in the map) are all lit, stands at a
@@ -99,12 +114,10 @@ vec3 grazingPlaneOffset(vec3 wsToLight, float texelWorld, float reach, float shi
 const float kSilhouetteCosine = 0.02;
 const float kCubeSilhouetteCosine = 0.07;
 const float kSingleTapSilhouetteCosine = 0.07;
-bool atSilhouette(float cosine, float downhillShadow) {
-    return gPlaneCosine < cosine && downhillShadow == 0.0;
+bool atSilhouette(TapPlane plane, float cosine, float downhillShadow) {
+    return plane.cosine < cosine && downhillShadow == 0.0;
 }
 
-// The plane's full, uncapped gradient of the last receiverPlaneGradient call.
-vec2 gPlaneFull = vec2(0.0);
 // The depth offset of a tap `o` away on the receiver's plane, from its capped gradient `g`
 // and its full one `full` (the same units): capped as above, less so towards the light.
 float planeAlong(vec2 g, vec2 full, vec2 o, float approach) {
@@ -123,11 +136,16 @@ vec4 planeAlong4(vec4 capped, vec4 full, float approach) {
 // the plane do), the two steps are not divided by their w (the solve below is homogeneous in
 // each step, so their scale cancels out), and the tests compare squares. Two divisions and one
 // root where it had eleven and four: mixed-lights' main pass took 0.96 of the time, and with
-// mapRounding's bound and findReceiverPlane's test also rid of roots, glmark2's horse's 0.98
+// mapRounding's bound and receiverPlaneNormal's test also rid of roots, glmark2's horse's 0.98
 // (LP_NUM_THREADS=1, scripts/ab-bench.sh): less than the count suggests.
-vec2 receiverPlaneGradient(LightRecord light, vec4 clip, vec3 coord, float texelWorld,
-                           float texelCoord, vec3 wsToLight) {
-    vec3 n = gPlaneNormal;
+// The gradient per map unit, capped and full (both 0 for a plane edge-on to the light).
+struct PlaneGradient {
+    vec2 capped;
+    vec2 full;
+};
+PlaneGradient receiverPlaneGradient(LightRecord light, vec3 planeNormal, vec4 clip, vec3 coord,
+                                    float texelWorld, float texelCoord, vec3 wsToLight) {
+    vec3 n = planeNormal;
     vec3 t1 = abs(n.x) > 0.5 ? vec3(n.y, -n.x, 0.0) : vec3(0.0, n.z, -n.y);  // 0.5 to 1 long
     vec3 t2 = cross(n, t1);
     vec4 c1 = clip + light.textureFromWorld * vec4(t1 * texelWorld, 0.0);
@@ -138,14 +156,14 @@ vec2 receiverPlaneGradient(LightRecord light, vec4 clip, vec3 coord, float texel
     // A plane seen edge-on by the light has no depth gradient in the map: no texel but its
     // own line shows it, and the single-depth comparison is as good as any. (Its sine below
     // 1e-6; the products scaled up, not down, so that tiny scenes do not underflow.)
-    gPlaneFull = vec2(0.0);
-    if (!(det * det * 1e12 > dot(d1.xy, d1.xy) * dot(d2.xy, d2.xy))) return vec2(0.0);
+    if (!(det * det * 1e12 > dot(d1.xy, d1.xy) * dot(d2.xy, d2.xy))) {
+        return PlaneGradient(vec2(0.0), vec2(0.0));
+    }
     vec2 g = vec2(d1.z * d2.y - d2.z * d1.y, d1.x * d2.z - d2.x * d1.z) * (1.0 / det);
-    gPlaneFull = g;
     // Clamped to kPlaneMaxSlope: the depth the surface changes over one texel when it is
     // tilted that much, from a step towards the light (times its w, as above).
     vec4 c3 = clip + light.textureFromWorld * vec4(wsToLight * texelWorld * kPlaneMaxSlope, 0.0);
     float maxPerTexelW = abs(coord.z * c3.w - c3.z);
     float perTexelW = length(g) * texelCoord * abs(c3.w);
-    return perTexelW > maxPerTexelW ? g * (maxPerTexelW / perTexelW) : g;
+    return PlaneGradient(perTexelW > maxPerTexelW ? g * (maxPerTexelW / perTexelW) : g, g);
 }

@@ -6,9 +6,6 @@
 layout(binding = 7) uniform sampler2DArray uTransmittance;         // LINEAR
 layout(binding = 8) uniform samplerCubeArray uTransmittanceCubes;  // NEAREST
 
-// The last lookup's transmittance (white: nothing tinted the light).
-vec3 gTint = vec3(1.0);
-
 vec3 tintOf(vec4 stored, float reference) {
     return reference > stored.a ? stored.rgb : vec3(1.0);
 }
