@@ -45,11 +45,9 @@ float uphillReference(CubeTap c, TapPlane plane, vec2 o) {
 #if defined(RECEIVER_PLANE)
 // The silhouette rule (receiver_plane.glsl) for lookups without the 3 x 3 kernel's two halves
 // (--filter none or hw2x2, --pcf-size 1, poisson): one tap more, a texel diagonally downhill,
-// whose footprint lies wholly beyond the point, tells a silhouette from a fold. Without it the
-// Lantern's post under a point light almost in the plane of its side (lantern-post-point in
-// scripts/quality-real.py) is striped as the 3 x 3 kernel was before the rule: 1.79 % of the
-// view falsely shadowed away from edges with --filter none; a post's side 0.05 outside the
-// light's plane, 6 away, 27 % with poisson (tests/gl/test_score.cpp's post, --fit-to boxes).
+// whose footprint lies wholly beyond the point, tells a silhouette from a fold. Without it a
+// post's side almost in the plane of a point light is striped with false shadow (the
+// Lantern's post; tests/gl/test_score.cpp's post).
 bool cubeSilhouette(CubeTap c, TapPlane plane) {
     vec2 downhill = c.step * sign(plane.full);
     float beyond =
@@ -69,8 +67,8 @@ float cubeSingleTap(CubeTap c, TapPlane plane) {
 
 #if defined(FILTER_PCF) || defined(FILTER_MOMENTS)
 #if defined(FILTER_MOMENTS)
-// Cubes have no moments: the default 3 x 3 PCF. One comparison (what they had before)
-// leaked 1.8x PCF's light on ToyCar under a point light.
+// Cubes have no moments: the default 3 x 3 PCF, which leaks less light than one comparison
+// would.
 const int kCubeKernel = 3;
 #else
 const int kCubeKernel = PCF_SIZE;
@@ -233,10 +231,8 @@ ShadowSample cubeVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     // own orders, and the point itself is rounded to 2^-24 of its world coordinates, a share
     // of its distance from the light that grows as the light nears it. Either passes one
     // step of a float map on receivers near the nearest caster's distance (a box's top face
-    // under a point light 0.1 to 0.5 units above it: up to 6 % of the view falsely shadowed
-    // with one step, the whole face inside the cube's downward face flipping at once). Both
-    // sides round, as mapRounding counts them: 2^-24 alone left a line of false shadow along
-    // AlphaBlendModeTest's wall top, its cube's near plane just above (0.09 % of a view).
+    // under a point light just above it flips into shadow at once). Both sides round, as
+    // mapRounding counts them: 2^-23, not 2^-24.
     float wsScale = length(r.position) + length(light.position);
     float rounding = exp2(-23.0) * (farTerm + nearTerm * (2.0 + wsScale / major));
     CubeTap c;

@@ -93,8 +93,8 @@ const int kSingleMapKind = kAnyKind;
 
 // Direction to the light (world space) and its falloff at this fragment. CONSTANT_FALLOFF:
 // no light this frame has a range or distance terms (the default attenuation, 1 0 0), so the
-// falloff is 1 / c0 wherever the light reaches: compiled in, the distance terms and the
-// range window cost a twentieth of the main pass on glmark2's horse (LP_NUM_THREADS=1).
+// falloff is 1 / c0 wherever the light reaches, and the distance terms and the range window,
+// which llvmpipe computes on every pixel, are compiled out.
 void lightAt(LightRecord light, int kind, out vec3 toLight, out float falloff) {
     int type = kind == kAnyKind ? light.type : kind;
     falloff = 1.0;
@@ -143,8 +143,8 @@ void shade(LightRecord light, Surface s, vec3 toLight, float falloff, vec3 visib
     float nDotL = max(dot(s.n, toLight), 0.0);
     vec3 h = normalize(toLight + s.toEye);
 #ifdef NO_SPECULAR
-    // No lit object of the scene has a highlight: its pow, an exp2 of a log2 on llvmpipe, cost
-    // a sixteenth of glmark2's horse's main pass (LP_NUM_THREADS=1), for a term that is 0.
+    // No lit object of the scene has a highlight: its pow, an exp2 of a log2 on llvmpipe, is
+    // skipped for a term that is 0.
     float spec = 0.0;
 #else
     float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(s.n, h), 0.0), vIn.material.y) : 0.0;
@@ -190,8 +190,7 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 // (UNSHADOWED_LIGHTS, MAP_LIGHTS, CUBE_LIGHTS, CASCADED_LIGHTS: NAME(BODY, first, LOOKUP,
 // KIND) is BODY(first + i, LOOKUP, KIND) for each of its i). llvmpipe keeps every value a
 // loop changes in memory, per pixel, behind the loop's mask, and the compiler does not
-// unroll a loop whose body holds a lookup: written out, tutorial-room's main pass took 0.56
-// and glmark2's horse's 0.60 of the looped one (docs/performance.md, scripts/ab-bench.sh).
+// unroll a loop whose body holds a lookup (docs/results/performance.md, "Many lights").
 #ifdef UNROLLED_LIGHTS
 #define EACH_LIGHT(NAME, first, last, BODY, LOOKUP, KIND) NAME(BODY, first, LOOKUP, KIND)
 #else
@@ -358,10 +357,8 @@ void main() {
 // under 1.5 % of it, at the darkest end of the power segment). c^(7/12) is read off c's float
 // bits: scaling them by 7/12 scales its exponent and, near enough, its logarithm (the constant
 // chosen for the least error over the power segment: within 4.6 %, so the largest offset,
-// 15/32 of a step, stays under half a step). llvmpipe makes pow an exp2 of a log2: a pow per
-// channel cost a tenth of the main pass on glmark2's horse (--dither off, LP_NUM_THREADS=1:
-// 0.90); two square roots and a bit-level cube root in its place, half as much (the roots
-// gone: 0.95 of that main pass with shadows off).
+// 15/32 of a step, stays under half a step), where pow, an exp2 of a log2 on llvmpipe, would
+// cost a large share of the main pass.
 // The matrix's entry from the bits of x ^ y and y, interleaved and reversed (its recursive
 // construction), in integer operations: llvmpipe reads a table indexed per pixel one lane at
 // a time.

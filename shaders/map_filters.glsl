@@ -31,8 +31,8 @@ float tapReference(MapTap m, TapPlane plane, vec2 o) {
 // PCF over whole texels: the footprint of a K x K box of bilinear taps is (K + 1)^2 texels
 // with tent weights (1 - f, 1, ..., 1, f) per axis; it is read by 2x2 gathers, and every
 // texel is compared against the receiver plane at its own centre. Same weights as K x K
-// bilinear comparisons, fewer fetches ((K + 1)^2 / 4 gathers instead of K^2 taps): 4 instead
-// of 9 for the default 3 x 3, measured 15-20 % faster main passes on llvmpipe.
+// bilinear comparisons, fewer fetches ((K + 1)^2 / 4 gathers instead of K^2 taps: 4 instead
+// of 9 for the default 3 x 3).
 #if defined(FILTER_PCF)
 const int kGatherRadius = PCF_SIZE / 2;
 #else
@@ -87,12 +87,9 @@ float mapFilter(LightRecord light, Receiver receiver, vec3 wsToLight, MapTap m, 
     // The silhouette rule (receiver_plane.glsl), judged from one depth texel diagonally
     // downhill: MSM's footprint over a plane within a degree or so of edge-on reads the
     // surface it meets across a convex edge as a caster (the Lantern's post edge-on to the
-    // sun: 2.1 % misclassified, 1.3 % false shadow away from edges; 0.56 % and none with the
-    // rule). Summed over scripts/quality-real.py's 29 views: 5.9 points with it, 7.4 without;
-    // some views leak more (Sponza's atrium 0.59 % to 0.63 %). Within 4 degrees, as
-    // one-comparison lookups judge, the sum was 6.1. EVSM2 and EVSM4 do not stripe there and
-    // only leaked more with it. Downhill, where the plane runs away from the light, is the way
-    // its normal turned towards the light points across the map.
+    // sun). EVSM2 and EVSM4 do not stripe there and would only leak more with it. Downhill,
+    // where the plane runs away from the light, is the way its normal turned towards the light
+    // points across the map.
     vec3 towards = receiver.planeNormal * dot(receiver.planeNormal, wsToLight);
     vec2 away = (light.textureFromWorld * vec4(towards, 0.0)).xy;
     float lit = compareDepth(clamp(m.uv + m.texelUv * sign(away), m.lo, m.hi), m.layer,
@@ -143,9 +140,9 @@ float mapFilter(LightRecord light, Receiver receiver, vec3 wsToLight, MapTap m, 
     vec2 downhill = clamp(m.uv + m.texelUv * sign(plane.full), m.lo, m.hi);
 #if defined(MAP_NEAREST)
     // A NEAREST read is one texel: compared at its own centre on the receiver's plane, as the
-    // gathers compare theirs, rather than at the point. With half a texel's capped spread
-    // instead, the side of a post 3 to 4 degrees from edge-on to a spot, beside its lit face,
-    // read that face as a caster: 0.55 % of the view falsely shadowed away from edges.
+    // gathers compare theirs, rather than at the point. Half a texel's capped spread instead
+    // is too little where a post's side a few degrees from edge-on to a spot meets its lit
+    // face, which it then reads as a caster.
     tap = (floor(tap / m.texelUv) + 0.5) * m.texelUv;
     downhill = (floor(downhill / m.texelUv) + 0.5) * m.texelUv;
 #endif

@@ -96,9 +96,7 @@ const float kFilterReach = 1.5;  // the centre tap; wider taps add their own slo
 #elif defined(FILTER_MOMENTS)
 // The bilinear read reaches one texel, but the moments' bound takes a neighbour's depth
 // as a caster over more of the footprint than a comparison would. It sizes the grazing
-// planes' shift: faces of Suzanne's ear near edge-on to the sun striped with less
-// (suzanne-ear under MSM, falsely shadowed away from edges: 0.19 % of the view with the
-// half texel these filters had before, 0.13 % with 1, 0.05 % with 2).
+// planes' shift: with less, faces near edge-on to the sun (Suzanne's ear) stripe.
 const float kFilterReach = 2.0;
 #elif defined(FILTER_HW2X2)
 const float kFilterReach = 1.0;
@@ -154,12 +152,8 @@ vec3 normalOffset(LightRecord light, vec3 wsNormal, vec3 wsToLight, float texelW
 // error; 0 on unsimplified receivers such as a ground) start that far towards the
 // light, twice the simplifier's error: meshoptimizer measures it at the vertices it removes,
 // and a triangle's centre sags further (up to 2.2 times on a sphere: see
-// tests/unit/test_stand_in.cpp). At most six texels: a stand-in that strays further
-// (grid-simplified parts of the ToyCar stray 5 % of the car) would otherwise lift lookups
-// past real casters.
-// At --caster-detail 0.1, on the Dragon under a sun: 0.065 % misclassified against 0.242 %
-// without the lift and 0.061 % with the full mesh; summed over scripts/quality-real.py's
-// views at 0.3: 27.6 points against 61.0.
+// tests/unit/test_stand_in.cpp). At most six texels: a stand-in that strays further (a
+// grid-simplified part of a model) would otherwise lift lookups past real casters.
 const float kStandInLiftPerError = 2.0;
 const float kStandInLiftTexels = 6.0;
 float standInLift(float standInError, float texelWorld) {
@@ -206,15 +200,13 @@ const float kCubeGrazingShift = 0.0;
 // bound is 2^-24 times the sum of the products' sizes over w, twice (both sides). It passes
 // one step of a float map where the terms outgrow what they leave (a spot or a cube face
 // looking straight at the nearest caster, its near plane just before it: a box's top under
-// a spot 0.2 above it, 14 % of the view falsely shadowed with one step), or where the world
-// coordinates outgrow the map's depth range (a small model far from the origin).
+// a spot just above it), or where the world coordinates outgrow the map's depth range (a
+// small model far from the origin).
 // A perspective map also counts, as cube_lookup.glsl does, the point's own position: the
 // rasteriser's and this pass's interpolated world positions each round to 2^-24 of their
 // size, and the light's, folded into the matrix, as much again: four steps of the size, times
-// how fast stored depth changes across the world there. Without it a point light's face map
-// with its near plane just before a roof far from the origin (Sponza under a lamp above its
-// roof, --point-maps faces) read the roof as its own caster: 0.23 % of the view falsely
-// shadowed away from edges, none with the cube, whose rounding counted it.
+// how fast stored depth changes across the world there. Without it a face map whose near
+// plane lies just before a roof far from the origin reads the roof as its own caster.
 float mapRounding(LightRecord light, vec3 p, float w, float z) {
     mat4 m = light.textureFromWorld;
     vec4 a = abs(vec4(p, 1.0));
@@ -224,8 +216,7 @@ float mapRounding(LightRecord light, vec3 p, float w, float z) {
     float products = exp2(-23.0) * (zTerms + abs(z) * wTerms) * rw;
     if (light.frame == kFrameOrthographic) return products;
     // |perWorld| (|p| + |light|) is at most sqrt(2 |perWorld|^2 (|p|^2 + |light|^2)): one
-    // square root where three cost llvmpipe (which roots and divides exactly) most of what
-    // this bound took.
+    // square root where three would be, which llvmpipe takes exactly and dearly.
     vec3 perWorldW = vec3(m[0].z, m[1].z, m[2].z) - z * vec3(m[0].w, m[1].w, m[2].w);
     float sizes = 2.0 * (dot(p, p) + dot(light.position, light.position));
     return products + exp2(-22.0) * sqrt(dot(perWorldW, perWorldW) * sizes) * rw;
@@ -244,8 +235,8 @@ TapPlane mapPlane(LightRecord light, Receiver r, vec3 wsToLight, vec4 clip, vec3
     plane.full = gradient.full / m.scale;
     // `spread`: how far the plane moves between a tap's point and the centres of the texels a
     // bilinear or nearest read uses. The gathers, which compare at texel centres, keep it too:
-    // measured, without it (or with a quarter texel) single pixels darken along lines on
-    // tutorial-room's lit walls; the cause was not pinned down.
+    // without it single pixels darken along lines on tutorial-room's lit walls (why is not
+    // known).
     plane.spread = 0.5 * m.texelUv * (abs(plane.g.x) + abs(plane.g.y));
 #endif
     return plane;
@@ -297,9 +288,7 @@ ShadowSample mapVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
 // gradient noise against t), which hides the seam. Beyond the last cascade
 // nothing is shadowed. The cascade is chosen first and looked up after: llvmpipe runs both
 // sides of a branch and every pass of a loop, so a lookup in the selection loop would run
-// for every cascade, and a mix of two lookups in the band (as before) ran both on every
-// pixel: Sponza's atrium (two cascades) measured a main pass of 42 ms with the mix, 35 ms
-// with the pixels dithered between cascades, its score unchanged (0.275 % misclassified).
+// for every cascade, and a mix of two lookups in the band would run both on every pixel.
 ShadowSample cascadeVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     int first = light.firstSubRecord, count = light.cascadeCount;
     float blend = light.cascadeBlend;
