@@ -64,8 +64,8 @@ public:
     }
     // Might `box` hold the light (a spot's or point light's position)? Then a closed caster
     // in it is seen from inside, every face turned away, and culling would drop it all: a
-    // point light inside the spider's abdomen (assimp-testmodels' spider.fbx) lit the whole
-    // view, where the trace finds it shut in (34 % of the view leaked).
+    // point light inside a closed caster (the spider's abdomen in assimp-testmodels'
+    // spider.fbx) would otherwise light everything around it.
     bool holdsLight(const Aabb& box) const {
         return !mLight.frame.orthographic && glm::all(glm::lessThanEqual(box.min, mEye)) &&
                glm::all(glm::lessThanEqual(mEye, box.max));
