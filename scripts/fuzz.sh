@@ -4,7 +4,7 @@
 #   TARGET   gltf (default): the glTF loader, from the small broken files in tests/data/gltf;
 #            scene-file: the scene file reader, from examples/scenes and the broken files in
 #            tests/data/scene-files, with a dictionary of the format's keys (fuzz/scene_file.dict)
-#   SECONDS  default 60. A lone number is the seconds for the gltf target, as before.
+#   SECONDS  default 60. A lone number is the seconds for the gltf target.
 # Builds with clang into build/fuzz and keeps what it finds in build/fuzz/corpus (gltf) or
 # build/fuzz/corpus-scene-file; a crash leaves its input in build/fuzz/ and exits non-zero.
 set -euo pipefail

@@ -11,8 +11,7 @@ in AlphaOut {
     // Blended casters under coloured shadows: which texels are fully opaque is read at full
     // resolution, as the transmittance pass and the reference read them (mip levels blur
     // opaque stripes below the threshold where the light sees them at a slant, and the map
-    // then lets through light the reference blocks: AlphaBlendModeTest leaked 0.218 % against
-    // 0.123 %).
+    // then lets through light the reference blocks).
     flat float fullResolution;
 #endif
 } vAlpha;

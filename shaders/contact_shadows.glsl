@@ -15,20 +15,16 @@ layout(location = 9) uniform float uContactLength;  // world units (= view units
 
 // At most this many steps, written out (the compiler unrolls a constant count): llvmpipe
 // keeps what a loop changes in memory behind its mask, and each step costs a depth read on
-// every pixel. Four steps instead of eight and a start at the fragment itself cut what the
-// march adds to tutorial-room's main pass from about 4.4 to 2.6 ms (docs/performance.md), for
-// the same leak at contacts on tutorial-room, tutorial-room-thin, glmark2's horse, the
-// Lantern on a ground and Sponza (docs/performance.md).
+// every pixel. Four steps, from the fragment itself, close the contacts as well as more would
+// (docs/results/performance.md, "Contact shadows").
 const int kContactSteps = 4;
 
 // The receiver's own plane in the depth buffer: window depth is affine in screen space (for
 // perspective and orthographic views alike), so its depth at the fragment and its change
 // per pixel give the depth the receiver itself has at any pixel's centre, where the buffer
-// was sampled. Set by findContactPlane() before any discard (derivatives need the whole 2x2
-// quad).
-vec3 gContactPlane = vec3(0.0);
-void findContactPlane() {
-    gContactPlane = vec3(gl_FragCoord.z, dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
+// was sampled. Taken before any discard (derivatives need the whole 2x2 quad).
+vec3 findContactPlane() {
+    return vec3(gl_FragCoord.z, dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
 }
 
 // dz/dd, view z per unit of window depth at window depth d: the march converts its
@@ -40,11 +36,11 @@ float viewZPerDepth(float d) {
 }
 
 // `visible` (the map's visibility) when nothing in the depth buffer lies between the
-// fragment and the march's length towards the light, 0 when something does. The point `p`
-// and the direction `toLight` are in world space (the view's rotation keeps lengths).
-// `lightDistance` is the light's distance for point and spot lights (the march stops
-// there), or a large number for directional ones.
-float contactShadow(vec3 p, vec3 toLight, float lightDistance, float visible) {
+// fragment and the march's length towards the light, 0 when something does. `plane` is
+// findContactPlane()'s. The point `p` and the direction `toLight` are in world space (the
+// view's rotation keeps lengths). `lightDistance` is the light's distance for point and spot
+// lights (the march stops there), or a large number for directional ones.
+float contactShadow(vec3 plane, vec3 p, vec3 toLight, float lightDistance, float visible) {
     float len = min(uContactLength, 0.95 * lightDistance);
     if (!(len > 0.0)) return visible;
     // Steps are staggered per pixel (shadow_lookup.glsl's interleaved gradient noise), so a
@@ -76,11 +72,10 @@ float contactShadow(vec3 p, vec3 toLight, float lightDistance, float visible) {
     // The tolerances in window depth at the fragment. A surface nearer the camera than the
     // step, or than the receiver's own plane, by less than `tolerance` is the receiver
     // (curvature between pixels: a share of the march; the two depth passes' rounding of one
-    // surface: four steps of 32-bit float depth below 1, 2^-24 each; a march shorter than
-    // that rounding shadowed rows of tutorial-room's floor). Nearer than the step by more
-    // than half the march's length, it is taken for a surface in front of the ray rather
-    // than an occluder across it (tutorial-room-thin, a march of 2: 0.17 % false shadow with
-    // the whole length, 0.03 % with half, for as much leak taken back).
+    // surface: four steps of 32-bit float depth below 1, 2^-24 each, else a march shorter
+    // than that rounding shadows rows of a floor). Nearer than the step by more than half the
+    // march's length, it is taken for a surface in front of the ray rather than an occluder
+    // across it (the whole length takes thin walls' far sides for occluders).
     float perDepth = viewZPerDepth(gl_FragCoord.z);
     float tolerance = 0.04 * len / perDepth + exp2(-22.0);
     float thickness = 0.5 * len / perDepth;
@@ -94,16 +89,14 @@ float contactShadow(vec3 p, vec3 toLight, float lightDistance, float visible) {
         // The buffer holds each pixel's depth at its centre, not where the step's ray meets
         // the surface: the receiver seen or lit at a grazing angle is there nearer the camera
         // than the step by up to half a pixel's depth change. It is told apart by lying on
-        // its own plane at that centre. A test against the step alone took the first steps
-        // of a short march, inside the fragment's own pixel, for occluders wherever the
-        // light came from behind the surface as the camera sees it (LightsPunctualLamp, sun
-        // at 200,20, a march of 0.01: 66 % false shadow).
+        // its own plane at that centre. A test against the step alone would take the first
+        // steps of a short march, inside the fragment's own pixel, for occluders wherever the
+        // light comes from behind the surface as the camera sees it.
         vec2 centre = floor(clamp(q.xy, vec2(0.0), size - 1.0)) + 0.5;
         // Read at the pixel's centre through the NEAREST sampler: the same texel as a
-        // texelFetch, which llvmpipe runs slower (tutorial-room's main pass with a march of 0.5
-        // took 0.95 of the time this way, LP_NUM_THREADS=1, the picture identical).
+        // texelFetch, which llvmpipe runs slower.
         float scene = texture(uViewDepth, centre * invSize).r;
-        float own = gContactPlane.x + dot(gContactPlane.yz, centre - gl_FragCoord.xy);
+        float own = plane.x + dot(plane.yz, centre - gl_FragCoord.xy);
         float inFront = q.z - scene;  // > 0: the scene is nearer the camera than the step
         if (counts && inFront > tolerance && inFront < thickness && own - scene > tolerance) {
             visible = 0.0;

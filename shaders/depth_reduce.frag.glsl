@@ -4,8 +4,7 @@
 // is nothing: a block with nothing keeps (1, 1)). Every pixel the view draws then lies in its
 // block's frustum between those two depths, which is what fitted shadow maps must hold.
 // Read 2x2 texels at a time by textureGather, a quarter of the reads of one texelFetch per
-// texel: tutorial-room's view depth pass (this and the depth draw before it, 512²) took
-// 1.90-2.02 ms against 2.18-2.34 ms, three runs of `gnomon bench` each, alternating.
+// texel.
 layout(binding = 0) uniform sampler2D uDepth;
 layout(location = 0) uniform ivec2 uBlock;  // block size in pixels
 layout(location = 1) uniform ivec2 uSize;   // the depth buffer's size

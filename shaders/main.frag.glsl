@@ -68,7 +68,7 @@ layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
 // score compares them with the reference's on the same surface only.
 layout(r32f, binding = 2) uniform writeonly image2D uObjectRecord;
 #ifdef COLOURED_SHADOWS
-layout(rgba32f, binding = 1) uniform writeonly image2DArray uTintRecord;  // gTint per light
+layout(rgba32f, binding = 1) uniform writeonly image2DArray uTintRecord;  // tint per light
 #endif
 #endif
 
@@ -93,8 +93,8 @@ const int kSingleMapKind = kAnyKind;
 
 // Direction to the light (world space) and its falloff at this fragment. CONSTANT_FALLOFF:
 // no light this frame has a range or distance terms (the default attenuation, 1 0 0), so the
-// falloff is 1 / c0 wherever the light reaches: compiled in, the distance terms and the
-// range window cost a twentieth of the main pass on glmark2's horse (LP_NUM_THREADS=1).
+// falloff is 1 / c0 wherever the light reaches, and the distance terms and the range window,
+// which llvmpipe computes on every pixel, are compiled out.
 void lightAt(LightRecord light, int kind, out vec3 toLight, out float falloff) {
     int type = kind == kAnyKind ? light.type : kind;
     falloff = 1.0;
@@ -143,8 +143,8 @@ void shade(LightRecord light, Surface s, vec3 toLight, float falloff, vec3 visib
     float nDotL = max(dot(s.n, toLight), 0.0);
     vec3 h = normalize(toLight + s.toEye);
 #ifdef NO_SPECULAR
-    // No lit object of the scene has a highlight: its pow, an exp2 of a log2 on llvmpipe, cost
-    // a sixteenth of glmark2's horse's main pass (LP_NUM_THREADS=1), for a term that is 0.
+    // No lit object of the scene has a highlight: its pow, an exp2 of a log2 on llvmpipe, is
+    // skipped for a term that is 0.
     float spec = 0.0;
 #else
     float spec = nDotL > 0.0 ? vIn.material.x * pow(max(dot(s.n, h), 0.0), vIn.material.y) : 0.0;
@@ -159,11 +159,12 @@ void shade(LightRecord light, Surface s, vec3 toLight, float falloff, vec3 visib
 }
 
 #ifdef VISIBILITY_PASS
-void recordVisibility(LightRecord light, float visibility) {
+void recordVisibility(LightRecord light, ShadowSample shadow) {
     imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight),
-               vec4(visibility, gTexelWorld, 0.0, 0.0));
+               vec4(shadow.visibility, shadow.texelWorld, 0.0, 0.0));
 #ifdef COLOURED_SHADOWS
-    imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight), vec4(gTint, 1.0));
+    imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight),
+               vec4(shadow.tint, 1.0));
 #endif
 }
 #endif
@@ -172,11 +173,10 @@ void recordVisibility(LightRecord light, float visibility) {
 // A blended surface lies where its own transmittance is stored: tinted by itself wherever
 // rounding puts it behind that depth, so blended surfaces take no tint (as Wicked Engine's
 // transparent shadow maps do).
-#define LIGHT_THROUGH(visibility) (s.blended ? vec3(visibility) : visibility * gTint)
-#define RESET_TINT gTint = vec3(1.0);
+#define LIGHT_THROUGH(shadow) \
+    (s.blended ? vec3(shadow.visibility) : shadow.visibility * shadow.tint)
 #else
-#define LIGHT_THROUGH(visibility) vec3(visibility)
-#define RESET_TINT
+#define LIGHT_THROUGH(shadow) vec3(shadow.visibility)
 #endif
 
 // One loop per kind of light, over its range of the light order (uLightRanges: ends of the
@@ -190,8 +190,7 @@ void recordVisibility(LightRecord light, float visibility) {
 // (UNSHADOWED_LIGHTS, MAP_LIGHTS, CUBE_LIGHTS, CASCADED_LIGHTS: NAME(BODY, first, LOOKUP,
 // KIND) is BODY(first + i, LOOKUP, KIND) for each of its i). llvmpipe keeps every value a
 // loop changes in memory, per pixel, behind the loop's mask, and the compiler does not
-// unroll a loop whose body holds a lookup: written out, tutorial-room's main pass took 0.56
-// and glmark2's horse's 0.60 of the looped one (docs/performance.md, scripts/ab-bench.sh).
+// unroll a loop whose body holds a lookup (docs/results/performance.md, "Many lights").
 #ifdef UNROLLED_LIGHTS
 #define EACH_LIGHT(NAME, first, last, BODY, LOOKUP, KIND) NAME(BODY, first, LOOKUP, KIND)
 #else
@@ -206,19 +205,18 @@ void recordVisibility(LightRecord light, float visibility) {
     float falloff;                                 \
     lightAt(light, KIND, toLight, falloff);
 
-// Record k of the light order, shaded with its LOOKUP's visibility.
-#define SHADOWED_LIGHT(k, LOOKUP, KIND)                                                 \
-    {                                                                                   \
-        LIGHT_AT(k, KIND)                                                               \
-        float visibility = 1.0;                                                         \
-        if (s.receives) {                                                               \
-            gTexelWorld = 0.0;                                                          \
-            RESET_TINT                                                                  \
-            visibility = LOOKUP(light, vIn.wsPosition, s.n, toLight, CASCADE_DEPTH);    \
-            CONTACT(light, visibility, toLight);                                        \
-            RECORD(light, visibility);                                                  \
-        }                                                                               \
-        shade(light, s, toLight, falloff, LIGHT_THROUGH(visibility), lit, factor);      \
+// Record k of the light order, shaded with what its LOOKUP found for main()'s `receiver`.
+#define SHADOWED_LIGHT(k, LOOKUP, KIND)                                             \
+    {                                                                               \
+        LIGHT_AT(k, KIND)                                                           \
+        ShadowSample shadow = kLitSample;                                           \
+        if (s.receives) {                                                           \
+            shadow = LOOKUP(light, receiver, toLight);                              \
+            CONTACT(light, shadow.visibility, toLight);                             \
+            RECORD(light, shadow);                                                  \
+            NOTE_CASCADE(shadow);                                                   \
+        }                                                                           \
+        shade(light, s, toLight, falloff, LIGHT_THROUGH(shadow), lit, factor);      \
     }
 #define SHADOWED_LOOP(NAME, first, last, LOOKUP, KIND) \
     EACH_LIGHT(NAME, first, last, SHADOWED_LIGHT, LOOKUP, KIND)
@@ -230,23 +228,32 @@ void recordVisibility(LightRecord light, float visibility) {
     }
 
 #ifdef CONTACT_SHADOWS
-// Point and spot lights: the march stops short of the light.
-#define CONTACT(light, visibility, toLight)                                             \
-    {                                                                                   \
-        int kind = light.type;                                               \
-        float reach = kind == kDirectional || kind == kArea                             \
-                          ? 1e30                                                        \
-                          : length(light.position - vIn.wsPosition);                \
-        visibility = contactShadow(vIn.wsPosition, toLight, reach, visibility);         \
+// Point and spot lights: the march stops short of the light. main()'s `contactPlane` is the
+// receiver's plane in the depth buffer.
+#define CONTACT(light, visibility, toLight)                                                  \
+    {                                                                                        \
+        int kind = light.type;                                                               \
+        float reach = kind == kDirectional || kind == kArea                                  \
+                          ? 1e30                                                             \
+                          : length(light.position - vIn.wsPosition);                         \
+        visibility = contactShadow(contactPlane, vIn.wsPosition, toLight, reach, visibility); \
     }
 #else
 #define CONTACT(light, visibility, toLight)
 #endif
 
 #ifdef VISIBILITY_PASS
-#define RECORD(light, visibility) recordVisibility(light, visibility)
+#define RECORD(light, shadow) recordVisibility(light, shadow)
 #else
-#define RECORD(light, visibility)
+#define RECORD(light, shadow)
+#endif
+
+#ifdef DEBUG_CASCADES
+// main()'s `cascade`: the last cascade a lookup read, for the debug tint.
+#define NOTE_CASCADE(shadow) \
+    if (shadow.cascade >= 0) cascade = shadow.cascade
+#else
+#define NOTE_CASCADE(shadow)
 #endif
 
 // The records each main() loops over: the unshadowed ones (every light when shadows are off),
@@ -258,9 +265,9 @@ void recordVisibility(LightRecord light, float visibility) {
 #else
 #define UNSHADOWED_END uLightRanges.x
 #if defined(POINT_FACES)
-#define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, faceLookup, kPoint)
+#define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, faceVisibility, kPoint)
 #elif defined(HAS_CUBES)
-#define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, cubeLookup, kPoint)
+#define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, cubeVisibility, kPoint)
 #else
 #define CUBE_KIND(LOOP)
 #endif
@@ -270,34 +277,41 @@ void recordVisibility(LightRecord light, float visibility) {
 #else
 #define CASCADE_KIND(LOOP)
 #endif
-#define SHADOWED_KINDS(LOOP)                                                     \
-    LOOP(MAP_LIGHTS, uLightRanges.x, uLightRanges.y, mapLookup, kSingleMapKind) \
+#define SHADOWED_KINDS(LOOP)                                                         \
+    LOOP(MAP_LIGHTS, uLightRanges.x, uLightRanges.y, mapVisibility, kSingleMapKind) \
     CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
 #endif
 
-float mapLookup(LightRecord light, vec3 p, vec3 n, vec3 l, float depth) {
-    return mapVisibility(light, p, n, l);
-}
-float cubeLookup(LightRecord light, vec3 p, vec3 n, vec3 l, float depth) {
-    return cubeVisibility(light, p, n, l);
-}
-float faceLookup(LightRecord light, vec3 p, vec3 n, vec3 l, float depth) {
-    return faceVisibility(light, p, n, l);
-}
-
-// The receiver's plane for the lookups. Before any discard: derivatives need the whole 2x2
-// quad. Helper invocations interpolate the same triangle, so the differences span its plane
-// exactly.
-void findReceiverPlane() {
+// The receiver's plane for the lookups (Receiver.planeNormal). Before any discard: derivatives
+// need the whole 2x2 quad. Helper invocations interpolate the same triangle, so the
+// differences span its plane exactly.
+vec3 receiverPlaneNormal() {
 #if defined(RECEIVER_PLANE) && !defined(SHADOWS_OFF)
     vec3 dx = dFdx(vIn.wsPosition), dy = dFdy(vIn.wsPosition);
     vec3 n = cross(dx, dy);
     // Degenerate where the sine of the angle between dx and dy is under 1e-6: compared
     // squared (no roots), scaled up so that tiny scenes do not underflow.
     float len2 = dot(n, n);
-    gPlaneNormal = len2 * 1e12 > dot(dx, dx) * dot(dy, dy) ? n * inversesqrt(len2)
-                                                            : normalize(vIn.wsNormal);
+    return len2 * 1e12 > dot(dx, dx) * dot(dy, dy) ? n * inversesqrt(len2)
+                                                   : normalize(vIn.wsNormal);
+#else
+    return vec3(0.0, 1.0, 0.0);  // unused
 #endif
+}
+
+// The fragment as the lookups see it, with shading normal `n`.
+Receiver receiverOf(vec3 n, vec3 planeNormal) {
+    Receiver r;
+    r.position = vIn.wsPosition;
+    r.normal = n;
+    r.planeNormal = planeNormal;
+    r.viewDepth = CASCADE_DEPTH;
+#ifdef STAND_IN_LIFT
+    r.standInError = vIn.standInError;
+#else
+    r.standInError = 0.0;
+#endif
+    return r;
 }
 
 #ifdef FLOOR
@@ -312,9 +326,9 @@ vec3 floorDiffuse(LightRecord light, int kind, vec3 n, out vec3 toLight) {
 #define FLOOR_LIGHT(k, LOOKUP, KIND)                                                      \
     {                                                                                     \
         vec3 toLight;                                                                     \
-        LightRecord light = lights[lightRecord(k)];                                         \
+        LightRecord light = lights[lightRecord(k)];                                       \
         vec3 diffuse = floorDiffuse(light, KIND, n, toLight);                             \
-        lit += diffuse * LOOKUP(light, vIn.wsPosition, n, toLight, CASCADE_DEPTH);        \
+        lit += diffuse * LOOKUP(light, receiver, toLight).visibility;                     \
     }
 #define FLOOR_LOOP(NAME, first, last, LOOKUP, KIND) \
     EACH_LIGHT(NAME, first, last, FLOOR_LIGHT, LOOKUP, KIND)
@@ -322,11 +336,9 @@ vec3 floorDiffuse(LightRecord light, int kind, vec3 n, out vec3 toLight) {
     lit += floorDiffuse(lights[lightRecord(k)], kAnyKind, n, unused);
 
 void main() {
-#ifdef STAND_IN_LIFT
-    gStandInError = vIn.standInError;
-#endif
-    findReceiverPlane();
+    vec3 planeNormal = receiverPlaneNormal();
     vec3 n = normalize(vIn.wsNormal);
+    Receiver receiver = receiverOf(n, planeNormal);
     vec3 lit = uAmbient;
     vec3 unused;
     EACH_LIGHT(UNSHADOWED_LIGHTS, uLightFirst, UNSHADOWED_END, FLOOR_UNSHADOWED, _, _)
@@ -345,10 +357,8 @@ void main() {
 // under 1.5 % of it, at the darkest end of the power segment). c^(7/12) is read off c's float
 // bits: scaling them by 7/12 scales its exponent and, near enough, its logarithm (the constant
 // chosen for the least error over the power segment: within 4.6 %, so the largest offset,
-// 15/32 of a step, stays under half a step). llvmpipe makes pow an exp2 of a log2: a pow per
-// channel cost a tenth of the main pass on glmark2's horse (--dither off, LP_NUM_THREADS=1:
-// 0.90); two square roots and a bit-level cube root in its place, half as much (the roots
-// gone: 0.95 of that main pass with shadows off).
+// 15/32 of a step, stays under half a step), where pow, an exp2 of a log2 on llvmpipe, would
+// cost a large share of the main pass.
 // The matrix's entry from the bits of x ^ y and y, interleaved and reversed (its recursive
 // construction), in integer operations: llvmpipe reads a table indexed per pixel one lane at
 // a time.
@@ -374,12 +384,9 @@ vec3 dither(vec3 c) {
 #endif
 
 void main() {
-#ifdef STAND_IN_LIFT
-    gStandInError = vIn.standInError;
-#endif
-    findReceiverPlane();
+    vec3 planeNormal = receiverPlaneNormal();
 #ifdef CONTACT_SHADOWS
-    findContactPlane();
+    vec3 contactPlane = findContactPlane();
 #endif
     Surface s;
     s.unlit = vIn.material.z > 0.5;
@@ -402,6 +409,8 @@ void main() {
     if (s.receives) imageStore(uObjectRecord, ivec2(gl_FragCoord.xy), vec4(vIn.object + 1.0));
 #endif
     s.toEye = normalize(uEye - vIn.wsPosition);
+    Receiver receiver = receiverOf(s.n, planeNormal);
+    int cascade = -1;  // DEBUG_CASCADES: the last cascade a lookup read
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
     vec3 factor = vec3(1.0);
@@ -411,7 +420,7 @@ void main() {
 #ifdef DEBUG_CASCADES
     const vec3 kTints[4] = vec3[](vec3(1, 0.3, 0.3), vec3(0.3, 1, 0.3), vec3(0.3, 0.5, 1),
                                   vec3(1, 1, 0.3));
-    if (gCascade >= 0) colour = mix(colour, kTints[gCascade], 0.35);
+    if (cascade >= 0) colour = mix(colour, kTints[cascade], 0.35);
 #endif
     fragColour = vec4(dither(colour), alpha);
 }

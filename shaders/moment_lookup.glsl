@@ -43,13 +43,10 @@ float evsmVisibility(vec4 m, float depth) {
 // any distribution with these moments allows. Depth in [-1, 1] as stored; the bias pulls the
 // moments towards those of the uniform distribution there (0, 1/3, 0, 1/5), which has every
 // depth in its support: towards the paper's (0.5, 0.5, 0.5, 0.5) on [0, 1] instead, a
-// surface near the far plane met one of that bias's two support points and the system lost
-// every digit in 32-bit floats (half of Sponza's and Suzanne's lit ground shadowed). How far:
-// the value common in implementations, 3e-5, leaks at contacts; with 32-bit float moments
-// 1e-5 misclassified less over scripts/quality-real.py's 29 views (3.65 points against 3.74;
-// the Lantern's base 0.072 % against 0.113 %), and over 270 random views of the broad check
-// (seed 77, suns and spots) 27.9 against 28.1 (both at --light-bleed 0.2); 3e-6 leaked less
-// still but shadowed more (horse-glmark2, dragon-spot and the spheres past 1.5x PCF's error).
+// surface near the far plane meets one of that bias's two support points and the system
+// loses every digit in 32-bit floats (lit ground shadowed). How far: the value common in
+// implementations, 3e-5, leaks at contacts; with 32-bit float moments 1e-5 leaks less, and
+// smaller biases shadow too much.
 const float kMomentBias = 1e-5;
 float msmVisibility(vec4 moments, float depth) {
     float z = 2.0 * depth - 1.0;

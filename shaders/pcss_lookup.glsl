@@ -1,6 +1,6 @@
 // Percentage-closer soft shadows' search and filter for single maps (FILTER_PCSS), included
 // by shadow_lookup.glsl after the pieces it uses: compareDepth, rawDepth, the Poisson disc and
-// its per-pixel rotation. The cube lookup's PCSS (shadow_lookup.glsl) uses the helpers too.
+// its per-pixel rotation. The cube lookup's PCSS (cube_lookup.glsl) uses the helpers too.
 #if defined(FILTER_PCSS)
 // Percentage-closer soft shadows (Fernando 2005). The light is a disc of radius R at
 // distance u from the receiver (directional lights: a cone of half-angle a). A blocker

@@ -1,13 +1,16 @@
-// Shadow map lookup: world point -> light texture space, divide by
-// w, compare with the stored depth plus tolerance. Single-frustum maps of all lights live in
-// one texture array (one layer per light, a light's map in the layer's lower-left corner);
-// point lights' cube maps in one cube-map array.
+// Shadow map lookup: world point -> light texture space, divide by w, compare with the stored
+// depth plus tolerance. Single-frustum maps of all lights live in one texture array (one layer
+// per light, a light's map in the layer's lower-left corner); point lights' cube maps in one
+// cube-map array. Each lookup (mapVisibility, cubeVisibility, faceVisibility,
+// cascadeVisibility) takes a light record, the Receiver and the direction to the light and
+// returns a ShadowSample; single maps' filters are in map_filters.glsl, cubes' in
+// cube_lookup.glsl.
 //
 // Variants (injected #defines): FILTER_NONE | FILTER_HW2X2 | FILTER_PCF | FILTER_POISSON
 // | FILTER_PCSS | FILTER_MOMENTS (moment_lookup.glsl), with PCF_SIZE (the kernel's width in
 // texels) for PCF and POISSON,
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit),
-// COLOURED_SHADOWS (each lookup also sets gTint: transmittance_lookup.glsl).
+// COLOURED_SHADOWS (each lookup also returns its tint: transmittance_lookup.glsl).
 layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
 
 // Depth-aware tolerance: x steps of the stored depth's spacing; y, z that step for the 2D
@@ -60,6 +63,24 @@ layout(binding = 3) uniform samplerCubeArray uShadowCubeDepths;
 #include "transmittance_lookup.glsl"
 #endif
 
+// The fragment the lookups are for, the same for every light (main.frag.glsl fills it in).
+struct Receiver {
+    vec3 position;       // world space
+    vec3 normal;         // the shading normal, world space
+    vec3 planeNormal;    // RECEIVER_PLANE: the triangle's own plane (receiver_plane.glsl)
+    float viewDepth;     // the depth along the view that picks a cascade
+    float standInError;  // STAND_IN_LIFT: how far the object's stand-in strays (world units)
+};
+
+// What one light's lookup found.
+struct ShadowSample {
+    float visibility;  // 0 in shadow, 1 lit
+    float texelWorld;  // world size of the map texel read (gnomon score's aliasing band); 0: none
+    vec3 tint;         // COLOURED_SHADOWS: the share of the light blended casters let through
+    int cascade;       // the cascade read (--debug-view cascades); -1: none
+};
+const ShadowSample kLitSample = ShadowSample(1.0, 0.0, vec3(1.0), -1);
+
 // Interleaved gradient noise (Jimenez 2014): a value in [0, 1) per pixel, fixed in screen
 // space, that neighbouring pixels spread evenly. Poisson taps turn by it, cascades hand over
 // by it, contact shadows stagger their steps by it.
@@ -75,9 +96,7 @@ const float kFilterReach = 1.5;  // the centre tap; wider taps add their own slo
 #elif defined(FILTER_MOMENTS)
 // The bilinear read reaches one texel, but the moments' bound takes a neighbour's depth
 // as a caster over more of the footprint than a comparison would. It sizes the grazing
-// planes' shift: faces of Suzanne's ear near edge-on to the sun striped with less
-// (suzanne-ear under MSM, falsely shadowed away from edges: 0.19 % of the view with the
-// half texel these filters had before, 0.13 % with 1, 0.05 % with 2).
+// planes' shift: with less, faces near edge-on to the sun (Suzanne's ear) stripe.
 const float kFilterReach = 2.0;
 #elif defined(FILTER_HW2X2)
 const float kFilterReach = 1.0;
@@ -129,23 +148,32 @@ vec3 normalOffset(LightRecord light, vec3 wsNormal, vec3 wsToLight, float texelW
 #ifdef STAND_IN_LIFT
 // Stand-in casters (--caster-detail) stray from the surfaces they stand for: where a concave
 // stretch is simplified, a flat triangle cuts across it in front of the surface and shadows
-// it. Lookups of a simplified object's own surface (gStandInError: its stand-in's error, set
-// per fragment; 0 on unsimplified receivers such as a ground) start that far towards the
+// it. Lookups of a simplified object's own surface (Receiver.standInError: its stand-in's
+// error; 0 on unsimplified receivers such as a ground) start that far towards the
 // light, twice the simplifier's error: meshoptimizer measures it at the vertices it removes,
 // and a triangle's centre sags further (up to 2.2 times on a sphere: see
-// tests/unit/test_stand_in.cpp). At most six texels: a stand-in that strays further
-// (grid-simplified parts of the ToyCar stray 5 % of the car) would otherwise lift lookups
-// past real casters.
-// At --caster-detail 0.1, on the Dragon under a sun: 0.065 % misclassified against 0.242 %
-// without the lift and 0.061 % with the full mesh; summed over scripts/quality-real.py's
-// views at 0.3: 27.6 points against 61.0.
-float gStandInError = 0.0;
+// tests/unit/test_stand_in.cpp). At most six texels: a stand-in that strays further (a
+// grid-simplified part of a model) would otherwise lift lookups past real casters.
 const float kStandInLiftPerError = 2.0;
 const float kStandInLiftTexels = 6.0;
-float standInLift(float texelWorld) {
-    return min(kStandInLiftPerError * gStandInError, kStandInLiftTexels * texelWorld);
+float standInLift(float standInError, float texelWorld) {
+    return min(kStandInLiftPerError * standInError, kStandInLiftTexels * texelWorld);
 }
 #endif
+
+// The lookup point's move off the surface: the normal offset, the grazing planes' share
+// `grazingShift` (receiver_plane.glsl) and the stand-in lift.
+vec3 lookupOffset(LightRecord light, Receiver r, vec3 wsToLight, float texelWorld, float reach,
+                  float grazingShift) {
+    vec3 offset = normalOffset(light, r.normal, wsToLight, texelWorld, reach);
+#if defined(RECEIVER_PLANE)
+    offset += grazingPlaneOffset(r.planeNormal, wsToLight, texelWorld, reach, grazingShift);
+#endif
+#ifdef STAND_IN_LIFT
+    offset += wsToLight * standInLift(r.standInError, texelWorld);
+#endif
+    return offset;
+}
 
 // The grazing planes' share of a shift (receiver_plane.glsl): none where the lookup applies the
 // silhouette rule (single maps' gathered PCF and hw2x2, one-comparison lookups; cubes' every
@@ -162,64 +190,8 @@ const float kCubeGrazingShift = kGrazingShift;
 const float kCubeGrazingShift = 0.0;
 #endif
 
-#if (defined(RECEIVER_PLANE) || defined(FLAT_GATHERS)) && !defined(HAND_COMPARE) && \
-    (defined(FILTER_PCF) || defined(FILTER_HW2X2))
-// PCF over whole texels: the footprint of a K x K box of bilinear taps is (K + 1)^2 texels
-// with tent weights (1 - f, 1, ..., 1, f) per axis; it is read by 2x2 gathers, and every
-// texel is compared against the receiver plane at its own centre. Same weights as K x K
-// bilinear comparisons, fewer fetches ((K + 1)^2 / 4 gathers instead of K^2 taps): 4 instead
-// of 9 for the default 3 x 3, measured 15-20 % faster main passes on llvmpipe.
-#if defined(FILTER_PCF)
-const int kGatherRadius = PCF_SIZE / 2;
-#else
-const int kGatherRadius = 0;
-#endif
-float gatherPcf(vec2 uv, float layer, float reference, vec2 gradientUv, vec2 fullUv,
-                float spread, float texelUv, vec2 originUv, float uvScale) {
-    const int r = kGatherRadius;
-    vec2 s = uv / texelUv - 0.5;  // in texels of the layer: texel i's centre is at i
-    vec2 base = floor(s);
-    vec2 f = s - base;
-    vec2 g = gradientUv * texelUv;  // stored depth per texel along the layer's axes
-    vec2 full = fullUv * texelUv;
-    // The map's first texel and its last 2x2 block's start, in texels of the layer.
-    vec2 first = floor(originUv / texelUv + 0.5);
-    vec2 last = first + floor(uvScale / texelUv + 0.5) - 2.0;
-    float sum = 0.0, downhillShadow = 0.0;
-    for (int my = 0; my <= r; ++my) {
-        float ky = clamp(base.y - float(r - 2 * my), first.y, last.y);
-        vec2 wy = vec2(my == 0 ? 1.0 - f.y : 1.0, my == r ? f.y : 1.0);
-        for (int mx = 0; mx <= r; ++mx) {
-            float kx = clamp(base.x - float(r - 2 * mx), first.x, last.x);
-            vec2 wx = vec2(mx == 0 ? 1.0 - f.x : 1.0, mx == r ? f.x : 1.0);
-            // Gathered at the corner the four texels share: x (k, k+1), y (k+1, k+1),
-            // z (k+1, k), w (k, k) as (column, row).
-            vec4 d = textureGather(uShadowDepths, vec3((vec2(kx, ky) + 1.0) * texelUv, layer));
-            vec2 o = vec2(kx, ky) - s;
-            vec4 capped = dot(g, o) + vec4(g.y, g.x + g.y, g.x, 0.0);
-            vec4 along = planeAlong4(capped,
-                                     dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0),
-                                     kPlaneMaxApproach);
-            vec4 refs = reference + along - spread;
-            vec4 w = vec4(wx.x * wy.y, wx.y * wy.y, wx.y * wy.x, wx.x * wy.x);
-            vec4 lit = step(refs, d);
-            sum += dot(lit, w);
-            downhillShadow += dot(step(0.0, capped), 1.0 - lit);
-        }
-    }
-    // The silhouette rule (receiver_plane.glsl), from the texels downhill of the point: those
-    // of one gather (--pcf-size 1, hw2x2) as a one-comparison lookup's tap.
-    const float cosine = r == 0 ? kSingleTapSilhouetteCosine : kSilhouetteCosine;
-    if (atSilhouette(cosine, downhillShadow)) return 1.0;
-    return sum / float((2 * r + 1) * (2 * r + 1));
-}
-#endif
-
 #include "pcss_lookup.glsl"
-
-// World size of the map texel behind the last lookup (gnomon score's aliasing band).
-float gTexelWorld = 0.0;
-
+#include "map_filters.glsl"
 #include "cube_lookup.glsl"
 
 // How far the rasteriser's stored depth and this code's reference for the same point may
@@ -228,15 +200,13 @@ float gTexelWorld = 0.0;
 // bound is 2^-24 times the sum of the products' sizes over w, twice (both sides). It passes
 // one step of a float map where the terms outgrow what they leave (a spot or a cube face
 // looking straight at the nearest caster, its near plane just before it: a box's top under
-// a spot 0.2 above it, 14 % of the view falsely shadowed with one step), or where the world
-// coordinates outgrow the map's depth range (a small model far from the origin).
+// a spot just above it), or where the world coordinates outgrow the map's depth range (a
+// small model far from the origin).
 // A perspective map also counts, as cube_lookup.glsl does, the point's own position: the
 // rasteriser's and this pass's interpolated world positions each round to 2^-24 of their
 // size, and the light's, folded into the matrix, as much again: four steps of the size, times
-// how fast stored depth changes across the world there. Without it a point light's face map
-// with its near plane just before a roof far from the origin (Sponza under a lamp above its
-// roof, --point-maps faces) read the roof as its own caster: 0.23 % of the view falsely
-// shadowed away from edges, none with the cube, whose rounding counted it.
+// how fast stored depth changes across the world there. Without it a face map whose near
+// plane lies just before a roof far from the origin reads the roof as its own caster.
 float mapRounding(LightRecord light, vec3 p, float w, float z) {
     mat4 m = light.textureFromWorld;
     vec4 a = abs(vec4(p, 1.0));
@@ -246,33 +216,39 @@ float mapRounding(LightRecord light, vec3 p, float w, float z) {
     float products = exp2(-23.0) * (zTerms + abs(z) * wTerms) * rw;
     if (light.frame == kFrameOrthographic) return products;
     // |perWorld| (|p| + |light|) is at most sqrt(2 |perWorld|^2 (|p|^2 + |light|^2)): one
-    // square root where three cost llvmpipe (which roots and divides exactly) most of what
-    // this bound took.
+    // square root where three would be, which llvmpipe takes exactly and dearly.
     vec3 perWorldW = vec3(m[0].z, m[1].z, m[2].z) - z * vec3(m[0].w, m[1].w, m[2].w);
     float sizes = 2.0 * (dot(p, p) + dot(light.position, light.position));
     return products + exp2(-22.0) * sqrt(dot(perWorldW, perWorldW) * sizes) * rw;
 }
 
-// One single-frustum map: orthographic or perspective, a light's own or one cascade's.
-float mapVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
-    float layer = float(light.layer);
-    float uvScale = light.uvScale;
-    float texelUv = light.texelUv;
-
-    vec4 clip = light.textureFromWorld * vec4(wsPosition, 1.0);
-    float texelWorld = light.texelWorldSize * (light.frame == kFrameOrthographic ? 1.0 : clip.w);
-    gTexelWorld = texelWorld;
-#ifdef NORMAL_OFFSET
-    vec3 offset = normalOffset(light, wsNormal, wsToLight, texelWorld, kFilterReach);
-#else
-    vec3 offset = vec3(0.0);
-#endif
+// The receiver's plane in a single map, per unit of layer uv (flat without RECEIVER_PLANE).
+// `clip` is the lookup point in map clip space, `coord` after the divide.
+TapPlane mapPlane(LightRecord light, Receiver r, vec3 wsToLight, vec4 clip, vec3 coord,
+                  float texelWorld, MapTap m) {
+    TapPlane plane = kFlatPlane;
 #if defined(RECEIVER_PLANE)
-    offset += grazingPlaneOffset(wsToLight, texelWorld, kFilterReach, kMapGrazingShift);
+    plane.cosine = abs(dot(r.planeNormal, wsToLight));
+    PlaneGradient gradient = receiverPlaneGradient(light, r.planeNormal, clip, coord, texelWorld,
+                                                   m.texelUv / m.scale, wsToLight);
+    plane.g = gradient.capped / m.scale;
+    plane.full = gradient.full / m.scale;
+    // `spread`: how far the plane moves between a tap's point and the centres of the texels a
+    // bilinear or nearest read uses. The gathers, which compare at texel centres, keep it too:
+    // without it single pixels darken along lines on tutorial-room's lit walls (why is not
+    // known).
+    plane.spread = 0.5 * m.texelUv * (abs(plane.g.x) + abs(plane.g.y));
 #endif
-#ifdef STAND_IN_LIFT
-    offset += wsToLight * standInLift(texelWorld);
-#endif
+    return plane;
+}
+
+// One single-frustum map: orthographic or perspective, a light's own or one cascade's.
+ShadowSample mapVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
+    ShadowSample result = kLitSample;
+    vec4 clip = light.textureFromWorld * vec4(r.position, 1.0);
+    float texelWorld = light.texelWorldSize * (light.frame == kFrameOrthographic ? 1.0 : clip.w);
+    result.texelWorld = texelWorld;
+    vec3 offset = lookupOffset(light, r, wsToLight, texelWorld, kFilterReach, kMapGrazingShift);
     vec4 shadowCoord = clip + light.textureFromWorld * vec4(offset, 0.0);
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
 
@@ -281,115 +257,30 @@ float mapVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsTo
 #else
     if (shadowCoord.w <= 0.0 || any(lessThan(coord, vec3(0.0))) ||
         any(greaterThan(coord, vec3(1.0)))) {
-        return 1.0;
+        return result;
     }
 #endif
 #ifdef RECEIVER_ONLY
     float rounding = 0.0;  // the receiver is in no map: no rounding of its own to cover
 #else
-    float rounding = mapRounding(light, wsPosition + offset, shadowCoord.w, coord.z);
+    float rounding = mapRounding(light, r.position + offset, shadowCoord.w, coord.z);
 #endif
-    float reference = coord.z - depthTolerance(light, max(uDepthAware.y, rounding));
-    // The light's map covers [origin, origin + uvScale] of the layer; keep every tap inside.
-    vec2 origin = light.mapCorner;
-    vec2 lo = origin + vec2(0.5 * texelUv), hi = origin + vec2(uvScale - 0.5 * texelUv);
-    vec2 uv = origin + coord.xy * uvScale;
+    MapTap m;
+    m.layer = float(light.layer);
+    m.reference = coord.z - depthTolerance(light, max(uDepthAware.y, rounding));
+    m.texelUv = light.texelUv;
+    m.origin = light.mapCorner;
+    m.scale = light.uvScale;
+    m.lo = m.origin + vec2(0.5 * m.texelUv);
+    m.hi = m.origin + vec2(m.scale - 0.5 * m.texelUv);
+    m.uv = m.origin + coord.xy * m.scale;
 #if defined(COLOURED_SHADOWS)
-    gTint = mapTint(uv, layer, reference, lo, hi, texelUv);
+    result.tint = mapTint(m.uv, m.layer, m.reference, m.lo, m.hi, m.texelUv);
 #endif
-#if defined(FILTER_MOMENTS)
-#if defined(MOMENTS_MSM) && defined(RECEIVER_PLANE) && !defined(HAND_COMPARE)
-    // The silhouette rule (receiver_plane.glsl), judged from one depth texel diagonally
-    // downhill: MSM's footprint over a plane within a degree or so of edge-on reads the
-    // surface it meets across a convex edge as a caster (the Lantern's post edge-on to the
-    // sun: 2.1 % misclassified, 1.3 % false shadow away from edges; 0.56 % and none with the
-    // rule). Summed over scripts/quality-real.py's 29 views: 5.9 points with it, 7.4 without;
-    // some views leak more (Sponza's atrium 0.59 % to 0.63 %). Within 4 degrees, as
-    // one-comparison lookups judge, the sum was 6.1. EVSM2 and EVSM4 do not stripe there and
-    // only leaked more with it. Downhill, where the plane runs away from the light, is the way
-    // its normal turned towards the light points across the map.
-    vec3 towards = gPlaneNormal * dot(gPlaneNormal, wsToLight);
-    vec2 away = (light.textureFromWorld * vec4(towards, 0.0)).xy;
-    float lit = compareDepth(clamp(uv + texelUv * sign(away), lo, hi), layer, reference);
-    if (atSilhouette(kSilhouetteCosine, 1.0 - lit)) return 1.0;
-#endif
-    return momentVisibility(light, clamp(uv, lo, hi), layer, reference);
-#endif
-#if defined(RECEIVER_PLANE)
-    // Stored depth per unit of layer uv on the receiver's plane; `spread`: how far it moves
-    // between a tap's point and the centres of the texels a bilinear or nearest read uses.
-    // The gathers, which compare at texel centres, keep it too: measured, without it (or with
-    // a quarter texel) single pixels darken along lines on tutorial-room's lit walls; the
-    // cause was not pinned down.
-    vec2 g = receiverPlaneGradient(light, shadowCoord, coord, texelWorld, texelUv / uvScale,
-                                    wsToLight) / uvScale;
-    vec2 full = gPlaneFull / uvScale;
-    float spread = 0.5 * texelUv * (abs(g.x) + abs(g.y));
-#define TAP_REFERENCE(o) (reference + planeAlong(g, full, (o)) - spread)
-#else
-#define TAP_REFERENCE(o) (reference)
-#endif
-#if defined(RECEIVER_PLANE) && !defined(HAND_COMPARE) && \
-    (defined(FILTER_PCF) || defined(FILTER_HW2X2))
-    return gatherPcf(uv, layer, reference, g, full, spread, texelUv, origin, uvScale);
-#elif defined(FLAT_GATHERS) && !defined(HAND_COMPARE) && \
-    (defined(FILTER_PCF) || defined(FILTER_HW2X2))
-    return gatherPcf(uv, layer, reference, vec2(0.0), vec2(0.0), 0.0, texelUv, origin, uvScale);
-#elif defined(FILTER_PCF)
-    float sum = 0.0;
-    const int r = PCF_SIZE / 2;
-    for (int y = -r; y <= r; ++y) {
-        for (int x = -r; x <= r; ++x) {
-            vec2 tap = clamp(uv + vec2(x, y) * texelUv, lo, hi);
-            sum += compareDepth(tap, layer, TAP_REFERENCE(tap - uv));
-        }
-    }
-    return sum / float(PCF_SIZE * PCF_SIZE);
-#elif defined(FILTER_POISSON)
-    mat2 turn = poissonRotation();
-    float radius = 0.5 * float(PCF_SIZE) * texelUv;
-    float sum = 0.0;
-    for (int i = 0; i < 16; ++i) {
-        vec2 tap = clamp(uv + turn * kPoissonDisc[i] * radius, lo, hi);
-        sum += compareDepth(tap, layer, TAP_REFERENCE(tap - uv));
-    }
-    return sum / 16.0;
-#elif defined(FILTER_PCSS)
-#if defined(RECEIVER_PLANE)
-    vec3 plane = vec3(g, spread);
-#elif defined(RECEIVER_ONLY)
-    vec3 plane = vec3(0.0);  // in no map: every tap compares against the point's own depth
-#else
-    vec3 plane = vec3(0.0, 0.0, -1.0);  // the tap-distance slope tolerance instead
-#endif
-    return pcssMap(light, uv, layer, coord.z, reference, lo, hi, texelUv,
-                   light.frame == kFrameOrthographic, surfaceSlope(wsNormal, wsToLight),
-                   plane);
-#else
-    vec2 tap = clamp(uv, lo, hi);
-#if defined(RECEIVER_PLANE)
-    // The silhouette rule for one comparison (--filter none, colour formats' hw2x2): one tap
-    // more, a texel diagonally downhill (its footprint wholly beyond the point), tells a
-    // silhouette, where the point is lit, from a fold (cube_lookup.glsl's cubeSingleTap).
-    vec2 downhill = clamp(uv + texelUv * sign(full), lo, hi);
-#if defined(MAP_NEAREST)
-    // A NEAREST read is one texel: compared at its own centre on the receiver's plane, as the
-    // gathers compare theirs, rather than at the point. With half a texel's capped spread
-    // instead, the side of a post 3 to 4 degrees from edge-on to a spot, beside its lit face,
-    // read that face as a caster: 0.55 % of the view falsely shadowed away from edges.
-    tap = (floor(tap / texelUv) + 0.5) * texelUv;
-    downhill = (floor(downhill / texelUv) + 0.5) * texelUv;
-#endif
-    float beyond = compareDepth(downhill, layer, TAP_REFERENCE(downhill - uv));
-    if (atSilhouette(kSingleTapSilhouetteCosine, 1.0 - beyond)) return 1.0;
-#endif
-    return compareDepth(tap, layer, TAP_REFERENCE(tap - uv));
-#endif
-#undef TAP_REFERENCE
+    TapPlane plane = mapPlane(light, r, wsToLight, shadowCoord, coord, texelWorld, m);
+    result.visibility = mapFilter(light, r, wsToLight, m, plane, coord.z);
+    return result;
 }
-
-// Cascade of the last lookup, for --debug-view cascades (-1: none).
-int gCascade = -1;
 
 // Cascaded directional light: the first cascade whose far split lies beyond the
 // fragment's view depth; within the last `blend` fraction of a cascade, the next one takes
@@ -397,13 +288,11 @@ int gCascade = -1;
 // gradient noise against t), which hides the seam. Beyond the last cascade
 // nothing is shadowed. The cascade is chosen first and looked up after: llvmpipe runs both
 // sides of a branch and every pass of a loop, so a lookup in the selection loop would run
-// for every cascade, and a mix of two lookups in the band (as before) ran both on every
-// pixel: Sponza's atrium (two cascades) measured a main pass of 42 ms with the mix, 35 ms
-// with the pixels dithered between cascades, its score unchanged (0.275 % misclassified).
-float cascadeVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight,
-                        float vsDepth) {
+// for every cascade, and a mix of two lookups in the band would run both on every pixel.
+ShadowSample cascadeVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     int first = light.firstSubRecord, count = light.cascadeCount;
     float blend = light.cascadeBlend;
+    float vsDepth = r.viewDepth;
     int chosen = -1;
     float t = 0.0, previousSplit = 0.0;
     for (int k = 0; k < count; ++k) {
@@ -417,23 +306,24 @@ float cascadeVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 
         }
         previousSplit = split;
     }
-    if (chosen < 0) return 1.0;
+    if (chosen < 0) return kLitSample;
     if (interleavedGradientNoise() < t) chosen += 1;  // t > 0 only where a next cascade is
-    gCascade = chosen;
-    return mapVisibility(lights[first + chosen], wsPosition, wsNormal, wsToLight);
+    ShadowSample result = mapVisibility(lights[first + chosen], r, wsToLight);
+    result.cascade = chosen;
+    return result;
 }
 
 // A point light whose faces are maps of their own (kFrameFaces): the face the direction from
 // the light leaves through, as a cube map picks it, then that face's map. A face without a map
 // holds nothing the view drew: lit.
-float faceVisibility(LightRecord light, vec3 wsPosition, vec3 wsNormal, vec3 wsToLight) {
-    vec3 d = wsPosition - light.position;
+ShadowSample faceVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
+    vec3 d = r.position - light.position;
     vec3 a = abs(d);
     int face = a.x >= a.y && a.x >= a.z ? (d.x < 0.0 ? 1 : 0)
                : a.y >= a.z            ? (d.y < 0.0 ? 3 : 2)
                                        : (d.z < 0.0 ? 5 : 4);
     int slot = (light.faceSlots >> (3 * face)) & 7;
-    float visible = mapVisibility(lights[light.firstSubRecord + min(slot, 5)], wsPosition,
-                                  wsNormal, wsToLight);
-    return slot == 7 ? 1.0 : visible;
+    ShadowSample result = mapVisibility(lights[light.firstSubRecord + min(slot, 5)], r, wsToLight);
+    if (slot == 7) result.visibility = 1.0;
+    return result;
 }

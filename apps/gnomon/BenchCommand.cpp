@@ -86,7 +86,7 @@ struct Run {
     Spread timedFrame;  // the frames whose passes were timed, a wait around each pass
     Spread shadow, main, shadowsOff, bareDepth, mainFloor;
     // Each measured frame's main pass over its floor drawn straight after it, the median of
-    // those ratios: the machine's drift between the two (this one's noise runs to 35 %) is
+    // those ratios: the machine's drift between the two (large on a shared machine) is
     // shared by both sides of each ratio, where two medians taken a run apart do not share it.
     double mainOverFloor = -1.0;
     std::vector<PassResult> passes;  // in frame order

@@ -19,10 +19,10 @@ const char* version();
 // Tells the process's allocator to keep the memory it frees (glibc: mallopt's mmap and trim
 // thresholds at 32 and 64 MiB, where glibc's own dynamic ones stop rising). Mesa's llvmpipe
 // allocates and frees on every draw; with glibc's defaults the freed top of the heap goes
-// back to the system each time and the kernel faults the pages in again: Sponza's atrium with
-// 512² maps drew in 0.63 of the time with it (docs/performance.md, "The heap kept between
-// draws"). It changes the whole process, so the library never calls it itself: a program
-// calls it once at start, as the gnomon tool does. False where it does nothing (not glibc, or
-// under AddressSanitizer, whose allocator serves malloc).
+// back to the system each time and the kernel faults the pages in again, which counts where
+// many draws meet small maps (docs/results/performance.md, "The heap kept between draws").
+// It changes the whole process, so the library never calls it itself: a program calls it
+// once at start, as the gnomon tool does. False where it does nothing (not glibc, or under
+// AddressSanitizer, whose allocator serves malloc).
 bool keepFreedHeap();
 }  // namespace gnomon

@@ -360,9 +360,8 @@ bool GpuScene::uploadDrawCommands() {
 
 // The vertex stages read the object records as texels of a buffer texture, not from a storage
 // buffer: llvmpipe (Mesa 22.3) reads a storage buffer one lane at a time behind a branch per
-// lane, where a texel fetch gathers. On the Stanford Dragon (871k triangles, 256^2) that cost
-// a fifth of the main pass, whose vertex stage reads a record per vertex
-// (docs/performance.md).
+// lane, where a texel fetch gathers, and the main pass's vertex stage reads a record per vertex
+// (docs/results/performance.md, "Scene size and per-frame overhead").
 void GpuScene::bind() const {
     glBindVertexArray(mVao.id());
     glBindTextureUnit(kObjectTextureUnit, mObjectTexels.id());

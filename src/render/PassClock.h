@@ -1,6 +1,6 @@
 // Times one pass at a time for Renderer::setPassTiming: glFinish() before and after, wall
-// time in between (llvmpipe's timer queries read ~0 for fragment-heavy passes, measured
-// on Mesa 22.3), and fragment shader invocations from a pipeline statistics query where the
+// time in between (on Mesa 22.3, llvmpipe's timer queries read about 0 for fragment-heavy
+// passes), and fragment shader invocations from a pipeline statistics query where the
 // driver offers GL_ARB_pipeline_statistics_query.
 #pragma once
 

@@ -3,11 +3,11 @@
 // units out it steps by 0.008, and every matrix made there (a light's look-at, its fitted
 // window, a cube face's projection) carries that much error in its translation. With only
 // the GPU's matrices moved, maps drawn through such a matrix and looked up from the light's
-// own position disagreed by it: a point light over Sponza moved that far shadowed 22 % of
-// the view in rings, and the ToyCar (a few centimetres long) leaked on 15 % of its view. So
-// the renderer works on a copy of a far scene moved next to the origin, made once per scene
-// revision; its camera and lights (which the revision does not cover) are moved again each
-// frame. A scene around the origin is used as it is, without a copy.
+// own position would disagree by it: rings of false shadow under a point light far out, and
+// leaks all over a model a few centimetres long. So the renderer works on a copy of a far
+// scene moved next to the origin, made once per scene revision; its camera and lights (which
+// the revision does not cover) are moved again each frame. A scene around the origin is used
+// as it is, without a copy.
 #pragma once
 
 #include <cstdint>

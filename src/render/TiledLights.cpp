@@ -39,8 +39,8 @@ bool TiledLights::wantsDepth(const Scene& s, const RenderOptions& options) {
             ++bounded;
         }
     }
-    // One such light saves less than the pass costs (tutorial-spot, 512^2: ~0.4 ms of lookups
-    // against 1.5 ms of depth pass when the camera moves); two or more may save more.
+    // One such light saves less in lookups than the depth pass costs when the camera moves;
+    // two or more may save more.
     return bounded >= 2;
 }
 

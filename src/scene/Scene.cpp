@@ -172,21 +172,17 @@ std::vector<std::string> Scene::validateLightsAndCamera() const {
     return problems;
 }
 
-// Engines size a sun's map so: Unity's and Unreal's 2048 per map or cascade. On the real
-// scenes of scripts/quality-real.py its sun views' misclassification summed 1.71 points with
-// 2048 against 2.50 with 1024 (Sponza's atrium 0.48 % to 0.28 %, a ToyCar under a low sun
-// 0.23 % to 0.12 %; docs/techniques.md, "Map size"). Area lights are fitted as suns are.
-// Spots, and point lights drawn as one frustum, are fitted to the part of what the view sees
-// that their one map covers, and run short of texels as suns do: 2048 halved their views'
-// misclassification there (Sponza's capitals under a spot 0.117 % to 0.039 %, the ToyCar
-// under a lamp 0.595 % to 0.332 %). A point light drawn as a cube gets 1024 per face
-// (LightPlan): six faces at 2048 hold 1.5 times the texels of a 2048² map and cost llvmpipe
-// 27 ms more per redraw (tutorial-point).
 glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees) {
     const float az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
     return -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
 }
 
+// Engines size a sun's map so: Unity's and Unreal's 2048 per map or cascade; at 1024 the real
+// scenes' sun views run short of texels (docs/techniques/shadow-maps.md, "Map size"). Area
+// lights are fitted as suns are. Spots, and point lights drawn as one frustum, are fitted to
+// the part of what the view sees that their one map covers, and run short of texels as suns
+// do. A point light drawn as a cube gets 1024 per face (shadow::FramePlan): six faces at 2048
+// hold 1.5 times the texels of a 2048² map, and llvmpipe redraws them far slower.
 int shadowMapSizeOf(const Light& light) {
     return light.shadowMapSize > 0 ? light.shadowMapSize : kDefaultShadowMapSize;
 }

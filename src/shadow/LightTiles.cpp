@@ -7,11 +7,10 @@
 namespace gnomon::shadow {
 
 namespace {
-// From llvmpipe, 2 cores (docs/performance.md, "Light tiles"): one light's share of the main
-// pass per pixel with its 3x3 PCF lookup (mixed-lights: (121 - 23) ms / 16 lights / 512^2)
-// and without a lookup (its shadows-off pass, 23 ms / 16 / 512^2); a triangle drawn once more
-// (the triangles sweep's shadow pass, ~150 ns each). The draw call's cost is an assumption,
-// not a measurement: small next to the others.
+// Costs on llvmpipe, 2 cores (docs/results/performance.md, "Many lights"): one light's share of
+// the main pass per pixel with its 3x3 PCF lookup and without a lookup, from mixed-lights' main
+// pass with shadows on and off; a triangle drawn once more, from the triangles sweep's shadow
+// pass. The draw call's cost is an assumption: small next to the others.
 constexpr double kShadowedNsPerPixel = 20.0;
 constexpr double kUnshadowedNsPerPixel = 4.0;
 constexpr double kTriangleNs = 150.0;

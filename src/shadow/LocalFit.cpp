@@ -236,10 +236,10 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
 // `marginTan` (what a lookup at the face's rim reads beyond it), narrowed to the window of the
 // view's samples it holds and to where casters can shadow them (none: no map). A cube spends the
 // same texels on every direction; a model on a ground under a close lamp lands on a few percent of
-// the faces it appears in (Stanford Dragon, a point light 0.3 above it: 2 % of the cube, 2.2 % of
-// the view misclassified). Without a window (a sample's footprint reaches the light), or where the
-// window, with its margin and quantised size, would be no finer than the whole widened face (the
-// view sees all of the face), the whole face: it never moves, so it needs no steadying either.
+// the faces it appears in, and its shadows come out coarse. Without a window (a sample's footprint
+// reaches the light), or where the window, with its margin and quantised size, would be no finer
+// than the whole widened face (the view sees all of the face), the whole face: it never moves, so
+// it needs no steadying either.
 LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginTan,
                               const ViewSamples* samples, const FitBoxes& boxes, int mapSize) {
     const glm::mat4 lightFromWorld =

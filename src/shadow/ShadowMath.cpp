@@ -110,16 +110,11 @@ glm::mat4 lightRotation(const glm::vec3& direction) {
 // [lo, hi] x [zFar, zNear] in light space, a quantised size with room for the origin's snap
 // and the origin on a multiple of a texel, so the same inputs up to a texel give the same
 // camera. Under a low sun the receivers stretch along the light, and a square would spend
-// the short axis's texels on nothing (ToyCar on its ground, sun 8 degrees high: 0.48 %
-// misclassified square, 0.21 % not). For frames that follow a moving view (`following`) the
+// the short axis's texels on nothing. For frames that follow a moving view (`following`) the
 // shorter side is the longer one over a power of two: sides quantised apart each step on
 // their own, and a tight short side leaves the held extent (steadyExtent) sooner, so the
-// moving view sees the map's grid jump more often (Sponza's atrium on its dolly path: 0.017 %
-// flicker per frame against 0.001 %; 0.09 % before extents were held). A still frame has
-// nothing to hold and takes the short side's own quantised size, up to twice the texels
-// across it: glmark2's asteroid under a sun at 200, 20 misclassifies 2.16 % against 2.85 %,
-// the Lantern's post edge-on 0.37 % against 0.85 %, the spheres under a grazing sun 0.14 %
-// against 0.19 % (scripts/quality-real.py, 384²).
+// moving view would see the map's grid jump more often. A still frame has nothing to hold
+// and takes the short side's own quantised size, up to twice the texels across it.
 void snapExtent(int mapSize, bool following, glm::vec2& lo, glm::vec2& hi, float& zNear,
                 float& zFar) {
     const glm::vec2 size = hi - lo;

@@ -151,8 +151,8 @@ LightCameraFrame cascadeFrame(const glm::vec3& lightDirection, const Camera& vie
 // The depth range cascades split when it follows the view's samples and maps are stabilised:
 // [nearest, farthest] widened to steps of half an octave (a factor 2^(1/2)), so the splits,
 // and which cascade a surface reads, move only now and then as the view moves rather than
-// every frame. Eighths of an octave were measured: Sponza's atrium on a dolly flickered in
-// 0.05 % of its pixels per frame, against 0.017 % with halves, at the same misclassification.
+// every frame. Finer steps move the splits often enough to flicker more on a moving view,
+// for no fewer misclassified pixels.
 void stabiliseDepthRange(float& nearest, float& farthest);
 
 // Sample distribution cascades (Lauritzen et al. 2011): how many cascades a view needs whose

@@ -176,10 +176,10 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     Camera camera = scene.camera;
     makeRelative(camera, rays->origin());
     // Each pixel's ray from the view's own axes (the rows of the renderer's viewFromWorld) and
-    // its projection's terms, not by inverting the projection: a glTF camera's near and far
-    // of 0.05 and 10^6 (assimp's 2CylinderEngine) left that inverse with too few digits, its
-    // rays a little off the pixels the raster samples, and 3 % of the view's shadows scored
-    // wrong where thin fins meet their shadows.
+    // its projection's terms, not by inverting the projection: with a glTF camera's near and
+    // far as far apart as 0.05 and 10^6 (assimp's 2CylinderEngine) that inverse keeps too few
+    // digits, its rays land a little off the pixels the raster samples, and thin parts meeting
+    // their shadows score wrong.
     const glm::mat4 view = gnomon::viewFromWorld(camera);
     const glm::vec3 right(view[0][0], view[1][0], view[2][0]),
         up(view[0][1], view[1][1], view[2][1]);

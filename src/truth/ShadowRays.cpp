@@ -60,8 +60,8 @@ ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options)
 float ShadowRays::lead(const glm::vec3& point, const glm::vec3& n, const glm::vec3& dir) const {
     // 2e-6 of the scene: over ten float steps of a point as far out as the scene reaches
     // (the point is taken from its triangle's corners, Reference.cpp), and as much again
-    // for its distance from the origin. Against the exact caster, a lead ten times longer
-    // (2e-5 of the scene, along the ray) still missed 0.13-0.15 % of the ToyCar's pairs.
+    // for its distance from the origin. Short, so that the ray misses no thin occluder near
+    // its start (tests/crosscheck compares it with an exact caster).
     const float margin = 2e-6f * mScale + 1e-6f * glm::length(point);
     return margin / std::max(glm::dot(n, dir), kEdgeOnCosine);
 }

@@ -43,10 +43,9 @@ public:
     // How far along `dir` a ray leaving the surface point `point` (normal `n`, on the side
     // the ray leaves from) starts. The ray keeps to the line through the point itself and
     // skips only the stretch within a margin of the surface's plane (float rounding of the
-    // point: it grows with the scene and with the distance from the origin). Pushing the
-    // start off along the normal instead moved the whole ray sideways by that margin, and it
-    // stepped past occluders thinner than it: an exact (double precision, tests/crosscheck)
-    // caster found them on 0.2 % of the ToyCar's pairs.
+    // point: it grows with the scene and with the distance from the origin). A start pushed
+    // off along the normal would move the whole ray sideways by that margin, past occluders
+    // thinner than it (tests/crosscheck's exact caster finds those).
     float lead(const glm::vec3& point, const glm::vec3& n, const glm::vec3& dir) const;
 
     // Light l's direction from `point` and the distance to it (infinite for a sun); false
@@ -74,16 +73,13 @@ public:
     static glm::vec3 directionOf(const Light& light);
 
     // A surface the light meets at under 0.06 degrees counts as edge-on: in its own attached
-    // shadow, as one facing away is. A flat face there gets under 0.1 % of the light (under half
-    // an 8-bit step at full intensity), so no picture shows which it is; the light's map holds
-    // it in no texel of its own, and which side of it the light lies on is decided by the
-    // rounding of its vertices and of the light's direction (a wall under a sun whose azimuth is
-    // a multiple of 90 degrees: cos 90 degrees is 4e-8 in float). The same angle where the
-    // lookups call a plane edge-on (shaders/receiver_plane.glsl) and move off it: counted as lit
-    // or shadowed, such faces were scored on what a picture cannot show (tutorial-room under a
-    // sun at 180,30: 7 % false shadow with no cut; a face of the Fox's neck 0.05 degrees from
-    // edge-on, shadowed by the neck beside it, 2.9 % of a view's leak away from edges with a
-    // cut at 0.01 degrees).
+    // shadow, as one facing away is. A flat face there gets under a thousandth of the light
+    // (under half an 8-bit step at full intensity), so no picture shows which it is; the light's
+    // map holds it in no texel of its own, and which side of it the light lies on is decided by
+    // the rounding of its vertices and of the light's direction (a wall under a sun whose
+    // azimuth is a multiple of 90 degrees: cos 90 degrees is 4e-8 in float). The lookups call a
+    // plane edge-on at the same angle (shaders/receiver_plane.glsl) and move off it; scored as
+    // lit or shadowed, such faces would count what no picture can show.
     static constexpr float kEdgeOnCosine = 1e-3f;  // sin 0.057 degrees
 
 private:

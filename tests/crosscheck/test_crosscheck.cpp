@@ -17,9 +17,8 @@
 namespace gnomon {
 namespace {
 
-// Share of pairs (and of pixels) the two casters may answer differently. Measured: 0 to
-// 0.02 %; up to 0.2 % before the reference's shadow rays kept to the line through their
-// surface point (docs/crosscheck.md).
+// Share of pairs (and of pixels) the two casters may answer differently: a few pairs that
+// graze an edge, where float and double rounding decide (docs/crosscheck.md).
 constexpr double kBound = 5e-4;
 
 crosscheck::Agreement check(const Scene& scene, int size = 96) {

@@ -57,8 +57,8 @@ TEST(ContactShadows, AddNoFalseShadowWhereTheMapIsRight) {
 // from behind the surfaces as the camera sees them (the march moves away from the camera):
 // its first steps read the depth buffer at the fragment's own pixel and its neighbours,
 // where the receiver itself lies nearer the camera than the step. They must not take it for
-// an occluder (before: 30 % false shadow at 0.01 here), nor the two depth passes' rounding
-// of the same surface (6 % at 0.001).
+// an occluder (the march of 0.01), nor the two depth passes' rounding of the same surface
+// (the march of 0.001).
 TEST(ContactShadows, AShortMarchDoesNotShadowItsOwnReceiver) {
     Scene s = builtinScene("tutorial-room");
     ASSERT_EQ(s.lights.size(), 1u);

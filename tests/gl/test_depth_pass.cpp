@@ -190,8 +190,8 @@ TEST(Cost, AnUnchangedSceneIsNotReadAgain) {
     EXPECT_FALSE(gpu.sync(s, 0.0)) << "not announced: the copy keeps what it had";
     s.revision.bump();
     EXPECT_TRUE(gpu.sync(s, 0.0));
-    // An object that stops casting changes no record the GPU holds, yet the maps must lose it
-    // (before, the revision stayed and the renderer kept the old maps and light plan).
+    // An object that stops casting changes no record the GPU holds, yet the maps must lose it:
+    // the revision moves, so the renderer draws its maps and light plan again.
     const std::uint64_t casting = gpu.revision();
     s.objects[0].castsShadows = !s.objects[0].castsShadows;
     s.revision.bump();

@@ -41,7 +41,7 @@ TEST(Flicker, UnstabilisedMapsShimmerAndStabilisedOnesHoldStill) {
     const PathScoreResult on = dolly("dolly", true);
     ASSERT_EQ(off.frames.size(), 6u);
     ASSERT_EQ(on.frames.size(), 6u);
-    EXPECT_GT(off.meanFlicker, 0.0001);  // measured 0.05 %
+    EXPECT_GT(off.meanFlicker, 0.0001);
     EXPECT_EQ(on.meanFlicker, 0.0);
     // Flicker shows in the frame's error map in yellow.
     long yellow = 0;

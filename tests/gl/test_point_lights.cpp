@@ -211,8 +211,8 @@ Scene barOnGround() {
 // A lamp close above a thin bar on a wide ground, seen from near the bar's shadow with the
 // horizon in view: the view needs several faces, so one frustum cannot hold it, and a cube
 // spends each face's texels on the whole 90 degrees. Maps per face fitted to what the view
-// sees resolve the bar's shadow that the cube blurs away (the Stanford Dragon's scales on a
-// ground under a close lamp: 2.2 % of the view misclassified with the cube, 1.1 % with faces).
+// sees resolve the bar's shadow that the cube blurs away (as they do the Stanford Dragon's
+// scales on a ground under a close lamp).
 TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
     const Scene s = barOnGround();
     RenderOptions o;
@@ -240,9 +240,8 @@ TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
 // view sees of the ground beyond the bar's shadow cannot be shadowed, so the maps hold only
 // the bar's footprint seen from the lamp (narrowToCasters), which reads lit outside them.
 // The shadows are those of the casting ground's scene (a flat ground under the lamp shadows
-// nothing), drawn from much finer maps, and still agree with rays away from edges. (Narrowed,
-// 0.51 of the whole maps' error here and 0.60 at 256x256: every error is on the bar's
-// shadow outline, a few dozen pixels.)
+// nothing), drawn from much finer maps, and still agree with rays away from edges: what errors
+// are left lie on the bar's shadow outline.
 TEST(PointLights, AGroundThatCastsNothingLeavesTheMapsToTheBar) {
     const Scene s = barOnGround();
     RenderOptions o;
@@ -344,8 +343,8 @@ TEST(PointLights, CasterTowardsAFaceCornerShadowsTheReceiverBehindIt) {
 }
 
 // A cube map array has one size, so a point light that asks for a smaller map than another
-// is drawn at the larger one. Drawn at its own size it filled a corner of each face while its
-// lookups read the whole face (gnomon tune found it: ToyCar's lamp at 7.5 % misclassified).
+// is drawn at the larger one. Drawn at its own size it would fill a corner of each face while
+// its lookups read the whole face.
 TEST(PointLights, LightsAskingForDifferentMapSizesShareTheCubesRight) {
     Scene s = builtinScene("tutorial-point");
     RenderOptions o = s.options;

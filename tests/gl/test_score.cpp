@@ -65,8 +65,8 @@ Scene boxUnderLight(const Light& light) {
 // A float map's stored depth and the lookup's reference differ by rounding that can pass one
 // step of its spacing where the face a spot or a cube face looks straight at lies just beyond
 // the near plane (fitted to the nearest caster: that face). With one step the whole top face
-// inside the light's downward face read as shadowed (1 to 14 % of the view); the tolerance
-// now follows the rounding of the terms and coordinates the depths are made of.
+// inside the light's downward face would read as shadowed; the tolerance follows the rounding
+// of the terms and coordinates the depths are made of.
 TEST(Score, FloatRoundingNearTheLightLeavesTheFaceUnderItLit) {
     std::vector<Light> lights;
     for (float height : {0.6f, 0.8f, 1.03f}) {
@@ -94,13 +94,11 @@ TEST(Score, FloatRoundingNearTheLightLeavesTheFaceUnderItLit) {
 }
 
 // The silhouette rule (shaders/receiver_plane.glsl): a post's side about a degree from
-// edge-on to a point light, beside the face the light meets head-on. The capped receiver
-// plane read that face, across the edge, as a caster of the side and striped it with false
-// shadow (0.38 % of the view away from edges before the rule), with every filter of one
-// comparison too (a downhill tap more) and cubes' Poisson taps, in a map fitted to the view (a
-// frustum) and in the light's cube (fitted to the boxes): 1.3 to 3.1 % of the view before; and 2.9
-// degrees from edge-on, where the cube's default kernel striped 2.7 % of the view before the rule
-// reached 4 degrees.
+// edge-on to a point light, beside the face the light meets head-on. Without the rule the
+// capped receiver plane reads that face, across the edge, as a caster of the side and stripes
+// it with false shadow. Checked with every filter of one comparison (a downhill tap more) and
+// cubes' Poisson taps, in a map fitted to the view (a frustum) and in the light's cube (fitted
+// to the boxes), and 2.9 degrees from edge-on, within the cube kernel's 4.
 TEST(Score, SideAlmostEdgeOnBesideTheFaceTheLightMeetsIsLit) {
     Scene s;
     s.name = "post beside a point light";
@@ -268,11 +266,10 @@ Scene movedBy(const Scene& s, const glm::vec3& d, float k = 1.0f) {
 
 // The same scene 100 000 units from the world's origin: the renderer and the reference take
 // their coordinates relative to a point near the scene (coordinateOrigin), so the picture
-// and the score are the origin's. Before, a float that far steps by 0.008: the render was
-// speckled with acne, and the reference's shadow rays started a pixel off the surface
-// (tutorial-room 2.2 % misclassified against 0.005 %, tutorial-point 1.6 %, tutorial-spot
-// 0.8 %). The same a hundred times smaller too: a model a few tenths across, where a light's
-// camera made in world coordinates that far out would be off by a good share of it.
+// and the score are the origin's. A float that far out steps by 0.008: in world coordinates
+// the render would be speckled with acne, and the reference's shadow rays would start a pixel
+// off the surface. The same a hundred times smaller too: a model a few tenths across, where a
+// light's camera made in world coordinates that far out would be off by a good share of it.
 TEST(Score, FarFromTheOriginAsAtTheOrigin) {
     for (const float k : {1.0f, 0.01f})
         for (const char* name : {"tutorial-room", "tutorial-point", "tutorial-spot"}) {

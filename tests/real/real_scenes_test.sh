@@ -32,8 +32,7 @@ for view in "${views[@]}"; do
 done
 
 # Views scored again with another filter, as VIEW:FILTER: MSM on the post edge-on to the sun,
-# which its footprint dotted with false shadow before it judged silhouettes (2.0 % of the view
-# misclassified, 1.3 % falsely shadowed away from edges at this size).
+# whose footprint dots it with false shadow unless it judges silhouettes.
 runs=("${views[@]}" lantern-post-edge-on:msm)
 
 failed=0
