@@ -71,7 +71,7 @@ struct Reference {
 };
 
 // Traces `scene` at options.time as the renderer would draw it at options.width x height.
-// Throws gnomon::Error (Gl kind is never used; InvalidInput for a scene Embree rejects).
+// Throws gnomon::Error (Gl kind is never used; InvalidInput for a scene the tracer rejects).
 Reference traceReference(const Scene& scene, const RenderOptions& options,
                          const ReferenceOptions& referenceOptions);
 

@@ -62,7 +62,7 @@ const char* toString(TracerKind kind);
 std::unique_ptr<Tracer> makeEmbreeTracer(const TracerInput& input);
 
 // The project's own BVH (truth/Bvh.h; no Embree): one hierarchy, casters flagged. Throws
-// gnomon::Error (InvalidInput) for a scene over kBvhMaxTriangles.
+// gnomon::Error (InvalidInput) for a scene of more than 2^23 triangles (kBvhMaxTriangles).
 std::unique_ptr<Tracer> makeBvhTracer(const TracerInput& input);
 
 }  // namespace gnomon::truth
