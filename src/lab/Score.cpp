@@ -63,9 +63,10 @@ namespace detail {
 
 truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
                                const ScoreOptions& scoreOptions, ScoreProgress* progress,
-                               double& seconds) {
+                               double& seconds, truth::TracerKind tracer) {
     checkScoreOptions(options, scoreOptions);
     truth::ReferenceOptions ro;
+    ro.tracer = tracer;
     ro.softSamples = options.shadow.filter == ShadowFilter::Pcss ? scoreOptions.softSamples : 0;
     ro.threads = scoreOptions.threads;
     ro.contactRange = contactRange(options, scoreOptions);

@@ -26,9 +26,11 @@ private:
 };
 
 // The reference of the view `options` renders (soft with filter pcss); `seconds`: wall time.
+// `tracer`: the rays' backend (truth/Tracer.h), a choice for tests and tools, not an option.
 truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
                                const ScoreOptions& scoreOptions, ScoreProgress* progress,
-                               double& seconds);
+                               double& seconds,
+                               truth::TracerKind tracer = truth::TracerKind::Embree);
 
 // `frame` scored against `reference` (traced for the same view and size); traceSeconds 0.
 // Its render moves into the result (its visibility stays).

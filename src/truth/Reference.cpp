@@ -162,7 +162,7 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     if (auto problems = scene.validate(); !problems.empty()) {
         throw Error(ErrorKind::InvalidInput, "ground truth: " + problems.front());
     }
-    const auto rays = std::make_shared<const ShadowRays>(scene, options);
+    const auto rays = std::make_shared<const ShadowRays>(scene, options, referenceOptions.tracer);
     const BlendShadows blend = options.shadow.blendShadows;
 
     const int samples = std::max(referenceOptions.softSamples, 0);

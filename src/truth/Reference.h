@@ -16,6 +16,7 @@
 
 #include "gnomon/Options.h"
 #include "gnomon/Scene.h"
+#include "truth/Tracer.h"
 
 namespace gnomon::truth {
 
@@ -29,6 +30,7 @@ struct ReferenceOptions {
     int threads = 0;                            // 0: every core
     std::atomic<int>* rowsDone = nullptr;       // if set: counts rows traced (progress)
     const std::atomic<bool>* cancel = nullptr;  // if set and true: stop early, throw Error
+    TracerKind tracer = TracerKind::Embree;     // the rays' tracer (truth/Tracer.h)
 };
 
 // Per pixel (rows top first, as images), and per pixel x light at [pixel * lights + light].
@@ -69,7 +71,7 @@ struct Reference {
 };
 
 // Traces `scene` at options.time as the renderer would draw it at options.width x height.
-// Throws gnomon::Error (Gl kind is never used; InvalidInput for a scene Embree rejects).
+// Throws gnomon::Error (Gl kind is never used; InvalidInput for a scene the tracer rejects).
 Reference traceReference(const Scene& scene, const RenderOptions& options,
                          const ReferenceOptions& referenceOptions);
 

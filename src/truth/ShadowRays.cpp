@@ -21,7 +21,7 @@ void tangents(const glm::vec3& w, glm::vec3& u, glm::vec3& v) {
 
 }  // namespace
 
-ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options)
+ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options, TracerKind kind)
     : mLights(scene.lights), mBlend(options.shadow.blendShadows) {
     mOrigin = sceneOrigin(scene, options.time);
     Aabb bounds;
@@ -54,7 +54,8 @@ ShadowRays::ShadowRays(const Scene& scene, const RenderOptions& options)
         mOn[i] =
             options.shadow.enabled && scene.lights[i].castsShadows && lightIsOn(scene, options, i);
     }
-    mTracer = makeEmbreeTracer({&scene, &mPositions, &mAlpha, mBlend});
+    const TracerInput input{&scene, &mPositions, &mAlpha, mBlend};
+    mTracer = kind == TracerKind::Bvh ? makeBvhTracer(input) : makeEmbreeTracer(input);
 }
 
 float ShadowRays::lead(const glm::vec3& point, const glm::vec3& n, const glm::vec3& dir) const {

@@ -21,7 +21,9 @@ namespace gnomon::truth {
 class ShadowRays {
 public:
     // Throws gnomon::Error (InvalidInput) when the tracer cannot be made for the scene.
-    ShadowRays(const Scene& scene, const RenderOptions& options);
+    // `kind`: the tracer behind the rays (truth/Tracer.h).
+    ShadowRays(const Scene& scene, const RenderOptions& options,
+               TracerKind kind = TracerKind::Embree);
     ShadowRays(const ShadowRays&) = delete;
     ShadowRays& operator=(const ShadowRays&) = delete;
 

@@ -1,6 +1,7 @@
 // The ray tracer the reference stands on, as a small interface: the nearest surface along a
 // view ray, and the light a shadow ray lets through. Embree 3 is behind it natively
-// (makeEmbreeTracer); a tracer of the project's own can stand in where Embree cannot go.
+// (makeEmbreeTracer); the project's own BVH (makeBvhTracer, truth/Bvh.h) stands in where
+// Embree cannot go.
 // Every backend answers masked and blended surfaces by the same rules (truth/AlphaRays.h).
 #pragma once
 
@@ -51,8 +52,17 @@ public:
     virtual void check(const char* what) const = 0;
 };
 
+// Which tracer the reference stands on (ShadowRays, ReferenceOptions): a library-level
+// choice, Embree unless a caller asks for the BVH.
+enum class TracerKind { Embree, Bvh };
+const char* toString(TracerKind kind);
+
 // Embree 3 (two BVHs: every object for view rays, the casters for shadow rays). Throws
 // gnomon::Error (InvalidInput) when Embree has no device or rejects the scene.
 std::unique_ptr<Tracer> makeEmbreeTracer(const TracerInput& input);
+
+// The project's own BVH (truth/Bvh.h; no Embree): one hierarchy, casters flagged. Throws
+// gnomon::Error (InvalidInput) for a scene of more than 2^23 triangles (kBvhMaxTriangles).
+std::unique_ptr<Tracer> makeBvhTracer(const TracerInput& input);
 
 }  // namespace gnomon::truth
