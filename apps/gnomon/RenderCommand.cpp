@@ -152,7 +152,7 @@ void RenderFlags::add(CLI::App& a) {
         a.add_option("--" + std::string(spec.name), values[spec.name],
                      std::string(spec.doc) + " (" + range + "default " + defaultText + ")")
             ->type_name(optionValueName(spec))
-            ->group(spec.group);
+            ->group(toString(spec.group));
     }
 }
 
@@ -186,9 +186,9 @@ RenderOptions RenderFlags::resolve(const Scene& scene) const {
 
 void RenderFlags::apply(RenderOptions& o) const {
     for (const OptionSpec& spec : optionSchema()) {
-        const std::string flag = "--" + std::string(spec.name);
-        if (app->count(flag) == 0) continue;
-        if (auto why = parseOption(spec, values.at(spec.name), o)) bad(flag, *why);
+        if (!given(spec)) continue;
+        if (auto why = parseOption(spec, values.at(spec.name), o))
+            bad("--" + std::string(spec.name), *why);
     }
     if (auto problems = o.validate(); !problems.empty()) {
         std::string all;
@@ -198,12 +198,16 @@ void RenderFlags::apply(RenderOptions& o) const {
     }
     // A flag given that the other options make pointless: said once, not silently ignored.
     for (const OptionSpec& spec : optionSchema()) {
-        if (spec.matters && app->count("--" + std::string(spec.name)) > 0 && !spec.matters(o)) {
+        if (spec.matters && given(spec) && !spec.matters(o)) {
             std::fprintf(stderr,
                          "gnomon: warning: --%s does nothing here: it applies only with %s\n",
                          spec.name, spec.onlyWith);
         }
     }
+}
+
+bool RenderFlags::given(const OptionSpec& spec) const {
+    return app->count("--" + std::string(spec.name)) > 0;
 }
 
 }  // namespace gnomon::cli

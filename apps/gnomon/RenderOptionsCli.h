@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "gnomon/OptionSchema.h"
 #include "gnomon/Options.h"
 #include "gnomon/Scene.h"
 
@@ -50,6 +51,8 @@ struct RenderFlags {
     void placeCameraAndSun(Scene& scene) const;
     // Applies the given flags over `options`; throws gnomon::Error for bad values.
     void apply(RenderOptions& options) const;
+    // Whether the option's flag was given (optionAt names one: given(optionAt(o, &o.width))).
+    bool given(const OptionSpec& spec) const;
 };
 
 }  // namespace gnomon::cli

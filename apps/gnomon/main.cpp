@@ -51,13 +51,11 @@ int runOptions(const std::string& markdown) {
                             "--markdown: expected flags or scene-file, got '" + markdown + "'");
     }
     const gnomon::RenderOptions defaults;
-    std::string group;
+    const gnomon::OptionSpec* previous = nullptr;
     for (const gnomon::OptionSpec& spec : gnomon::optionSchema()) {
-        if (group != spec.group) {
-            group = spec.group;
-            std::printf("%s%s:\n", group == gnomon::optionSchema().front().group ? "" : "\n",
-                        group.c_str());
-        }
+        if (!previous || previous->group != spec.group)
+            std::printf("%s%s:\n", previous ? "\n" : "", gnomon::toString(spec.group));
+        previous = &spec;
         std::printf(
             "  %-18s %-28s default %s\n", spec.name, gnomon::optionRange(spec).c_str(),
             *spec.defaultNote ? spec.defaultNote : gnomon::formatOption(spec, defaults).c_str());

@@ -1,6 +1,6 @@
-// Render options: everything a user can set for a frame, as documented structs with one
-// default each (unit, range, default on one line). The CLI flags, the viewer and tests all
-// fill these same structs; validate() explains what is wrong in words.
+// Render options: everything a user can set for a frame, as structs with one default each.
+// Each member's flag name, range and one-line help are its entry in the option schema
+// (gnomon/OptionSchema.h), from which the CLI, scene files, the viewer and validate() work.
 #pragma once
 
 #include <optional>
@@ -94,25 +94,16 @@ enum class Preset {
 struct ShadowOptions {
     bool enabled = true;                         // false: every shadow test off, lighting unchanged
     OutsidePolicy outside = OutsidePolicy::Lit;  // lookups outside a light's map
-    // Stored-depth units [0,1] added to the map depth. Small: the receiver plane and the
-    // depth-aware step cover most of it, and a constant in stored depth is a distance that
-    // grows with the square of the distance from a spot or point light (0.0002 was 14 cm at
-    // 6 m from a near plane at 5 cm: Sponza's shafts lit through it under their capitals).
-    // Default 0: over the real-scene suite (scripts/quality-real.py) and the broad check, 5e-5
-    // only lifted shadows off their contacts (Sponza's gallery and capitals misclassified 1.3x
-    // more). What it used to hide, float rounding of depths near 0 in point lights' cubes,
-    // the depth-aware step now covers (shadow_lookup.glsl, depthTolerance). What it still
-    // would: a line along a ledge under Sponza's point light (sponza-arcade-point at 512²:
-    // 0.011 % of the view falsely shadowed away from edges with 0, none with 5e-5, which
-    // leaks twice as much: 0.058 % against 0.029 %).
+    // Stored-depth units [0, 1) added to the map depth: the textbooks' tolerance. Default 0:
+    // the receiver plane and the depth-aware step cover self-shadowing, while a constant in
+    // stored depth is a distance that grows with the square of the distance from a spot or
+    // point light and lifts shadows off their contacts (docs/techniques/acne-and-bias.md).
     float biasConstant = 0.0f;
     float biasDepthAware = 1.0f;  // + this many steps of the stored depth's spacing
-    // glPolygonOffset factor in the depth pass, >= 0. It covers only what the receiver plane
-    // leaves (planes steeper than its cap), and every bit of it lifts shadows off their
-    // casters' contacts: over docs/quality-real.md 0.7 misclassified less than 1.5 on 17 of
-    // the 26 views and more on none (ToyCar under its file camera 0.40 -> 0.30 %), and less
-    // on 90 of the broad check's 240 views. 0 lets smooth meshes shadow themselves near
-    // their terminators (suzanne-grazing 0.14 % of the view away from edges).
+    // glPolygonOffset factor in the depth pass, >= 0. It covers what the receiver plane leaves
+    // (planes steeper than its cap); more lifts shadows off their casters' contacts, and 0
+    // lets smooth meshes shadow themselves near their terminators
+    // (docs/techniques/acne-and-bias.md).
     float biasSlope = 0.7f;
     float biasUnits = 2.0f;  // glPolygonOffset units in the depth pass, >= 0
     // Receiver-plane depth: each tap compares against the depth the receiver's own plane
@@ -128,10 +119,10 @@ struct ShadowOptions {
     CullMode cull = CullMode::Back;
     ShadowFilter filter = ShadowFilter::Pcf;  // lookup filter
     int pcfSize = 3;                          // kernel width for Pcf and Poisson, odd, 1..9
-    // Moment filters: the box blur's radius over the moments, texels (0..16: a (2r+1)^2
-    // box; 0, the bilinear lookup's 2x2 alone, misclassified least on every real view
-    // measured), and light-bleeding reduction: visibility below this share reads as shadow
-    // and the rest is stretched over [0, 1] (0..0.99).
+    // Moment filters: the box blur's radius over the moments, texels (0..16: a (2r+1)^2 box;
+    // 0 leaves filtering to the bilinear lookup's 2x2, see docs/techniques/filterable-maps.md),
+    // and light-bleeding reduction: visibility below this share reads as shadow and the rest
+    // is stretched over [0, 1] (0..0.99).
     int momentBlur = 0;
     float lightBleed = 0.1f;
     float lightRadius = 0.25f;  // Pcss: emitter radius of spot, point and area lights, world units
@@ -161,7 +152,7 @@ struct ShadowOptions {
     bool operator==(const ShadowOptions&) const = default;
 };
 
-// Diagnostic renderings (DESIGN: debug views are features).
+// Diagnostic renderings: the shadow machinery itself drawn, an option like any other.
 enum class DebugView {
     None,
     Cascades,     // tint each pixel by the cascade its shadow came from (red, green, blue, yellow)

@@ -1,47 +1,42 @@
-// The one list of render options (include/gnomon/OptionSchema.h); their text forms and the
-// docs' tables are in OptionText.cpp.
-#include "gnomon/OptionSchema.h"
+// The one list of render options (include/gnomon/OptionSchema.h): the frame's options here,
+// the shadow technique's in ShadowOptionSchema.cpp; their text forms and the docs' tables
+// are in OptionText.cpp.
+#include <stdexcept>
 
-#include <limits>
+#include "core/OptionSchemaEntries.h"
 
 namespace gnomon {
 namespace {
 
-// The names of an enum's values in its order, as toString spells them.
-template <typename E>
-std::vector<std::string> namesOf() {
-    std::vector<std::string> out;
-    for (int i = 0; i < 64; ++i) {
-        const std::string name = toString(E(i));
-        if (name == "?") break;
-        out.push_back(name);
-    }
-    return out;
+using namespace schema;
+
+// The rules for when an option has an effect (OptionSpec::matters), with their words.
+bool shadowsOn(const RenderOptions& o) {
+    return o.shadow.enabled;
 }
-
-// Accessors for a member reached by `FIELD` (an expression of `o`), as numbers.
-#define NUMBER(FIELD, TYPE)                                        \
-    .get = [](const RenderOptions& o) { return double(o.FIELD); }, \
-    .set = [](RenderOptions& o, double v) { o.FIELD = static_cast<TYPE>(v); }
-#define ENUM(FIELD, TYPE)                                               \
-    .get = [](const RenderOptions& o) { return double(int(o.FIELD)); }, \
-    .set = [](RenderOptions& o, double v) { o.FIELD = TYPE(int(v)); }
-
-constexpr double kHuge = std::numeric_limits<double>::max();  // "no bound"
+// Every debug view but the cascades tint, which needs cascades to tint.
+bool debugViewShows(const RenderOptions& o) {
+    return o.debugView != DebugView::Cascades || o.shadow.cascades != 1;
+}
+bool factorRule(const RenderOptions& o) {
+    return o.shading.shadowedRule == ShadowedRule::Factor;
+}
 
 // What the frame is and how it is written.
 void addOutput(std::vector<OptionSpec>& s) {
     using K = OptionKind;
+    using G = OptionGroup;
     auto add = [&](OptionSpec spec) { s.push_back(std::move(spec)); };
     add({.name = "size",
-         .group = "Output",
+         .group = G::Output,
          .doc = "output size in pixels",
          .kind = K::Size,
          .min = 1,
          .max = 16384,
-         .defaultNote = "the scene's, usually 512x512"});
+         .defaultNote = "the scene's, usually 512x512",
+         .field = [](const RenderOptions& o) -> const void* { return &o.width; }});
     add({.name = "time",
-         .group = "Output",
+         .group = G::Output,
          .doc = "seconds of animation to pose (book-triangle turns 40 deg/s)",
          .unit = "seconds",
          .kind = K::Real,
@@ -49,14 +44,14 @@ void addOutput(std::vector<OptionSpec>& s) {
          .max = kHuge,
          NUMBER(time, double)});
     add({.name = "light-only",
-         .group = "Output",
+         .group = G::Output,
          .doc = "render with only light N on (-1: the scene's switches)",
          .kind = K::Integer,
          .min = -1,
          .max = std::numeric_limits<int>::max(),
          NUMBER(lightOnly, int)});
     add({.name = "output-encoding",
-         .group = "Output",
+         .group = G::Output,
          .doc =
              "image colours as computed (the textbooks) or sRGB-encoded for display (glTF viewers)",
          .kind = K::Choice,
@@ -64,268 +59,52 @@ void addOutput(std::vector<OptionSpec>& s) {
          .defaultNote = "the scene's: built-in scenes linear, model files srgb",
          ENUM(shading.output, OutputEncoding)});
     add({.name = "dither",
-         .group = "Output",
+         .group = G::Output,
          .doc = "ordered dithering of the 8-bit colours by under half a step, so smooth "
                 "gradients do not band (off: plain rounding)",
          .kind = K::Switch,
          .max = 1,
          NUMBER(shading.dither, bool)});
     add({.name = "debug-view",
-         .group = "Output",
+         .group = G::Output,
          .doc = "tint by cascade, show one light's maps (--light-only's, else the first shadowed "
                 "light's), or draw the shadow cameras' volumes",
          .kind = K::Choice,
          .choices = namesOf<DebugView>(),
-         ENUM(debugView, DebugView)});
-}
-
-// Whether and how maps are made.
-void addShadowMaps(std::vector<OptionSpec>& s) {
-    using K = OptionKind;
-    auto add = [&](OptionSpec spec) { s.push_back(std::move(spec)); };
-    add({.name = "shadows",
-         .group = "Shadow maps",
-         .doc = "off disables every shadow test, lighting unchanged",
-         .kind = K::Switch,
-         .max = 1,
-         NUMBER(shadow.enabled, bool)});
-    add({.name = "map-size",
-         .group = "Shadow maps",
-         .doc = "shadow map texels per side for every light",
-         .kind = K::Integer,
-         .min = 64,
-         .max = 8192,
-         .zeroAllowed = true,
-         .defaultNote = "0: each light's own",
-         NUMBER(shadow.mapSize, int)});
-    add({.name = "caster-detail",
-         .group = "Shadow maps",
-         .doc = "share of each mesh's triangles drawn into shadow maps: simplified stand-in "
-                "casters (meshoptimizer), made once per value, or the file's own coarser "
-                "version nearest that share (glTF MSFT_lod); 1 = the full meshes",
-         .unit = "of the triangles",
-         .kind = K::Real,
-         .min = 0.001,
-         .max = 1,
-         NUMBER(shadow.casterDetail, float)});
-    add({.name = "depth-format",
-         .group = "Shadow maps",
-         .doc = "shadow map storage (point-light cubes use depth32f for colour formats)",
-         .kind = K::Choice,
-         .choices = namesOf<DepthFormat>(),
-         ENUM(shadow.depthFormat, DepthFormat)});
-    add({.name = "fit-to",
-         .group = "Shadow maps",
-         .doc = "what fitted lights' maps cover: the points a coarse depth pre-pass of the view "
-                "sees (a point light whose points fit a cube face's angle gets one frustum over "
-                "them; a spot maps only the part of its cone they lie in), or the visible "
-                "receivers' boxes",
-         .kind = K::Choice,
-         .choices = namesOf<FitTo>(),
-         ENUM(shadow.fitTo, FitTo)});
-    add({.name = "point-maps",
-         .group = "Shadow maps",
-         .doc = "a fitted point light the view sees in more than one cube face: with --fit-to "
-                "view-depth, a map per face fitted to what the view sees there (finer on real "
-                "scenes; pcss keeps cubes), or one cube (every direction at one density)",
-         .kind = K::Choice,
-         .choices = namesOf<PointMaps>(),
-         ENUM(shadow.pointMaps, PointMaps)});
-    add({.name = "stabilise",
-         .group = "Shadow maps",
-         .doc = "fitted maps that follow the view keep a quantised size and move in whole "
-                "texels, so edges hold still as the camera moves (off: refitted exactly, shimmers)",
-         .kind = K::Switch,
-         .max = 1,
-         NUMBER(shadow.stabilise, bool)});
-    add({.name = "outside",
-         .group = "Shadow maps",
-         .doc = "lookups outside a light's map: lit, or clamp (shows the textbooks' error)",
-         .kind = K::Choice,
-         .choices = namesOf<OutsidePolicy>(),
-         ENUM(shadow.outside, OutsidePolicy)});
-    add({.name = "blend-shadows",
-         .group = "Shadow maps",
-         .doc = "shadows of alpha-blended materials: full, none, covering alpha of the map's "
-                "texels, or light tinted by their colour",
-         .kind = K::Choice,
-         .choices = namesOf<BlendShadows>(),
-         ENUM(shadow.blendShadows, BlendShadows)});
-}
-
-// What keeps lit surfaces from shadowing themselves.
-void addTolerances(std::vector<OptionSpec>& s) {
-    using K = OptionKind;
-    auto add = [&](OptionSpec spec) { s.push_back(std::move(spec)); };
-    add({.name = "bias-constant",
-         .group = "Tolerances",
-         .doc = "tolerance added to the stored depth",
-         .unit = "stored-depth units",
-         .kind = K::Real,
-         .max = 1,
-         .maxExclusive = true,
-         NUMBER(shadow.biasConstant, float)});
-    add({.name = "bias-depth-aware",
-         .group = "Tolerances",
-         .doc = "plus this many steps of the stored depth's spacing for the map's format (float "
-                "storage: one ulp of 0.5, or the lookup's own float rounding where larger)",
-         .unit = "steps",
-         .kind = K::Real,
-         .max = 1000,
-         NUMBER(shadow.biasDepthAware, float)});
-    add({.name = "bias-slope",
-         .group = "Tolerances",
-         .doc = "polygon-offset factor in the depth pass",
-         .kind = K::Real,
-         .max = 100,
-         NUMBER(shadow.biasSlope, float)});
-    add({.name = "bias-units",
-         .group = "Tolerances",
-         .doc = "polygon-offset units in the depth pass",
-         .kind = K::Real,
-         .max = 1e6,
-         NUMBER(shadow.biasUnits, float)});
-    add({.name = "receiver-plane",
-         .group = "Tolerances",
-         .doc = "compare each tap against the receiver's plane at the texel it reads (off: one "
-                "reference depth per lookup)",
-         .kind = K::Switch,
-         .max = 1,
-         NUMBER(shadow.receiverPlane, bool)});
-    add({.name = "normal-offset",
-         .group = "Tolerances",
-         .doc = "lookup shift along the normal, in texels x the filter's reach x sin(light angle)",
-         .unit = "texels",
-         .kind = K::Real,
-         .max = 100,
-         NUMBER(shadow.normalOffset, float)});
-    add({.name = "cull",
-         .group = "Tolerances",
-         .doc = "faces culled in the depth pass (only on solids: closed, wound outwards, not cut "
-                "by a texture)",
-         .kind = K::Choice,
-         .choices = namesOf<CullMode>(),
-         ENUM(shadow.cull, CullMode)});
-}
-
-// How a lookup reads the map.
-void addFiltering(std::vector<OptionSpec>& s) {
-    using K = OptionKind;
-    auto add = [&](OptionSpec spec) { s.push_back(std::move(spec)); };
-    add({.name = "filter",
-         .group = "Filtering",
-         .doc = "shadow map lookup filter",
-         .kind = K::Choice,
-         .choices = namesOf<ShadowFilter>(),
-         ENUM(shadow.filter, ShadowFilter)});
-    add({.name = "pcf-size",
-         .group = "Filtering",
-         .doc = "kernel width for pcf and poisson",
-         .unit = "texels",
-         .kind = K::Integer,
-         .min = 1,
-         .max = 9,
-         .odd = true,
-         NUMBER(shadow.pcfSize, int)});
-    add({.name = "moment-blur",
-         .group = "Filtering",
-         .doc = "evsm2, evsm4, msm: radius of the box blur over the moments (0: none)",
-         .unit = "texels",
-         .kind = K::Integer,
-         .max = 16,
-         NUMBER(shadow.momentBlur, int)});
-    add({.name = "light-bleed",
-         .group = "Filtering",
-         .doc = "evsm2, evsm4, msm: light-bleeding reduction, visibility below this reads as "
-                "shadow",
-         .kind = K::Real,
-         .max = 0.99,
-         NUMBER(shadow.lightBleed, float)});
-    add({.name = "light-radius",
-         .group = "Filtering",
-         .doc = "pcss: emitter radius of spot, point and area lights",
-         .unit = "world units",
-         .kind = K::Real,
-         .max = 1e4,
-         NUMBER(shadow.lightRadius, float)});
-    add({.name = "light-angle",
-         .group = "Filtering",
-         .doc = "pcss: angular radius of directional lights",
-         .unit = "degrees",
-         .kind = K::Real,
-         .max = 20,
-         NUMBER(shadow.lightAngle, float)});
-    add({.name = "contact-length",
-         .group = "Filtering",
-         .doc = "screen-space contact shadows: march this far towards each shadowed light "
-                "through the view's depth, for contacts the map misses (0: off)",
-         .unit = "world units",
-         .kind = K::Real,
-         .max = 1e6,
-         NUMBER(shadow.contactLength, float)});
-    add({.name = "map-filter",
-         .group = "Filtering",
-         .doc = "filtering of the stored depth before a comparison by hand (colour formats, and "
-                "--filter none)",
-         .kind = K::Choice,
-         .choices = namesOf<MapFilter>(),
-         ENUM(shadow.mapFilter, MapFilter)});
-}
-
-// Directional lights split along the view.
-void addCascades(std::vector<OptionSpec>& s) {
-    using K = OptionKind;
-    auto add = [&](OptionSpec spec) { s.push_back(std::move(spec)); };
-    add({.name = "cascades",
-         .group = "Cascades",
-         .doc = "fitted directional lights: cascaded maps along the view; auto: one per factor of "
-                "8 in the depth the view sees",
-         .kind = K::Integer,
-         .min = 1,
-         .max = 4,
-         .zeroAllowed = true,
-         .zeroName = "auto",
-         NUMBER(shadow.cascades, int)});
-    add({.name = "cascade-lambda",
-         .group = "Cascades",
-         .doc = "cascade splits: 0 uniform .. 1 logarithmic",
-         .kind = K::Real,
-         .max = 1,
-         NUMBER(shadow.cascadeLambda, float)});
-    add({.name = "cascade-blend",
-         .group = "Cascades",
-         .doc = "fraction of each cascade handed to the next pixel by pixel (dithered)",
-         .kind = K::Real,
-         .max = 0.5,
-         NUMBER(shadow.cascadeBlend, float)});
+         ENUM(debugView, DebugView),
+         .matters = debugViewShows,
+         .onlyWith = "--cascades auto or 2..4 (for the cascades tint)"});
 }
 
 // What a shadow does to the colour.
 void addShading(std::vector<OptionSpec>& s) {
     using K = OptionKind;
+    using G = OptionGroup;
     auto add = [&](OptionSpec spec) { s.push_back(std::move(spec)); };
     add({.name = "shadowed",
-         .group = "Shading",
+         .group = G::Shading,
          .doc = "a shadowed fragment keeps ambient only, or is multiplied by --shadow-factor",
          .kind = K::Choice,
          .choices = namesOf<ShadowedRule>(),
          .defaultNote = "the scene's; ambient",
          ENUM(shading.shadowedRule, ShadowedRule)});
     add({.name = "shadow-factor",
-         .group = "Shading",
+         .group = G::Shading,
          .doc = "colour multiplier in shadow for --shadowed factor",
          .kind = K::Real,
          .max = 1,
-         NUMBER(shading.shadowFactor, float)});
+         NUMBER(shading.shadowFactor, float),
+         .matters = factorRule,
+         .onlyWith = "--shadowed factor"});
     add({.name = "light-tiles",
-         .group = "Shading",
+         .group = G::Shading,
          .doc = "draw the main pass in screen tiles, each with only the lights that reach it "
                 "(the same image; off: every light on every pixel)",
          .kind = K::Switch,
          .max = 1,
          NUMBER(shading.lightTiles, bool)});
     add({.name = "depth-prepass",
-         .group = "Shading",
+         .group = G::Shading,
          .doc = "start the main pass from the view's depth pass where one is drawn for the "
                 "view anyway, so each pixel is shaded once (the same image; off: surfaces "
                 "later covered by nearer ones are shaded too)",
@@ -334,62 +113,12 @@ void addShading(std::vector<OptionSpec>& s) {
          NUMBER(shading.depthPrepass, bool)});
 }
 
-// When options have an effect: those of the shadow technique only with shadows on, and a
-// few only with the filter, rule or cascades they tune.
-void addConditions(std::vector<OptionSpec>& s) {
-    struct Condition {
-        const char* name;
-        bool (*matters)(const RenderOptions&);
-        const char* onlyWith;
-    };
-    static const Condition kConditions[] = {
-        {"moment-blur", [](const RenderOptions& o) { return isMomentFilter(o.shadow.filter); },
-         "--filter evsm2, evsm4 or msm"},
-        {"light-bleed", [](const RenderOptions& o) { return isMomentFilter(o.shadow.filter); },
-         "--filter evsm2, evsm4 or msm"},
-        {"light-radius",
-         [](const RenderOptions& o) { return o.shadow.filter == ShadowFilter::Pcss; },
-         "--filter pcss"},
-        {"light-angle",
-         [](const RenderOptions& o) { return o.shadow.filter == ShadowFilter::Pcss; },
-         "--filter pcss"},
-        {"pcf-size",
-         [](const RenderOptions& o) {
-             return o.shadow.filter == ShadowFilter::Pcf ||
-                    o.shadow.filter == ShadowFilter::Poisson;
-         },
-         "--filter pcf or poisson"},
-        {"map-filter",
-         [](const RenderOptions& o) {
-             return o.shadow.filter == ShadowFilter::None || isColourFormat(o.shadow.depthFormat);
-         },
-         "--filter none or a colour --depth-format (r8, rgba8-packed-*)"},
-        {"cascade-lambda", [](const RenderOptions& o) { return o.shadow.cascades != 1; },
-         "more than one cascade (--cascades auto or 2..4)"},
-        {"cascade-blend", [](const RenderOptions& o) { return o.shadow.cascades != 1; },
-         "more than one cascade (--cascades auto or 2..4)"},
-        {"debug-view",
-         [](const RenderOptions& o) {
-             return o.debugView != DebugView::Cascades || o.shadow.cascades != 1;
-         },
-         "--cascades auto or 2..4 (for the cascades tint)"},
-        {"shadow-factor",
-         [](const RenderOptions& o) { return o.shading.shadowedRule == ShadowedRule::Factor; },
-         "--shadowed factor"},
-    };
+// Options of the technique groups without a rule of their own have an effect only with
+// shadows on.
+void addShadowsRule(std::vector<OptionSpec>& s) {
     for (OptionSpec& spec : s) {
-        const std::string group = spec.group;
-        const bool technique = group == "Tolerances" || group == "Filtering" ||
-                               group == "Cascades" ||
-                               (group == "Shadow maps" && std::string(spec.name) != "shadows");
-        for (const Condition& c : kConditions) {
-            if (std::string(spec.name) == c.name) {
-                spec.matters = c.matters;
-                spec.onlyWith = c.onlyWith;
-            }
-        }
-        if (technique && !spec.matters) {
-            spec.matters = [](const RenderOptions& o) { return o.shadow.enabled; };
+        if (isTechniqueGroup(spec.group) && !spec.matters && !spec.mattersWithoutShadows) {
+            spec.matters = shadowsOn;
             spec.onlyWith = "--shadows on";
         }
     }
@@ -403,7 +132,7 @@ std::vector<OptionSpec> makeSchema() {
     addFiltering(s);
     addCascades(s);
     addShading(s);
-    addConditions(s);
+    addShadowsRule(s);
     return s;
 }
 
@@ -422,6 +151,45 @@ const OptionSpec* findOption(const std::string& name) {
         if (name == spec.name) return &spec;
     }
     return nullptr;
+}
+
+const OptionSpec& optionAt(const RenderOptions& o, const void* field) {
+    for (const OptionSpec& spec : optionSchema()) {
+        if (spec.field(o) == field) return spec;
+    }
+    throw std::logic_error("optionAt: no render option holds that member of RenderOptions");
+}
+
+const char* toString(OptionGroup g) {
+    switch (g) {
+        case OptionGroup::Output:
+            return "Output";
+        case OptionGroup::ShadowMaps:
+            return "Shadow maps";
+        case OptionGroup::Tolerances:
+            return "Tolerances";
+        case OptionGroup::Filtering:
+            return "Filtering";
+        case OptionGroup::Cascades:
+            return "Cascades";
+        case OptionGroup::Shading:
+            return "Shading";
+    }
+    return "?";
+}
+
+bool isTechniqueGroup(OptionGroup g) {
+    switch (g) {
+        case OptionGroup::ShadowMaps:
+        case OptionGroup::Tolerances:
+        case OptionGroup::Filtering:
+        case OptionGroup::Cascades:
+            return true;
+        case OptionGroup::Output:
+        case OptionGroup::Shading:
+            return false;
+    }
+    return false;
 }
 
 }  // namespace gnomon

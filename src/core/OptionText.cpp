@@ -251,7 +251,7 @@ std::string optionTableMarkdown(OptionTable table) {
     for (const OptionSpec& spec : optionSchema()) {
         if (table == OptionTable::Flags) {
             const bool ranged = spec.kind == OptionKind::Integer || spec.kind == OptionKind::Real;
-            out += "| " + std::string(spec.group) + " | `--" + spec.name + " " +
+            out += "| " + std::string(toString(spec.group)) + " | `--" + spec.name + " " +
                    escapeBars(optionValueName(spec)) + "` | " + spec.doc +
                    (ranged ? " (" + optionRange(spec) + ")" : std::string()) + " | " +
                    defaultText(spec) + " |\n";

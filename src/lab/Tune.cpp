@@ -62,6 +62,7 @@ std::vector<int> lightsSizedApart(const Scene& scene, const RenderOptions& o) {
 struct Space {
     std::vector<search::Parameter> parameters;
     std::size_t options = 0;
+    std::vector<const OptionSpec*> specs;  // the first `options` parameters' options
     std::vector<int> sizedLights;
     std::vector<int> ownSizes;
 };
@@ -74,22 +75,29 @@ Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& sta
     for (const Light& l : scene.lights)
         result.ownSizes.push_back(shadowMapSizeOf(l));
     std::vector<search::Parameter>& space = result.parameters;
-    space = {
-        {"filter", {"none", "pcf", "poisson", "pcss"}},
-        {"pcf-size", {"1", "3", "5", "7"}},
-        {"receiver-plane", {"on", "off"}},
-        {"normal-offset", {"0", "0.5", "1", "2"}},
-        {"bias-depth-aware", {"0.5", "1", "2", "4"}},
-        {"bias-slope", {"0", "0.7", "1.5", "3"}},
-        {"bias-constant", {"0", "0.00005", "0.0002"}},
+    // Each option by where it lives in RenderOptions (optionAt), so a wrong one fails to
+    // compile; the values as the CLI spells them.
+    std::vector<const OptionSpec*>& specs = result.specs;
+    auto add = [&](const void* field, std::vector<std::string> values) {
+        specs.push_back(&optionAt(o, field));
+        space.push_back({specs.back()->name, std::move(values)});
     };
-    if (result.sizedLights.empty()) space.insert(space.begin() + 2, {"map-size", kMapSizes});
-    if (hasFittedSun(scene)) space.push_back({"cascades", {"auto", "1", "2", "3", "4"}});
+    const ShadowOptions& s = o.shadow;
+    add(&s.filter, {"none", "pcf", "poisson", "pcss"});
+    add(&s.pcfSize, {"1", "3", "5", "7"});
+    if (result.sizedLights.empty()) add(&s.mapSize, kMapSizes);
+    add(&s.receiverPlane, {"on", "off"});
+    add(&s.normalOffset, {"0", "0.5", "1", "2"});
+    add(&s.biasDepthAware, {"0.5", "1", "2", "4"});
+    add(&s.biasSlope, {"0", "0.7", "1.5", "3"});
+    add(&s.biasConstant, {"0", "0.00005", "0.0002"});
+    if (hasFittedSun(scene)) add(&s.cascades, {"auto", "1", "2", "3", "4"});
     if (triangleCount(scene, /*castersOnly=*/true) >= kStandInTriangles)
-        space.push_back({"caster-detail", {"1", "0.3", "0.1"}});
+        add(&s.casterDetail, {"1", "0.3", "0.1"});
     start.clear();
-    for (search::Parameter& p : space) {
-        const OptionSpec& spec = *findOption(p.name);
+    for (std::size_t i = 0; i < space.size(); ++i) {
+        search::Parameter& p = space[i];
+        const OptionSpec& spec = *specs[i];
         // The same value however it is spelled ("5e-05" and "0.00005").
         auto at = std::find_if(p.values.begin(), p.values.end(), [&](const std::string& v) {
             RenderOptions candidate = o;
@@ -132,7 +140,7 @@ Setting settingAt(const Space& space, const search::Point& point, const RenderOp
             if (s.mapSizes[light] != space.ownSizes[light]) add(p.name + " " + value);
             continue;
         }
-        const OptionSpec& spec = *findOption(p.name);
+        const OptionSpec& spec = *space.specs[i];
         if (const auto problem = parseOption(spec, value, s.options))
             throw Error(ErrorKind::InvalidInput, "tune: --" + p.name + ": " + *problem);
         if (spec.get(s.options) != spec.get(start)) add("--" + p.name + " " + value);

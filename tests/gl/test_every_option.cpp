@@ -1,11 +1,16 @@
 // Each value of every render option renders (issue 3's "each option value renders"): on
 // mixed-lights, which has every light type, every value gives a picture that has shadows
-// (differs from the shadows-off render) and is not blank; the shadow-map view shows a map.
+// (differs from the shadows-off render) and is not blank. The values come from the schema:
+// every choice of every choice option, both states of every switch, and each choice of
+// depth-format crossed with each of map-filter (the lookups they select together); then
+// the numeric options at the ends of their ranges where a picture changes there.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 
 #include "GlTest.h"
+#include "gnomon/OptionSchema.h"
 
 namespace gnomon::test {
 namespace {
@@ -19,6 +24,21 @@ void PrintTo(const OptionCase& c, std::ostream* os) {
     *os << c.name;
 }
 
+// Values of the schema this test leaves out, and why.
+struct LeftOut {
+    const OptionSpec* spec;
+    const char* value;
+    const char* why;
+};
+std::vector<LeftOut> leftOut() {
+    const RenderOptions o;
+    return {
+        {&optionAt(o, &o.shadow.enabled), "off", "the render every case is compared against"},
+        {&optionAt(o, &o.debugView), "shadow-map",
+         "draws the maps instead of the scene (test_debug_views.cpp)"},
+    };
+}
+
 std::vector<OptionCase> everyValue() {
     std::vector<OptionCase> cases;
     auto add = [&](std::string name, std::function<void(RenderOptions&)> set) {
@@ -26,32 +46,38 @@ std::vector<OptionCase> everyValue() {
             ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
         cases.push_back({name, std::move(set)});
     };
-    for (OutsidePolicy v : {OutsidePolicy::Lit, OutsidePolicy::Clamp})
-        add(std::string("outside_") + toString(v), [v](RenderOptions& o) { o.shadow.outside = v; });
-    for (CullMode v : {CullMode::Back, CullMode::Front, CullMode::None})
-        add(std::string("cull_") + toString(v), [v](RenderOptions& o) { o.shadow.cull = v; });
-    for (ShadowFilter v :
-         {ShadowFilter::None, ShadowFilter::Hw2x2, ShadowFilter::Pcf, ShadowFilter::Poisson,
-          ShadowFilter::Pcss, ShadowFilter::Evsm2, ShadowFilter::Evsm4, ShadowFilter::Msm})
-        add(std::string("filter_") + toString(v), [v](RenderOptions& o) { o.shadow.filter = v; });
-    for (int n : {1, 9})
-        add("pcf_size_" + std::to_string(n), [n](RenderOptions& o) { o.shadow.pcfSize = n; });
-    for (DepthFormat v : {DepthFormat::R8, DepthFormat::Rgba8Packed256, DepthFormat::Rgba8Packed255,
-                          DepthFormat::Depth16, DepthFormat::Depth24, DepthFormat::Depth32F}) {
-        for (MapFilter m : {MapFilter::Nearest, MapFilter::Linear}) {
-            add(std::string("format_") + toString(v) + "_" + toString(m), [v, m](RenderOptions& o) {
-                o.shadow.depthFormat = v;
-                o.shadow.mapFilter = m;
+    auto values = [](const OptionSpec& spec) {
+        return spec.kind == OptionKind::Switch ? std::vector<std::string>{"on", "off"}
+                                               : spec.choices;
+    };
+    auto setter = [](const OptionSpec* spec, std::string value) {
+        return [spec, value](RenderOptions& o) { ASSERT_FALSE(parseOption(*spec, value, o)); };
+    };
+    const std::vector<LeftOut> out = leftOut();
+    for (const OptionSpec& spec : optionSchema()) {
+        if (spec.kind != OptionKind::Switch && spec.kind != OptionKind::Choice) continue;
+        for (const std::string& v : values(spec)) {
+            const bool skip = std::any_of(out.begin(), out.end(), [&](const LeftOut& l) {
+                return l.spec == &spec && l.value == v;
+            });
+            if (!skip) add(std::string(spec.name) + "_" + v, setter(&spec, v));
+        }
+    }
+    const RenderOptions d;
+    const OptionSpec& format = optionAt(d, &d.shadow.depthFormat);
+    const OptionSpec& lookup = optionAt(d, &d.shadow.mapFilter);
+    for (const std::string& f : format.choices) {
+        for (const std::string& m : lookup.choices) {
+            add("format_" + f + "_" + m, [&format, &lookup, f, m](RenderOptions& o) {
+                ASSERT_FALSE(parseOption(format, f, o));
+                ASSERT_FALSE(parseOption(lookup, m, o));
             });
         }
     }
-    for (ShadowedRule v : {ShadowedRule::AmbientOnly, ShadowedRule::Factor})
-        add(std::string("shadowed_") + toString(v),
-            [v](RenderOptions& o) { o.shading.shadowedRule = v; });
+    for (int n : {1, 9})
+        add("pcf_size_" + std::to_string(n), [n](RenderOptions& o) { o.shadow.pcfSize = n; });
     for (int n = 1; n <= 4; ++n)
         add("cascades_" + std::to_string(n), [n](RenderOptions& o) { o.shadow.cascades = n; });
-    for (DebugView v : {DebugView::None, DebugView::Cascades, DebugView::LightFrusta})
-        add(std::string("debug_view_") + toString(v), [v](RenderOptions& o) { o.debugView = v; });
     add("light_radius_0", [](RenderOptions& o) {
         o.shadow.filter = ShadowFilter::Pcss;
         o.shadow.lightRadius = 0.0f;
@@ -96,6 +122,14 @@ TEST_P(EveryOption, RendersWithShadows) {
 
 INSTANTIATE_TEST_SUITE_P(Values, EveryOption, testing::ValuesIn(everyValue()),
                          [](const auto& info) { return info.param.name; });
+
+// What the cases leave out are values the options have.
+TEST(EveryOption, LeftOutValuesExist) {
+    for (const LeftOut& l : leftOut()) {
+        RenderOptions o;
+        EXPECT_FALSE(parseOption(*l.spec, l.value, o)) << l.spec->name << " " << l.value;
+    }
+}
 
 // The textbook preset of every built-in scene renders, with shadows.
 TEST(EveryOption, TextbookPresetOfEveryScene) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "OptionValues.h"
 #include "SceneFileTestUtil.h"
 
 namespace gnomon {
@@ -77,7 +78,7 @@ TEST(SceneFile, ComparisonNoticesDifferences) {
     changed.textbookOptions->shadow.biasConstant = 0.001f;
     EXPECT_NE(failuresOf([&] {
                   Compare{false}.scene(changed, builtin);
-              }).find("textbook options biasConstant"),
+              }).find("textbook options bias-constant"),
               std::string::npos);
     changed = builtin;
     changed.options.shadow.cull = CullMode::Front;
@@ -87,39 +88,18 @@ TEST(SceneFile, ComparisonNoticesDifferences) {
 
 // ---- Save and load back
 
+// Every option of the schema set to a value other than its default (OptionValues.h), so the
+// round trip below covers each one, a new option included.
 RenderOptions everyOptionChanged() {
+    const RenderOptions defaults;
     RenderOptions o;
-    o.width = 320;
-    o.height = 200;
-    o.time = 2.25;
-    o.lightOnly = 1;
-    o.debugView = DebugView::LightFrusta;
-    ShadowOptions& s = o.shadow;
-    s.enabled = false;
-    s.outside = OutsidePolicy::Clamp;
-    s.biasConstant = 0.0013f;
-    s.biasDepthAware = 2.5f;
-    s.biasSlope = 0.7f;
-    s.biasUnits = 3.1f;
-    s.normalOffset = 0.35f;
-    s.receiverPlane = false;
-    s.cull = CullMode::Front;
-    s.filter = ShadowFilter::Poisson;
-    s.pcfSize = 7;
-    s.lightRadius = 0.123f;
-    s.lightAngle = 2.5f;
-    s.mapSize = 768;
-    s.cascades = 3;
-    s.fitTo = FitTo::Boxes;
-    s.cascadeLambda = 0.3f;
-    s.cascadeBlend = 0.2f;
-    s.depthFormat = DepthFormat::Rgba8Packed256;
-    s.mapFilter = MapFilter::Linear;
-    s.blendShadows = BlendShadows::None;
-    o.shading.shadowedRule = ShadowedRule::Factor;
-    o.shading.shadowFactor = 0.45f;
-    o.shading.output = OutputEncoding::Srgb;
+    for (const OptionSpec& spec : optionSchema()) {
+        const std::string value = otherValue(spec, defaults);
+        EXPECT_EQ(parseOption(spec, value, o), std::nullopt) << spec.name << " " << value;
+    }
     EXPECT_TRUE(o.validate().empty());
+    for (const OptionSpec& spec : optionSchema())
+        EXPECT_FALSE(sameOption(spec, o, defaults)) << spec.name << " kept its default";
     return o;
 }
 
@@ -178,7 +158,8 @@ TEST(SceneFile, SavedFileReproducesWhatWasTuned) {
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 1);
     const std::string text = readText(saved);
     EXPECT_NE(text.find("\"scene\": \"tutorial-room\""), std::string::npos) << text;
-    EXPECT_NE(text.find("\"bias-constant\": 0.0013,"), std::string::npos) << "shortest floats";
+    // Floats as their shortest text.
+    EXPECT_NE(text.find("\"light-bleed\": 0.495"), std::string::npos) << text;
 
     const Scene back = loadSceneFile(saved.string());
     const Compare exact{true};

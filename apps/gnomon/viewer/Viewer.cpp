@@ -285,7 +285,7 @@ int runView(const ViewArgs& args, bool verbose) {
     args.flags.placeCameraAndSun(state.scene);
     printWarnings(state.scene);
     state.options = args.flags.resolve(state.scene);
-    if (args.flags.app->count("--size") > 0) state.fitView = false;
+    if (args.flags.given(optionAt(state.options, &state.options.width))) state.fitView = false;
     viewer::Viewer viewer(args, verbose, width, height, std::move(state), std::move(script));
     return viewer.run();
 }

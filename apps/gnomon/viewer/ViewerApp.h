@@ -6,7 +6,6 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
-#include <initializer_list>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -97,18 +96,22 @@ private:
     // ---- Controls (ViewerControls.cpp) ----
 
     void controls(float width, float height);
-    void flagTip(const char* flag);
-    bool option(const char* name);
-    void options(std::initializer_list<const char*> names);
+    void flagTip(const OptionSpec& spec);
+    bool option(const OptionSpec& spec);
     void changed(bool c);
     void guarded(const std::function<void()>& action);
     void sceneControls();
     void cameraControls();
     void lightControls();
-    void shadowMapControls();
-    void filterControls();
+    static int tabOf(OptionGroup group);
+    void groupControls(int tab);
+    void optionControls(OptionGroup group);
+    void optionControl(const OptionSpec& spec);
+    void outputControls();
+    void sizeControl(const OptionSpec& spec);
+    void mapSizeControl(const OptionSpec& spec);
+    void lightOnlyControl(const OptionSpec& spec);
     static int tabIndex(const std::string& name);
-    void animationControls();
     static void inputText(const char* label, std::string& value);
 
     // ---- Views (ViewerPanels.cpp; mouseOnView in Viewer.cpp) ----

@@ -10,8 +10,9 @@
 namespace gnomon::cli::viewer {
 
 // The controls in four tabs, each short enough for a 1280x720 or 800x600 window without
-// scrolling (the script's `expect-fits` checks it): the scene and the view; the lights; the
-// map and its tolerances; filtering, cascades and shading.
+// scrolling (the script's `expect-fits` checks it): the scene, the view and the Output
+// options; the lights; then the options' other groups under headers of their help titles,
+// each group in the tab tabOf() gives it.
 void Viewer::controls(float width, float height) {
     ImGui::SetNextWindowPos({0, 0});
     ImGui::SetNextWindowSize({width, height});
@@ -28,13 +29,11 @@ void Viewer::controls(float width, float height) {
             if (tab == 0) {
                 sceneControls();
                 cameraControls();
-                animationControls();
+                outputControls();
             } else if (tab == 1) {
                 lightControls();
-            } else if (tab == 2) {
-                shadowMapControls();
             } else {
-                filterControls();
+                groupControls(tab);
             }
             ImGui::EndTabItem();
         }
@@ -46,37 +45,90 @@ void Viewer::controls(float width, float height) {
     ImGui::End();
 }
 
+// The tab holding `group`'s options: the Output group's with the view's toggles, the map's
+// and its tolerances on Shadows, the lookup's and the shading's on Filter.
+int Viewer::tabOf(OptionGroup group) {
+    switch (group) {
+        case OptionGroup::Output:
+            return 0;
+        case OptionGroup::ShadowMaps:
+        case OptionGroup::Tolerances:
+            return 2;
+        case OptionGroup::Filtering:
+        case OptionGroup::Cascades:
+        case OptionGroup::Shading:
+            return 3;
+    }
+    return 3;
+}
+
+// Each group of `tab` under a header of its title, its options in schema order.
+void Viewer::groupControls(int tab) {
+    const OptionSpec* previous = nullptr;
+    for (const OptionSpec& spec : optionSchema()) {
+        const bool first = !previous || previous->group != spec.group;
+        previous = &spec;
+        if (!first || tabOf(spec.group) != tab) continue;
+        if (!ImGui::CollapsingHeader(toString(spec.group), ImGuiTreeNodeFlags_DefaultOpen))
+            continue;
+        optionControls(spec.group);
+        if (spec.group == OptionGroup::Shading) {
+            changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
+            tooltip("the scene's ambient light colour, times each material's colour");
+            ImGui::TextDisabled("shininess: per material, from the scene");
+        }
+    }
+}
+
+void Viewer::optionControls(OptionGroup group) {
+    for (const OptionSpec& spec : optionSchema()) {
+        if (spec.group == group) optionControl(spec);
+    }
+}
+
+// The schema's widget (optionWidget), but for the few options whose control needs more
+// than their range: the size beside the fit-to-window toggle, the map size as a power of two
+// over each light's own, a light index within the scene's; and the debug view, which
+// changes only what is drawn (a score of the frame still holds).
+void Viewer::optionControl(const OptionSpec& spec) {
+    const RenderOptions& o = mState.options;
+    const void* field = spec.field(o);
+    if (field == &o.width) {
+        sizeControl(spec);
+    } else if (field == &o.shadow.mapSize) {
+        mapSizeControl(spec);
+    } else if (field == &o.lightOnly) {
+        lightOnlyControl(spec);
+    } else if (field == &o.debugView) {
+        if (option(spec)) ++mState.viewRevision;
+    } else {
+        changed(option(spec));
+    }
+}
+
 int Viewer::tabIndex(const std::string& name) {
     for (int tab = 0; tab < 4; ++tab)
         if (name == kControlTabs[tab]) return tab;
     return -1;
 }
 
-// The flag's one-line doc as the last item's tooltip, looked up only while hovered.
-void Viewer::flagTip(const char* flag) {
-    if (ImGui::IsItemHovered()) tooltip(mDocs(flag));
+// The option's one-line doc as the last item's tooltip, looked up only while hovered.
+void Viewer::flagTip(const OptionSpec& spec) {
+    if (ImGui::IsItemHovered()) tooltip(mDocs("--" + std::string(spec.name)));
 }
 
-// The widget of the render option `name`, its range the schema's, with its flag's doc.
-// Each option's widget in turn (see option()).
-void Viewer::options(std::initializer_list<const char*> names) {
-    for (const char* name : names)
-        changed(option(name));
-}
-
-// Dimmed, still editable, when the other options make it pointless (and its tooltip says
-// what it needs).
-bool Viewer::option(const char* name) {
-    const OptionSpec* spec = findOption(name);
-    if (!spec) return false;
-    const bool pointless = spec->matters && !spec->matters(mState.options);
+// The option's widget, its range the schema's, with its flag's doc as the tooltip. Dimmed,
+// still editable, when the other options make it pointless (and its tooltip says what it
+// needs).
+bool Viewer::option(const OptionSpec& spec) {
+    const bool pointless = spec.matters && !spec.matters(mState.options);
     if (pointless) ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 0.45f);
-    const bool c = optionWidget(*spec, mState.options);
+    const bool c = optionWidget(spec, mState.options);
     if (pointless) ImGui::PopStyleVar();
     if (ImGui::IsItemHovered()) {
-        tooltip(mDocs("--" + std::string(name)) +
+        tooltip(mDocs("--" + std::string(spec.name)) +
                 (pointless
-                     ? std::string("\n(no effect now: applies only with ") + spec->onlyWith + ")"
+                     ? std::string("\n(no effect now: applies only with ") + spec.onlyWith + ")"
                      : std::string()));
     }
     return c;
@@ -270,98 +322,74 @@ void Viewer::lightControls() {
     }
 }
 
-void Viewer::shadowMapControls() {
+void Viewer::mapSizeControl(const OptionSpec& spec) {
     ShadowOptions& s = mState.options.shadow;
-    if (ImGui::CollapsingHeader("Shadow map", ImGuiTreeNodeFlags_DefaultOpen)) {
-        changed(option("shadows"));
-        bool override = s.mapSize > 0;
-        if (ImGui::Checkbox("##override", &override)) {
-            s.mapSize = override ? firstCasterMapSize(mState.scene, s) : 0;
+    bool override = s.mapSize > 0;
+    if (ImGui::Checkbox("##override", &override)) {
+        s.mapSize = override ? firstCasterMapSize(mState.scene, s) : 0;
+        changed(true);
+    }
+    tooltip("override every light's map size");
+    ImGui::SameLine();
+    if (override) {
+        int log = int(std::lround(std::log2(std::max(s.mapSize, 64))));
+        if (ImGui::SliderInt(spec.name, &log, 6, 13, "")) {
+            s.mapSize = 1 << log;
             changed(true);
         }
-        tooltip("override every light's map size");
         ImGui::SameLine();
-        if (override) {
-            int log = int(std::lround(std::log2(std::max(s.mapSize, 64))));
-            if (ImGui::SliderInt("map-size", &log, 6, 13, "")) {
-                s.mapSize = 1 << log;
-                changed(true);
-            }
-            ImGui::SameLine();
-            ImGui::Text("%d", s.mapSize);
-        } else {
-            ImGui::TextDisabled("map-size: each light's own");
-        }
-        flagTip("--map-size");
-        options({"caster-detail", "depth-format", "map-filter", "outside"});
+        ImGui::Text("%d", s.mapSize);
+    } else {
+        ImGui::TextDisabled("%s: each light's own", spec.name);
     }
-    if (ImGui::CollapsingHeader("Tolerances", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"bias-constant", "bias-depth-aware", "bias-slope", "bias-units", "receiver-plane",
-                 "normal-offset", "cull"});
-    }
+    flagTip(spec);
 }
 
-void Viewer::filterControls() {
-    if (ImGui::CollapsingHeader("Filter", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"filter", "pcf-size", "moment-blur", "light-bleed", "light-radius", "light-angle",
-                 "blend-shadows", "contact-length"});
-    }
-    if (ImGui::CollapsingHeader("Cascades", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options(
-            {"cascades", "fit-to", "point-maps", "stabilise", "cascade-lambda", "cascade-blend"});
-    }
-    if (ImGui::CollapsingHeader("Shading", ImGuiTreeNodeFlags_DefaultOpen)) {
-        options({"shadowed", "shadow-factor", "output-encoding", "dither", "light-tiles",
-                 "depth-prepass"});
-        changed(ImGui::ColorEdit3("ambient", &mState.scene.ambient.x));
-        tooltip("the scene's ambient light colour, times each material's colour");
-        ImGui::TextDisabled("shininess: per material, from the scene");
-    }
+// The animation's clock, the Output options and the view's own toggles.
+void Viewer::outputControls() {
+    if (!ImGui::CollapsingHeader(toString(OptionGroup::Output), ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    if (ImGui::Button(mState.playing ? "Pause (space)" : "Play (space)"))
+        mState.playing = !mState.playing;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(100);
+    float speed = float(mState.speed);
+    if (ImGui::DragFloat("speed", &speed, 0.05f, -10.0f, 10.0f)) mState.speed = speed;
+    tooltip("animation seconds per second");
+    optionControls(OptionGroup::Output);
+    // View-only: they redraw but leave a score current.
+    if (ImGui::Checkbox("light frusta (F)", &mState.frusta)) ++mState.viewRevision;
+    tooltip("draw every shadow camera's volume as lines over the camera's view");
+    bool side = mState.side == view::SideView::ShadowMap;
+    if (ImGui::Checkbox("side view: shadow map", &side))
+        mState.side = side ? view::SideView::ShadowMap : view::SideView::None;
+    if (ImGui::Checkbox("measure passes", &mMeasure)) mRenderer.setPassTiming(mMeasure);
+    tooltip("time each pass as gnomon bench does (a glFinish between passes)");
 }
 
-void Viewer::animationControls() {
+// The size of the camera's view: the window's area for it, or the size set here.
+void Viewer::sizeControl(const OptionSpec& spec) {
     RenderOptions& o = mState.options;
-    if (ImGui::CollapsingHeader("Animation and view", ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (ImGui::Button(mState.playing ? "Pause (space)" : "Play (space)"))
-            mState.playing = !mState.playing;
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(100);
-        float speed = float(mState.speed);
-        if (ImGui::DragFloat("speed", &speed, 0.05f, -10.0f, 10.0f)) mState.speed = speed;
-        tooltip("animation seconds per second");
-        float time = float(o.time);
-        if (ImGui::DragFloat("time", &time, 0.05f, 0.0f, 1e6f, "%.2f s")) {
-            o.time = time;
-            changed(true);
-        }
-        flagTip("--time");
-        int lightOnly = o.lightOnly;
-        if (ImGui::SliderInt("light-only", &lightOnly, -1, int(mState.scene.lights.size()) - 1,
-                             lightOnly < 0 ? "all" : "%d")) {
-            o.lightOnly = lightOnly;
-            changed(true);
-        }
-        flagTip("--light-only");
-        // View-only: they redraw but leave a score current.
-        if (option("debug-view")) ++mState.viewRevision;
-        if (ImGui::Checkbox("light frusta (F)", &mState.frusta)) ++mState.viewRevision;
-        tooltip("draw every shadow camera's volume as lines over the camera's view");
-        bool side = mState.side == view::SideView::ShadowMap;
-        if (ImGui::Checkbox("side view: shadow map", &side))
-            mState.side = side ? view::SideView::ShadowMap : view::SideView::None;
-        if (ImGui::Checkbox("fit view to window", &mState.fitView)) changed(true);
-        if (!mState.fitView) {
-            int size[2] = {o.width, o.height};
-            if (ImGui::DragInt2("size", size, 1.0f, 16, 4096)) {
-                o.width = std::clamp(size[0], 1, 16384);
-                o.height = std::clamp(size[1], 1, 16384);
-                changed(true);
-            }
-            flagTip("--size");
-        }
-        if (ImGui::Checkbox("measure passes", &mMeasure)) mRenderer.setPassTiming(mMeasure);
-        tooltip("time each pass as gnomon bench does (a glFinish between passes)");
+    if (ImGui::Checkbox("fit view to window", &mState.fitView)) changed(true);
+    if (mState.fitView) return;
+    int size[2] = {o.width, o.height};
+    if (ImGui::DragInt2(spec.name, size, 1.0f, 16, 4096)) {
+        o.width = std::clamp(size[0], 1, 16384);
+        o.height = std::clamp(size[1], 1, 16384);
+        changed(true);
     }
+    flagTip(spec);
+}
+
+void Viewer::lightOnlyControl(const OptionSpec& spec) {
+    RenderOptions& o = mState.options;
+    int lightOnly = o.lightOnly;
+    if (ImGui::SliderInt(spec.name, &lightOnly, -1, int(mState.scene.lights.size()) - 1,
+                         lightOnly < 0 ? "all" : "%d")) {
+        o.lightOnly = lightOnly;
+        changed(true);
+    }
+    flagTip(spec);
 }
 
 void Viewer::inputText(const char* label, std::string& value) {

@@ -249,7 +249,7 @@ void applyFlags(State& state, const std::vector<std::string>& args) {
         options.height = state.options.height;
     }
     flags.apply(options);  // validates
-    if (app.count("--size") > 0) state.fitView = false;
+    if (flags.given(optionAt(options, &options.width))) state.fitView = false;
     state.options = options;
     ++state.revision;
 }

@@ -44,7 +44,8 @@ bool enumCombo(const char* label, E& value, std::initializer_list<E> values) {
 
 // The option's widget: a checkbox, a combo of its choices, an odd-only or "auto"-at-0 integer
 // slider, or a number slider over its range (logarithmic where the range spans decades).
-// True when the value changed. (The size and map-size have panels of their own.)
+// True when the value changed. (The viewer gives the size, map-size and light-only widgets of
+// their own: Viewer::optionControl.)
 inline bool optionWidget(const OptionSpec& spec, RenderOptions& o) {
     const double value = spec.get(o);
     switch (spec.kind) {
@@ -89,6 +90,15 @@ inline bool optionWidget(const OptionSpec& spec, RenderOptions& o) {
         }
         case OptionKind::Real: {
             float v = float(value);
+            if (!std::isfinite(float(spec.min)) || !std::isfinite(float(spec.max))) {
+                // Unbounded (time): dragged, not a slider over all the floats.
+                const std::string format =
+                    std::string("%.4g") + (*spec.unit ? " " : "") + spec.unit;
+                if (!ImGui::DragFloat(spec.name, &v, 0.05f, 0.0f, 0.0f, format.c_str()))
+                    return false;
+                spec.set(o, double(v));
+                return true;
+            }
             const float lo = float(spec.min);
             // [min, max): the largest float below max.
             const float hi =
