@@ -95,7 +95,7 @@ def main():
         f"the median of {args.frames} frames of `gnomon bench --static` (maps kept, as for a",
         f"static scene; the driver: {gl}). Compare frame times within this table only: they",
         "are one run's, and this shared machine's speed moves by up to twice between hours",
-        "(docs/performance.md measures builds and peers side by side). The flags of each row are",
+        "(docs/results/performance.md measures builds and peers side by side). The flags of each row are",
         "added to the scene's own options:",
         "",
     ]

@@ -215,7 +215,7 @@ std::string nearestFlag(const std::string& word, const CLI::App& app) {
 
 int main(int argc, char** argv) {
     // llvmpipe's per-draw buffers would otherwise make the kernel fault pages in on every draw
-    // (gnomon.h; docs/performance.md, "The heap kept between draws").
+    // (gnomon.h; docs/results/performance.md, "The heap kept between draws").
     gnomon::keepFreedHeap();
     CLI::App app{"gnomon: real-time shadows you can measure (OpenGL 4.5 core, headless)"};
     app.require_subcommand(1);

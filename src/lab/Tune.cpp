@@ -36,9 +36,9 @@ bool hasFittedSun(const Scene& s) {
 const std::vector<std::string> kMapSizes = {"512", "1024", "2048", "4096"};
 
 // Triangles the shadow casters draw at full detail. From about this many, a shadow pass on
-// llvmpipe costs more in triangles (~0.1 us each: the Dragon's 871k take 98 ms at 1024²) than
-// in texels (a 1024² map's fill is 1-2 ms), so stand-in casters (--caster-detail) free time a
-// larger map can use; below it they save little and only add trials.
+// llvmpipe costs more in triangles than in texels (docs/results/performance.md, "Triangles"),
+// so stand-in casters (--caster-detail) free time a larger map can use; below it they save
+// little and only add trials.
 constexpr std::size_t kStandInTriangles = 20000;
 
 // Lights whose map sizes are searched one by one: every shadowed light that is on (the
@@ -231,13 +231,11 @@ private:
 
     // As gnomon bench times a frame (every map redrawn, no pass timing: wall time of
     // render()), alternating with the starting settings: the ratio of the two medians times
-    // the starting settings' first median. The machine's drift (15-35 % here) hits both
-    // alike, so a cheaper setting is not refused the budget for having been timed at a
-    // slow moment. Two settings whose maps take different memory reallocate them at every
-    // switch, which an application keeping one setting never does: each then settles for a
-    // frame before the one timed (timed straight after the switch, lantern-post-point's
-    // --filter none --map-size 2048 read 46 ms against 23 for the defaults, where gnomon
-    // bench gives 35 against 50).
+    // the starting settings' first median. The machine's drift hits both alike, so a
+    // cheaper setting is not refused the budget for having been timed at a slow moment.
+    // Two settings whose maps take different memory reallocate them at every switch, which
+    // an application keeping one setting never does: each then settles for a frame before
+    // the one timed, or the reallocation would be charged to whichever setting came second.
     double frameMs(const Setting& o, const Setting& start) {
         mScene.camera = mViews.front();
         std::vector<double> mine, theirs;
