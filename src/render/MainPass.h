@@ -11,8 +11,8 @@
 #include "gl/Objects.h"
 #include "gnomon/Options.h"
 #include "render/GpuScene.h"
-#include "shadow/LightRecord.h"
 #include "render/ShadowPass.h"
+#include "shadow/LightRecord.h"
 
 namespace gnomon::render {
 
