@@ -1,5 +1,5 @@
 // One light record of the main pass's Lights block (shaders/lights.glsl), declared once for
-// GLSL and C++: the shader assembler includes it into programs; src/render/LightRecord.h
+// GLSL and C++: the shader assembler includes it into programs; src/shadow/LightRecord.h
 // includes it into C++ after naming glm's types as GLSL's, and checks its std140 offsets at
 // compile time. Each vec3 is followed by a scalar in its 16-byte slot and the vec2 by two,
 // where std140 and a packed C++ struct agree; the record stays within 256 bytes so 256
