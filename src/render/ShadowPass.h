@@ -9,8 +9,6 @@
 // not touched.
 #pragma once
 
-#include <array>
-#include <limits>
 #include <string>
 #include <vector>
 

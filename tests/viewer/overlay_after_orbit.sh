@@ -7,6 +7,7 @@
 # after an orbit (no stale map blended over the new frame).
 # Exit 77 (skipped) when no window can be opened.
 set -uo pipefail
+source "$(dirname "$0")/run_view.sh"
 gnomon=$1 compare=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
 cat >"$work/script.txt" <<SCRIPT
@@ -23,17 +24,7 @@ window-shot $work/orbited-window.png
 screenshot $work/orbited.png
 quit
 SCRIPT
-"$gnomon" view --window 640x480 --scene tutorial-room --script "$work/script.txt" >"$work/view.log" 2>&1
-status=$?
-cat "$work/view.log"
-if [[ $status -ne 0 ]]; then
-    if grep -q "cannot open" "$work/view.log"; then
-        echo "skipped: no window"
-        exit 77
-    fi
-    echo "gnomon view exited $status"
-    exit 1
-fi
+run_view --window 640x480 --scene tutorial-room --script "$work/script.txt"
 area="256,60,384,276 0,60"
 if "$compare" "$work/scored-window.png" "$work/scored.png" $area; then
     echo "the error overlay was not drawn over the scored frame"

@@ -4,6 +4,7 @@
 # the screenshot must equal `gnomon render` of the saved scene file within the golden
 # tolerance. Exit 77 (skipped) when no window can be opened.
 set -uo pipefail
+source "$(dirname "$0")/run_view.sh"
 gnomon=$1 compare=$2 scene=$3 work=$4
 rm -rf "$work" && mkdir -p "$work"
 cat >"$work/script.txt" <<SCRIPT
@@ -15,16 +16,6 @@ screenshot $work/view.png
 save $work/saved.json
 quit
 SCRIPT
-"$gnomon" view --scene "$scene" --script "$work/script.txt" >"$work/view.log" 2>&1
-status=$?
-cat "$work/view.log"
-if [[ $status -ne 0 ]]; then
-    if grep -q "cannot open" "$work/view.log"; then
-        echo "skipped: no window"
-        exit 77
-    fi
-    echo "gnomon view exited $status"
-    exit 1
-fi
+run_view --scene "$scene" --script "$work/script.txt"
 "$gnomon" render --scene "$work/saved.json" --out "$work/render.png" || exit 1
 "$compare" "$work/view.png" "$work/render.png"

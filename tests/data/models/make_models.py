@@ -162,18 +162,21 @@ tri(A, D, F); tri(A, F, C)                        # back (x = 0)
 tri(B, C, F); tri(B, F, E)                        # slope
 def sub(p, q): return tuple(x - y for x, y in zip(p, q))
 def cross(u, v): return (u[1]*v[2]-u[2]*v[1], u[2]*v[0]-u[0]*v[2], u[0]*v[1]-u[1]*v[0])
-lines = ["solid wedge"]
-for a, b, c in facets:
-    n = cross(sub(b, a), sub(c, a))
-    l = sum(x * x for x in n) ** 0.5
-    lines.append("  facet normal %g %g %g" % tuple(x / l for x in n))
-    lines.append("    outer loop")
-    for p in (a, b, c):
-        lines.append("      vertex %g %g %g" % p)
-    lines.append("    endloop")
-    lines.append("  endfacet")
-lines.append("endsolid wedge")
-write("wedge.stl", "\n".join(lines) + "\n")
+def write_stl(name, path):
+    """`facets` as an ASCII STL solid called `name`, with each facet's normal."""
+    lines = ["solid " + name]
+    for a, b, c in facets:
+        n = cross(sub(b, a), sub(c, a))
+        l = sum(x * x for x in n) ** 0.5
+        lines.append("  facet normal %g %g %g" % tuple(x / l for x in n))
+        lines.append("    outer loop")
+        for p in (a, b, c):
+            lines.append("      vertex %g %g %g" % p)
+        lines.append("    endloop")
+        lines.append("  endfacet")
+    lines.append("endsolid " + name)
+    write(path, "\n".join(lines) + "\n")
+write_stl("wedge", "wedge.stl")
 
 # A post as CAD tools export it, Z-up: a 0.2 x 0.3 footprint in x and y at z = 0, 1 tall along
 # +z, its top cut on a slant (so the up axis cannot be mistaken for down); 12 triangles.
@@ -183,18 +186,7 @@ P = [(0, 0, 0), (0.2, 0, 0), (0.2, 0.3, 0), (0, 0.3, 0),
 for a, b, c, d in [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6),
                    (3, 0, 4, 7)]:
     tri(P[a], P[b], P[c]); tri(P[a], P[c], P[d])
-lines = ["solid post"]
-for a, b, c in facets:
-    n = cross(sub(b, a), sub(c, a))
-    l = sum(x * x for x in n) ** 0.5
-    lines.append("  facet normal %g %g %g" % tuple(x / l for x in n))
-    lines.append("    outer loop")
-    for p in (a, b, c):
-        lines.append("      vertex %g %g %g" % p)
-    lines.append("    endloop")
-    lines.append("  endfacet")
-lines.append("endsolid post")
-write("post_z_up.stl", "\n".join(lines) + "\n")
+write_stl("post", "post_z_up.stl")
 
 # Broken: a Collada file cut short (malformed XML), and a PLY face naming a vertex that is
 # not there.
