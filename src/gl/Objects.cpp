@@ -2,12 +2,13 @@
 
 #include <algorithm>
 
+#include "gl/Caps.h"
 #include "gnomon/Error.h"
 
 namespace gnomon::gl {
 
 void setLabel(GLenum identifier, GLuint name, const std::string& label) {
-    if (!label.empty() && epoxy_has_gl_extension("GL_KHR_debug")) {
+    if (!label.empty() && activeCaps().debugLabels) {
         glObjectLabel(identifier, name, GLsizei(label.size()), label.c_str());
     }
 }

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "gl/Caps.h"
 #include "gnomon/Error.h"
 #include "scene/MeshTopology.h"
 #include "scene/SceneUtil.h"
@@ -298,8 +299,7 @@ std::string objectRecordsOverflow(std::size_t objects, std::size_t maxTexels) {
 
 // A buffer texture holds at most GL_MAX_TEXTURE_BUFFER_SIZE texels (65 536 at least).
 void GpuScene::checkObjectTexels(std::size_t objects) {
-    GLint most = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+    const int most = gl::activeCaps().maxTextureBufferSize;
     const std::string overflow = objectRecordsOverflow(objects, std::size_t(std::max(most, 0)));
     if (!overflow.empty()) throw Error(ErrorKind::Gl, overflow);
 }

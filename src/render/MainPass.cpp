@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "gl/Caps.h"
 #include "gl/Program.h"
 #include "render/MainPassVariants.h"
 #include "render/TiledLights.h"
@@ -35,9 +36,8 @@ glm::ivec4 unrolledCounts(glm::ivec4 ends, int first, bool shadows) {
 }  // namespace
 
 MainPass::MainPass() {
-    GLint blockBytes = 0;
-    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &blockBytes);
-    mMaxLights = std::min(256, int(blockBytes / GLint(sizeof(GpuLight))));
+    const int blockBytes = gl::activeCaps().maxUniformBlockSize;
+    mMaxLights = std::min(256, blockBytes / int(sizeof(GpuLight)));
     mLights = gl::Buffer("lights", std::size_t(mMaxLights) * sizeof(GpuLight), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
     mOrder = gl::Buffer("light order", std::size_t(kLightOrderCapacity) * sizeof(std::int32_t),

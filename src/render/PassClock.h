@@ -7,6 +7,7 @@
 #include <chrono>
 #include <string>
 
+#include "gl/Caps.h"
 #include "gl/Objects.h"
 #include "gnomon/Renderer.h"
 
@@ -15,7 +16,7 @@ namespace gnomon::render {
 class PassClock {
 public:
     PassClock() {
-        if (epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
+        if (gl::activeCaps().pipelineStatistics) {
             mQuery = gl::Query("pass fragments", GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         }
     }

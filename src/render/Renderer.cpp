@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 
+#include "gl/Caps.h"
 #include "gl/Context.h"
 #include "gnomon/Error.h"
 #include "render/DebugPass.h"
@@ -46,6 +47,7 @@ struct Renderer::Impl {
     // First: destroyed last, after every GL object below. Empty when drawing in the caller's
     // context (ContextOptions::currentContext).
     std::optional<gl::HeadlessContext> context;
+    gl::ContextCaps caps;  // read next, before the passes that follow them
     render::GpuScene scene;
     render::ShadowPass shadowPass;
     render::MomentPass momentPass;                // filterable maps' moments (evsm2, evsm4, msm)
@@ -74,7 +76,8 @@ struct Renderer::Impl {
     std::unique_ptr<render::PassClock> clock;  // made when timing is first switched on
 
     explicit Impl(const ContextOptions& o) : context(openContext(o)) {
-        glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF taps may cross cube faces
+        // PCF taps may cross cube faces (ES filters across faces always).
+        if (caps.get().seamlessCubes) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     }
 
     // Runs before any other member is made: they create GL objects.
@@ -95,6 +98,7 @@ struct Renderer::Impl {
 
     void makeCurrent() {
         if (context) context->makeCurrent();
+        caps.activate();
     }
 
     void ensureTarget(int width, int height, OutputEncoding encoding) {

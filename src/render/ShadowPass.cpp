@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <span>
 
+#include "gl/Caps.h"
 #include "gl/Program.h"
 #include "gnomon/Error.h"
 #include "render/DepthRuns.h"
@@ -15,7 +16,7 @@
 namespace gnomon::render {
 
 ShadowPass::ShadowPass(bool layeredCubes)
-    : mLayered(layeredCubes && epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array")) {
+    : mLayered(layeredCubes && gl::activeCaps().layeredFromVertex) {
     program(kPlain, false);  // the one every shadow needs: shader errors show up front
 }
 

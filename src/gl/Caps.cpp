@@ -1,0 +1,55 @@
+#include "gl/Caps.h"
+
+#include <epoxy/gl.h>
+
+namespace gnomon::gl {
+namespace {
+
+int integer(GLenum name) {
+    GLint value = 0;
+    glGetIntegerv(name, &value);
+    return int(value);
+}
+
+bool has(const char* extension) {
+    return epoxy_has_gl_extension(extension);
+}
+
+const Caps kGl45{};
+thread_local const Caps* tActive = nullptr;
+
+}  // namespace
+
+Caps queryCaps() {
+    Caps c;
+    c.api = epoxy_is_desktop_gl() ? Api::Gl45 : Api::Gles3;
+    c.maxUniformBlockSize = integer(GL_MAX_UNIFORM_BLOCK_SIZE);
+    c.maxTextureSize = integer(GL_MAX_TEXTURE_SIZE);
+    c.maxArrayLayers = integer(GL_MAX_ARRAY_TEXTURE_LAYERS);
+    c.debugLabels = has("GL_KHR_debug");
+    if (c.api == Api::Gl45) {
+        c.maxTextureBufferSize = integer(GL_MAX_TEXTURE_BUFFER_SIZE);
+        c.layeredFromVertex = has("GL_ARB_shader_viewport_layer_array");
+        c.pipelineStatistics = has("GL_ARB_pipeline_statistics_query");
+        return c;
+    }
+    // WebGL2's set: what ES 3.1/3.2 add beyond 3.0 is not used, so that Mesa's ES context
+    // runs exactly the browser's path.
+    c.directStateAccess = c.cubeMapArrays = c.textureBuffers = c.textureViews = false;
+    c.textureGather = c.imageStore = c.drawIndirect = c.clearTexture = false;
+    c.textureReadback = c.srgbWriteControl = c.norm16 = c.seamlessCubes = false;
+    c.maxTextureBufferSize = 0;
+    c.depthClamp = has("GL_EXT_depth_clamp");
+    c.multiDraw = has("GL_ANGLE_multi_draw") || has("GL_WEBGL_multi_draw");
+    return c;
+}
+
+const Caps& activeCaps() {
+    return tActive ? *tActive : kGl45;
+}
+
+void activate(const Caps* caps) {
+    tActive = caps;
+}
+
+}  // namespace gnomon::gl
