@@ -6,6 +6,11 @@
 #include "gnomon/Error.h"
 
 namespace gnomon::gl {
+namespace {
+bool dsa() {
+    return activeCaps().directStateAccess;
+}
+}  // namespace
 
 void setLabel(GLenum identifier, GLuint name, const std::string& label) {
     if (!label.empty() && activeCaps().debugLabels) {
@@ -13,135 +18,132 @@ void setLabel(GLenum identifier, GLuint name, const std::string& label) {
     }
 }
 
-Buffer::Buffer(const std::string& label, std::size_t bytes, const void* data, GLbitfield flags) {
+Buffer::Buffer(const std::string& label, std::size_t bytes, const void* data, GLbitfield flags,
+               Use use) {
     GLuint n = 0;
-    glCreateBuffers(1, &n);
-    static_cast<Object&>(*this) = Object(n);
     mSize = bytes;
+    mEditTarget = use == Use::Indices ? GL_ELEMENT_ARRAY_BUFFER : GL_ARRAY_BUFFER;
     // Zero-size storage is an error in GL; keep one byte so empty scenes stay valid.
-    glNamedBufferStorage(n, GLsizeiptr(bytes > 0 ? bytes : 1), bytes > 0 ? data : nullptr, flags);
+    const GLsizeiptr stored = GLsizeiptr(bytes > 0 ? bytes : 1);
+    if (dsa()) {
+        glCreateBuffers(1, &n);
+        static_cast<Object&>(*this) = Object(n);
+        glNamedBufferStorage(n, stored, bytes > 0 ? data : nullptr, flags);
+    } else {
+        glGenBuffers(1, &n);
+        static_cast<Object&>(*this) = Object(n);
+        // An element buffer binds to the bound vertex array: bind none first.
+        if (use == Use::Indices) glBindVertexArray(0);
+        glBindBuffer(mEditTarget, n);
+        glBufferData(mEditTarget, stored, bytes > 0 ? data : nullptr,
+                     (flags & GL_DYNAMIC_STORAGE_BIT) ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW);
+    }
     setLabel(GL_BUFFER, n, label);
 }
 
 void Buffer::update(std::size_t offset, std::size_t bytes, const void* data) {
-    if (bytes > 0) glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
+    if (bytes == 0) return;
+    if (dsa()) {
+        glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
+        return;
+    }
+    if (mEditTarget == GL_ELEMENT_ARRAY_BUFFER) glBindVertexArray(0);
+    glBindBuffer(mEditTarget, id());
+    glBufferSubData(mEditTarget, GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
 VertexArray::VertexArray(const std::string& label) {
     GLuint n = 0;
-    glCreateVertexArrays(1, &n);
+    if (dsa()) {
+        glCreateVertexArrays(1, &n);
+    } else {
+        glGenVertexArrays(1, &n);
+        glBindVertexArray(n);  // ES makes the object at its first binding
+    }
     static_cast<Object&>(*this) = Object(n);
     setLabel(GL_VERTEX_ARRAY, n, label);
 }
 
-Texture Texture::array2D(const std::string& label, GLenum internalFormat, int width, int height,
-                         int layers) {
-    GLuint n = 0;
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &n);
-    glTextureStorage3D(n, 1, internalFormat, width, height, layers);
-    setLabel(GL_TEXTURE, n, label);
-    return Texture(n, internalFormat, width, height, layers);
-}
-
-bool Texture::allocated() const {
-    GLint immutable = GL_FALSE;
-    if (id() != 0) glGetTextureParameteriv(id(), GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
-    return immutable == GL_TRUE;
-}
-
-Texture Texture::cubeArray(const std::string& label, GLenum internalFormat, int size, int cubes) {
-    GLuint n = 0;
-    glCreateTextures(GL_TEXTURE_CUBE_MAP_ARRAY, 1, &n);
-    glTextureStorage3D(n, 1, internalFormat, size, size, 6 * cubes);
-    setLabel(GL_TEXTURE, n, label);
-    return Texture(n, internalFormat, size, size, 6 * cubes);
-}
-
-Texture Texture::layersView(const std::string& label, const Texture& source) {
-    GLuint n = 0;
-    glGenTextures(1, &n);  // a view needs a name that has no texture object yet
-    glTextureView(n, GL_TEXTURE_2D_ARRAY, source.id(), source.format(), 0, 1, 0,
-                  GLuint(source.layers()));
-    setLabel(GL_TEXTURE, n, label);
-    return Texture(n, source.format(), source.width(), source.height(), source.layers());
-}
-
-Texture Texture::bufferView(const std::string& label, const Buffer& buffer, GLenum format) {
-    GLuint n = 0;
-    glCreateTextures(GL_TEXTURE_BUFFER, 1, &n);
-    glTextureBuffer(n, format, buffer.id());
-    setLabel(GL_TEXTURE, n, label);
-    return Texture(n, format, 0, 0, 0);
-}
-
-Texture Texture::view2D(const std::string& label, const Texture& source, GLenum viewFormat) {
-    GLuint n = 0;
-    glGenTextures(1, &n);  // a view needs a name that has no texture object yet
-    glTextureView(n, GL_TEXTURE_2D, source.id(), viewFormat, 0, 1, 0, 1);
-    setLabel(GL_TEXTURE, n, label);
-    glTextureParameteri(n, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(n, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return Texture(n, viewFormat, source.width(), source.height(), 1);
-}
-
-Texture Texture::plain2D(const std::string& label, GLenum internalFormat, int width, int height) {
-    GLuint n = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &n);
-    glTextureStorage2D(n, 1, internalFormat, width, height);
-    setLabel(GL_TEXTURE, n, label);
-    return Texture(n, internalFormat, width, height, 1);
-}
-
-Texture Texture::image2D(const std::string& label, int width, int height, const void* rgba,
-                         GLint wrapS, GLint wrapT, bool nearest) {
-    int levels = 1;
-    while ((std::max(width, height) >> levels) > 0)
-        ++levels;
-    GLuint n = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &n);
-    Texture t(n, GL_SRGB8_ALPHA8, width, height, 1);  // owns n from here on
-    glTextureStorage2D(n, levels, GL_SRGB8_ALPHA8, width, height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(n, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glGenerateTextureMipmap(n);
-    glTextureParameteri(n, GL_TEXTURE_WRAP_S, wrapS);
-    glTextureParameteri(n, GL_TEXTURE_WRAP_T, wrapT);
-    glTextureParameteri(n, GL_TEXTURE_MIN_FILTER,
-                        nearest ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(n, GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
-    setLabel(GL_TEXTURE, n, label);
-    return t;
-}
-
-Texture Texture::display2D(const std::string& label, const Image& image) {
-    Image rgba(image.width, image.height, 4);
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            const std::uint8_t* in = image.at(x, y);
-            std::uint8_t* out = rgba.at(x, y);
-            for (int c = 0; c < 3; ++c)
-                out[c] = in[std::min(c, image.channels - 1)];
-            out[3] = image.channels == 4 ? in[3] : 255;
-        }
+void VertexArray::vertexBuffer(int binding, const Buffer& buffer, std::size_t offset, int stride) {
+    if (dsa()) {
+        glVertexArrayVertexBuffer(id(), GLuint(binding), buffer.id(), GLintptr(offset), stride);
+        return;
     }
-    GLuint n = 0;
-    glCreateTextures(GL_TEXTURE_2D, 1, &n);
-    Texture t(n, GL_RGBA8, image.width, image.height, 1);  // owns n from here on
-    glTextureStorage2D(n, 1, GL_RGBA8, image.width, image.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(n, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                        rgba.pixels.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureParameteri(n, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(n, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    setLabel(GL_TEXTURE, n, label);
-    return t;
+    mBindings[binding].buffer = buffer.id();
+    mBindings[binding].offset = offset;
+    mBindings[binding].stride = stride;
+    for (int a = 0; a < 8; ++a) {
+        if (mAttributes[a].used && mAttributes[a].binding == binding) specify(a);
+    }
+}
+
+void VertexArray::attribute(int index, int binding, int components, GLenum type,
+                            std::size_t offset) {
+    if (dsa()) {
+        glEnableVertexArrayAttrib(id(), GLuint(index));
+        glVertexArrayAttribFormat(id(), GLuint(index), components, type, GL_FALSE, GLuint(offset));
+        glVertexArrayAttribBinding(id(), GLuint(index), GLuint(binding));
+        return;
+    }
+    mAttributes[index] = {true, false, binding, components, type, offset};
+    specify(index);
+}
+
+void VertexArray::integerAttribute(int index, int binding, int components, GLenum type,
+                                   std::size_t offset) {
+    if (dsa()) {
+        glEnableVertexArrayAttrib(id(), GLuint(index));
+        glVertexArrayAttribIFormat(id(), GLuint(index), components, type, GLuint(offset));
+        glVertexArrayAttribBinding(id(), GLuint(index), GLuint(binding));
+        return;
+    }
+    mAttributes[index] = {true, true, binding, components, type, offset};
+    specify(index);
+}
+
+void VertexArray::divisor(int binding, int divisor) {
+    if (dsa()) {
+        glVertexArrayBindingDivisor(id(), GLuint(binding), GLuint(divisor));
+        return;
+    }
+    mBindings[binding].divisor = divisor;
+    for (int a = 0; a < 8; ++a) {
+        if (mAttributes[a].used && mAttributes[a].binding == binding) specify(a);
+    }
+}
+
+void VertexArray::elements(const Buffer& indices) {
+    if (dsa()) {
+        glVertexArrayElementBuffer(id(), indices.id());
+        return;
+    }
+    glBindVertexArray(id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices.id());
+}
+
+void VertexArray::specify(int index) {
+    const Attribute& a = mAttributes[index];
+    const Binding& b = mBindings[a.binding];
+    if (b.buffer == 0) return;  // specified when its buffer arrives
+    glBindVertexArray(id());
+    glBindBuffer(GL_ARRAY_BUFFER, b.buffer);
+    glEnableVertexAttribArray(GLuint(index));
+    const void* at = reinterpret_cast<const void*>(b.offset + a.offset);
+    if (a.integer) {
+        glVertexAttribIPointer(GLuint(index), a.components, a.type, b.stride, at);
+    } else {
+        glVertexAttribPointer(GLuint(index), a.components, a.type, GL_FALSE, b.stride, at);
+    }
+    glVertexAttribDivisor(GLuint(index), GLuint(b.divisor));
 }
 
 Sampler::Sampler(const std::string& label) {
     GLuint n = 0;
-    glCreateSamplers(1, &n);
+    if (dsa()) {
+        glCreateSamplers(1, &n);
+    } else {
+        glGenSamplers(1, &n);
+    }
     static_cast<Object&>(*this) = Object(n);
     setLabel(GL_SAMPLER, n, label);
 }
@@ -167,55 +169,26 @@ Sampler& Sampler::setBorder(float r, float g, float b, float a) {
     return *this;
 }
 
-Framebuffer::Framebuffer(const std::string& label) : mLabel(label) {
-    GLuint n = 0;
-    glCreateFramebuffers(1, &n);
-    static_cast<Object&>(*this) = Object(n);
-    setLabel(GL_FRAMEBUFFER, n, label);
-}
-
-std::string framebufferStatusText(GLenum status) {
-    switch (status) {
-        case GL_FRAMEBUFFER_COMPLETE:
-            return "complete";
-        case GL_FRAMEBUFFER_UNDEFINED:
-            return "undefined (no default framebuffer)";
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
-            return "incomplete attachment (an attached image is not renderable or has no size)";
-        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
-            return "missing attachment (nothing is attached)";
-        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
-            return "incomplete draw buffer (a draw buffer names an empty attachment)";
-        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
-            return "incomplete read buffer (the read buffer names an empty attachment)";
-        case GL_FRAMEBUFFER_UNSUPPORTED:
-            return "unsupported (this combination of formats is not supported by the driver)";
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
-            return "incomplete multisample (attachments differ in sample count)";
-        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
-            return "incomplete layer targets (layered and non-layered attachments mixed)";
-        default:
-            return "unknown status 0x" + [&] {
-                char buf[16];
-                std::snprintf(buf, sizeof buf, "%04X", status);
-                return std::string(buf);
-            }();
-    }
-}
-
-void Framebuffer::checkComplete() const {
-    const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        throw Error(ErrorKind::Gl, "framebuffer '" + mLabel +
-                                       "' is not complete: " + framebufferStatusText(status));
-    }
-}
-
 Query::Query(const std::string& label, GLenum target) {
     GLuint n = 0;
-    glCreateQueries(target, 1, &n);
+    if (dsa()) {
+        glCreateQueries(target, 1, &n);
+    } else {
+        glGenQueries(1, &n);  // made at its first glBeginQuery
+    }
     static_cast<Object&>(*this) = Object(n);
     if (n != 0) setLabel(GL_QUERY, n, label);  // 0: the driver refused the target
+}
+
+std::uint64_t Query::result() const {
+    if (dsa()) {
+        GLint64 value = 0;
+        glGetQueryObjecti64v(id(), GL_QUERY_RESULT, &value);
+        return std::uint64_t(value);
+    }
+    GLuint value = 0;  // ES 3.0 has 32-bit results only
+    glGetQueryObjectuiv(id(), GL_QUERY_RESULT, &value);
+    return value;
 }
 
 }  // namespace gnomon::gl

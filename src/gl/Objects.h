@@ -1,9 +1,12 @@
 // The GL object wrappers gnomon uses: buffers, vertex arrays, textures, samplers,
-// framebuffers (completeness reported in words), shaders/programs and queries.
-// All creation is DSA; every object gets a debug label so captures and KHR_debug read well.
+// framebuffers (completeness reported in words), shaders/programs and queries, made and
+// edited only here. On OpenGL 4.5 they use direct state access; on OpenGL ES 3.0 (WebGL2)
+// they bind to edit (activeCaps(), Caps.h), so callers must bind again before drawing, as
+// the passes do. Every object gets a debug label so captures and KHR_debug read well.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "gl/Object.h"
@@ -38,20 +41,50 @@ struct QueryDeleter {
 
 class Buffer : public Object<BufferDeleter> {
 public:
+    // WebGL fixes at a buffer's first binding whether it holds indices: say so up front.
+    enum class Use { Data, Indices };
     Buffer() = default;
     // Immutable storage of `bytes` (data may be null); flags as glNamedBufferStorage.
-    Buffer(const std::string& label, std::size_t bytes, const void* data, GLbitfield flags);
+    Buffer(const std::string& label, std::size_t bytes, const void* data, GLbitfield flags,
+           Use use = Use::Data);
     std::size_t size() const { return mSize; }
     void update(std::size_t offset, std::size_t bytes, const void* data);
+    // Where ES binds it to edit: GL_ELEMENT_ARRAY_BUFFER or GL_ARRAY_BUFFER.
+    GLenum editTarget() const { return mEditTarget; }
 
 private:
     std::size_t mSize = 0;
+    GLenum mEditTarget = GL_ARRAY_BUFFER;
 };
 
 class VertexArray : public Object<VertexArrayDeleter> {
 public:
     VertexArray() = default;
     explicit VertexArray(const std::string& label);
+    // The layout, as OpenGL 4.5 separates it: buffers at binding points, attributes reading
+    // from a binding point. ES 3.0 has no binding points: the wrapper keeps both and
+    // specifies each attribute again whenever its binding or format changes.
+    void vertexBuffer(int binding, const Buffer& buffer, std::size_t offset, int stride);
+    void attribute(int index, int binding, int components, GLenum type, std::size_t offset);
+    void integerAttribute(int index, int binding, int components, GLenum type, std::size_t offset);
+    void divisor(int binding, int divisor);
+    void elements(const Buffer& indices);
+
+private:
+    struct Binding {
+        GLuint buffer = 0;
+        std::size_t offset = 0;
+        int stride = 0, divisor = 0;
+    };
+    struct Attribute {
+        bool used = false, integer = false;
+        int binding = 0, components = 0;
+        GLenum type = 0;
+        std::size_t offset = 0;
+    };
+    void specify(int index);  // ES: one attribute from its binding and format
+    Binding mBindings[4];
+    Attribute mAttributes[8];
 };
 
 class Texture : public Object<TextureDeleter> {
@@ -83,17 +116,37 @@ public:
     // False when the driver refused the storage (out of memory, or beyond its limits): the
     // object exists but has no images. Checked by the texture itself, not the error queue.
     bool allocated() const;
+    void setParameter(GLenum parameter, GLint value);
+    // Depth comparison (LEQUAL) for shadow samplers, clamped to the edge.
+    void setDepthCompare();
+    // Texels of one layer's rectangle of level 0 into `out` (`bytes` long), rows from the
+    // bottom. OpenGL 4.5 only (ES reads through a framebuffer: Framebuffer::readColour).
+    void read(int x, int y, int layer, int width, int height, GLenum format, GLenum type,
+              std::size_t bytes, void* out) const;
+    // Every texel of level 0 (all layers) set to `value` given as `format`/GL_FLOAT.
+    void clear(GLenum format, const float* value);
+    // The 6 faces of cube `cube` of a cube-map array set to `depth`.
+    void clearCubeDepth(int cube, float depth);
+    // GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP_ARRAY or GL_TEXTURE_BUFFER;
+    // cube-map arrays are GL_TEXTURE_2D_ARRAY of 6 layers per cube where the API lacks them.
+    GLenum target() const { return mTarget; }
     int width() const { return mWidth; }
     int height() const { return mHeight; }
     int layers() const { return mLayers; }  // array layers; cube arrays: 6 per cube
     GLenum format() const { return mFormat; }
 
 private:
-    Texture(GLuint name, GLenum format, int w, int h, int layers)
-        : Object(name), mWidth(w), mHeight(h), mLayers(layers), mFormat(format) {}
+    Texture(GLuint name, GLenum target, GLenum format, int w, int h, int layers)
+        : Object(name), mWidth(w), mHeight(h), mLayers(layers), mFormat(format), mTarget(target) {}
+    static GLuint create(GLenum target);
     int mWidth = 0, mHeight = 0, mLayers = 0;
-    GLenum mFormat = 0;
+    GLenum mFormat = 0, mTarget = 0;
 };
+
+// Texture unit `unit` samples `texture` (an empty one unbinds what the unit holds).
+void bindTexture(int unit, const Texture& texture);
+// A 2D texture known by name only (a material's).
+void bindTexture2D(int unit, GLuint texture);
 
 class Sampler : public Object<SamplerDeleter> {
 public:
@@ -113,6 +166,18 @@ public:
     explicit Framebuffer(const std::string& label);
     // Throws gnomon::Error naming the completeness status in words.
     void checkComplete() const;
+    // `texture`'s level 0 at `attachment` (GL_COLOR_ATTACHMENT0, GL_DEPTH_ATTACHMENT): a 2D
+    // texture, or every layer of an array (layered rendering, OpenGL 4.5 only).
+    void attach(GLenum attachment, const Texture& texture);
+    void attachLayer(GLenum attachment, const Texture& texture, int layer);
+    // No colour buffer drawn or read: depth only.
+    void depthOnly();
+    // Draws into colour attachment 0 only.
+    void drawColour0();
+    void clearDepth(float depth);
+    void clearColour(const float rgba[4]);
+    // The depth of `source`'s rectangle (0, 0, width, height) copied in.
+    void blitDepthFrom(const Framebuffer& source, int width, int height);
 
 private:
     std::string mLabel;
@@ -134,6 +199,8 @@ public:
     // Empty (false) when the driver refuses `target` although it advertises it (llvmpipe in a
     // GLX context does so for pipeline statistics).
     Query(const std::string& label, GLenum target);
+    // The result of the query last ended, waiting for it.
+    std::uint64_t result() const;
 };
 
 }  // namespace gnomon::gl

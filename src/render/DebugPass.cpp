@@ -74,15 +74,18 @@ bool DebugPass::drawMaps(const ShadowPass& maps, const std::vector<ShadowedLight
     const float x0 = 0.5f * (float(width) - panel * float(columns));
     const float y0 = 0.5f * (float(height) - panel * float(rows));
 
-    GLuint texture = maps.maps().id();
+    const gl::Texture* texture = &maps.maps();
     DepthFormat format = maps.mapFormat();
     if (cube) {
-        if (!mCubeView || mCubeViewSource != maps.cubes().id() ||
-            mCubeView.layers() != maps.cubes().layers()) {
-            mCubeView = gl::Texture::layersView("point shadow cubes as layers", maps.cubes());
-            mCubeViewSource = maps.cubes().id();
+        texture = &maps.cubes();  // already a 2D array where there are no cube-map arrays
+        if (maps.cubes().target() != GL_TEXTURE_2D_ARRAY) {
+            if (!mCubeView || mCubeViewSource != maps.cubes().id() ||
+                mCubeView.layers() != maps.cubes().layers()) {
+                mCubeView = gl::Texture::layersView("point shadow cubes as layers", maps.cubes());
+                mCubeViewSource = maps.cubes().id();
+            }
+            texture = &mCubeView;
         }
-        texture = mCubeView.id();
         format = DepthFormat::Depth32F;  // cubes are always native depth
     }
     if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("debug maps sampler");
@@ -92,7 +95,7 @@ bool DebugPass::drawMaps(const ShadowPass& maps, const std::vector<ShadowedLight
     glUniform3f(1, x0, y0, panel);
     glUniform1i(2, count);
     glUniform4fv(3, count, panels);
-    glBindTextureUnit(0, texture);
+    gl::bindTexture(0, *texture);
     glBindSampler(0, mRawSampler.id());
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(mEmpty.id());
@@ -140,13 +143,9 @@ void DebugPass::drawFrusta(const std::vector<ShadowedLight>& shadowed,
     if (!mLineBuffer || mLineBuffer.size() < bytes) {
         mLineBuffer = gl::Buffer("debug lines", bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
         mLines = gl::VertexArray("debug lines");
-        glVertexArrayVertexBuffer(mLines.id(), 0, mLineBuffer.id(), 0, 2 * sizeof(glm::vec3));
-        for (GLuint a = 0; a < 2; ++a) {
-            glEnableVertexArrayAttrib(mLines.id(), a);
-            glVertexArrayAttribFormat(mLines.id(), a, 3, GL_FLOAT, GL_FALSE,
-                                      a * GLuint(sizeof(glm::vec3)));
-            glVertexArrayAttribBinding(mLines.id(), a, 0);
-        }
+        mLines.vertexBuffer(0, mLineBuffer, 0, 2 * sizeof(glm::vec3));
+        for (int a = 0; a < 2; ++a)
+            mLines.attribute(a, 0, 3, GL_FLOAT, std::size_t(a) * sizeof(glm::vec3));
     }
     mLineBuffer.update(0, bytes, mLineData.data());
     if (!mLinesProgram) {

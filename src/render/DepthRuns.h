@@ -74,7 +74,7 @@ void drawDepthRuns(const GpuScene& scene, std::span<const std::uint32_t> indices
             }
             if (alpha && scene.textureOf(item) != texture) {
                 texture = scene.textureOf(item);
-                glBindTextureUnit(4, texture);
+                gl::bindTexture2D(4, texture);
             }
             ++runLength;
         }

@@ -108,18 +108,15 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     }
     mVertices =
         gl::Buffer("scene vertices", vertices.size() * sizeof(GpuVertex), vertices.data(), 0);
-    mIndices =
-        gl::Buffer("scene indices", indices.size() * sizeof(std::uint32_t), indices.data(), 0);
+    mIndices = gl::Buffer("scene indices", indices.size() * sizeof(std::uint32_t), indices.data(),
+                          0, gl::Buffer::Use::Indices);
     mVao = gl::VertexArray("scene");
-    glVertexArrayVertexBuffer(mVao.id(), 0, mVertices.id(), 0, sizeof(GpuVertex));
-    glVertexArrayElementBuffer(mVao.id(), mIndices.id());
-    const GLuint offsets[4] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
-                               offsetof(GpuVertex, colour), offsetof(GpuVertex, uv)};
-    for (GLuint a = 0; a < 4; ++a) {
-        glEnableVertexArrayAttrib(mVao.id(), a);
-        glVertexArrayAttribFormat(mVao.id(), a, a == 3 ? 2 : 3, GL_FLOAT, GL_FALSE, offsets[a]);
-        glVertexArrayAttribBinding(mVao.id(), a, 0);
-    }
+    mVao.vertexBuffer(0, mVertices, 0, sizeof(GpuVertex));
+    mVao.elements(mIndices);
+    const std::size_t offsets[4] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
+                                    offsetof(GpuVertex, colour), offsetof(GpuVertex, uv)};
+    for (int a = 0; a < 4; ++a)
+        mVao.attribute(a, 0, a == 3 ? 2 : 3, GL_FLOAT, offsets[a]);
     mMeshBounds = meshBounds(scene);
     mObjectData.clear();        // forces the object upload below
     mObjectIds = gl::Buffer();  // and the object indices' binding to the new vertex array
@@ -315,11 +312,9 @@ bool GpuScene::uploadDrawCommands() {
         for (std::size_t i = 0; i < ids.size(); ++i)
             ids[i] = GLuint(i);
         mObjectIds = gl::Buffer("object indices", ids.size() * sizeof(GLuint), ids.data(), 0);
-        glVertexArrayVertexBuffer(mVao.id(), 1, mObjectIds.id(), 0, sizeof(GLuint));
-        glEnableVertexArrayAttrib(mVao.id(), 4);
-        glVertexArrayAttribIFormat(mVao.id(), 4, 1, GL_UNSIGNED_INT, 0);
-        glVertexArrayAttribBinding(mVao.id(), 4, 1);
-        glVertexArrayBindingDivisor(mVao.id(), 1, 1);
+        mVao.vertexBuffer(1, mObjectIds, 0, sizeof(GLuint));
+        mVao.integerAttribute(4, 1, 1, GL_UNSIGNED_INT, 0);
+        mVao.divisor(1, 1);
         mDivisor = 1;
     }
     // Draw commands in item order, for 1 to 6 instances (a cube draws the faces the view
@@ -364,13 +359,13 @@ bool GpuScene::uploadDrawCommands() {
 // (docs/results/performance.md, "Scene size and per-frame overhead").
 void GpuScene::bind() const {
     glBindVertexArray(mVao.id());
-    glBindTextureUnit(kObjectTextureUnit, mObjectTexels.id());
+    gl::bindTexture(kObjectTextureUnit, mObjectTexels);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
 }
 
 void GpuScene::setInstanceDivisor(GLsizei instances) const {
     if (instances == mDivisor) return;
-    glVertexArrayBindingDivisor(mVao.id(), 1, GLuint(instances));  // every copy: one object
+    mVao.divisor(1, int(instances));  // every copy: one object
     mDivisor = instances;
 }
 

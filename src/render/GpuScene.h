@@ -175,7 +175,7 @@ private:
     gl::Buffer mCommands;
     std::vector<DrawCommand> mCommandData, mCommandScratch;
     mutable GLsizei mDivisor = 1;
-    gl::VertexArray mVao;
+    mutable gl::VertexArray mVao;  // its instance divisor changes per draw (setInstanceDivisor)
     std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
     // Each object's castsShadows as last synced: not in its record, yet a change must redraw
     // the maps and refit the lights (a new revision).

@@ -5,6 +5,7 @@
 
 #include "gl/Caps.h"
 #include "gl/Program.h"
+#include "gl/State.h"
 #include "render/MainPassVariants.h"
 #include "render/TiledLights.h"
 #include "render/TransmittancePass.h"
@@ -92,8 +93,8 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
     if (!in.shadowCubes && !mDummyCubes) {
         mDummyCubes = gl::Texture::cubeArray("no shadow cubes", GL_DEPTH_COMPONENT32F, 1, 1);
     }
-    glBindTextureUnit(0, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
-    glBindTextureUnit(1, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
+    gl::bindTexture(0, in.shadowMaps ? *in.shadowMaps : mDummyMaps);
+    gl::bindTexture(1, in.shadowCubes ? *in.shadowCubes : mDummyCubes);
     glBindSampler(0, mMapSampler.id());
     glBindSampler(1, mCubeSampler.id());
     // Stored depths without comparison: PCSS's blocker search, and the receiver plane's
@@ -101,8 +102,8 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
     const bool rawDepths = so.filter == ShadowFilter::Pcss || (so.receiverPlane && !hand);
     if (rawDepths) {
         if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
-        glBindTextureUnit(2, in.shadowMaps ? in.shadowMaps->id() : mDummyMaps.id());
-        glBindTextureUnit(3, in.shadowCubes ? in.shadowCubes->id() : mDummyCubes.id());
+        gl::bindTexture(2, in.shadowMaps ? *in.shadowMaps : mDummyMaps);
+        gl::bindTexture(3, in.shadowCubes ? *in.shadowCubes : mDummyCubes);
         glBindSampler(2, mRawSampler.id());
         glBindSampler(3, mRawSampler.id());
     }
@@ -111,22 +112,22 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         if (!mMomentSampler) {
             mMomentSampler = gl::Sampler::clamped("shadow moments sampler", GL_LINEAR);
         }
-        glBindTextureUnit(6, in.shadowMoments->id());
+        gl::bindTexture(6, *in.shadowMoments);
         glBindSampler(6, mMomentSampler.id());
     }
     // Coloured shadows' transmittance: units 7 (2D maps, LINEAR) and 8 (cubes, NEAREST).
     if (in.transmittance) {
         if (!mTintSampler) mTintSampler = gl::Sampler::clamped("transmittance sampler", GL_LINEAR);
         if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
-        glBindTextureUnit(7, in.transmittance->maps() ? in.transmittance->maps().id() : 0);
-        glBindTextureUnit(8, in.transmittance->cubes() ? in.transmittance->cubes().id() : 0);
+        gl::bindTexture(7, in.transmittance->maps());  // empty ones unbind the unit
+        gl::bindTexture(8, in.transmittance->cubes());
         glBindSampler(7, mTintSampler.id());
         glBindSampler(8, mRawSampler.id());
     }
     // The view's depth for contact shadows: unit 5, read raw.
     if (in.viewDepth) {
         if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("stored shadow depth sampler");
-        glBindTextureUnit(5, in.viewDepth->id());
+        gl::bindTexture(5, *in.viewDepth);
         glBindSampler(5, mRawSampler.id());
     }
     return rawDepths;
@@ -192,7 +193,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
         }
         if (material && scene.textureOf(item) != texture) {
             texture = scene.textureOf(item);
-            glBindTextureUnit(4, texture);
+            gl::bindTexture2D(4, texture);
         }
     };
     auto setCulling = [&](bool on) {
@@ -303,11 +304,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     if (visibility) {
         // The surfaces that won the depth test, again: each light's visibility per pixel,
         // untiled (the score reads every light's visibility everywhere).
-        glBindImageTexture(0, visibility->visibility().id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                           GL_RG32F);
-        glBindImageTexture(2, visibility->objects().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+        gl::bindImage(0, visibility->visibility(), GL_RG32F);
+        gl::bindImage(2, visibility->objects(), GL_R32F);
         const gl::Texture* tint = in.transmittance ? visibility->tint() : nullptr;
-        if (tint) glBindImageTexture(1, tint->id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        if (tint) gl::bindImage(1, *tint, GL_RGBA32F);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -315,10 +315,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
-        glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-        glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG32F);
-        glBindImageTexture(2, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-        if (tint) glBindImageTexture(1, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        gl::imageStoresDone();
+        gl::unbindImage(0, GL_RG32F);
+        gl::unbindImage(2, GL_R32F);
+        if (tint) gl::unbindImage(1, GL_RGBA32F);
     }
     // Between passes depth writes stay on: clears obey the mask (a pass that clears before
     // it sets its state would keep the last frame's depth).

@@ -43,8 +43,8 @@ void MomentPass::allocate(int size, int layers) {
     if (!mMoments.allocated()) refused(size, layers);
     for (int layer = 0; layer < layers; ++layer) {
         gl::Framebuffer fb("shadow moments layer " + std::to_string(layer));
-        glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, mMoments.id(), 0, layer);
-        glNamedFramebufferDrawBuffer(fb.id(), GL_COLOR_ATTACHMENT0);
+        fb.attachLayer(GL_COLOR_ATTACHMENT0, mMoments, layer);
+        fb.drawColour0();
         fb.checkComplete();
         mLayerTargets.push_back(std::move(fb));
     }
@@ -56,8 +56,8 @@ void MomentPass::allocateRows(int size) {
     mRows = gl::Texture::plain2D("shadow moments (rows)", GL_RGBA32F, size, size);
     if (!mRows.allocated()) refused(size, 1);
     mRowTarget = gl::Framebuffer("shadow moments (rows)");
-    glNamedFramebufferTexture(mRowTarget.id(), GL_COLOR_ATTACHMENT0, mRows.id(), 0);
-    glNamedFramebufferDrawBuffer(mRowTarget.id(), GL_COLOR_ATTACHMENT0);
+    mRowTarget.attach(GL_COLOR_ATTACHMENT0, mRows);
+    mRowTarget.drawColour0();
     mRowTarget.checkComplete();
 }
 
@@ -71,7 +71,7 @@ int MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int rad
     glUseProgram(program(mFilter, true, radius).id());
     glUniform4iv(0, 1, &square[0]);
     glUniform3f(2, light.frame.near, light.frame.far, light.frame.orthographic ? 0.0f : 1.0f);
-    glBindTextureUnit(0, pass.maps().id());
+    gl::bindTexture(0, pass.maps());
     glBindSampler(0, mStored.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     if (radius == 0) return 1;
@@ -79,7 +79,7 @@ int MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int rad
     glBindFramebuffer(GL_FRAMEBUFFER, layerTarget);
     glUseProgram(program(mFilter, false, radius).id());
     glUniform4iv(0, 1, &square[0]);
-    glBindTextureUnit(0, mRows.id());
+    gl::bindTexture(0, mRows);
     glBindSampler(0, mStored.id());  // NEAREST: the shader reads texel centres
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return 2;

@@ -33,9 +33,7 @@ public:
                 .count();
         if (mQuery) {
             glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-            GLint64 fragments = 0;
-            glGetQueryObjecti64v(mQuery.id(), GL_QUERY_RESULT, &fragments);
-            t.fragments = fragments;
+            t.fragments = std::int64_t(mQuery.result());
         }
         t.name = std::move(name);
         t.light = light;

@@ -11,6 +11,7 @@
 
 #include "gl/Caps.h"
 #include "gl/Context.h"
+#include "gl/State.h"
 #include "gnomon/Error.h"
 #include "render/DebugPass.h"
 #include "render/GpuScene.h"
@@ -112,8 +113,8 @@ struct Renderer::Impl {
         // The view depth pass's format, so its depth can be copied in (bindClearedTarget).
         depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT32F, width, height);
         target = gl::Framebuffer("output");
-        glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, colour.id(), 0);
-        glNamedFramebufferTexture(target.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+        target.attach(GL_COLOR_ATTACHMENT0, colour);
+        target.attach(GL_DEPTH_ATTACHMENT, depth);
         target.checkComplete();
     }
 
@@ -124,13 +125,12 @@ struct Renderer::Impl {
         glViewport(0, 0, width, height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         const float far = 1.0f;
-        glClearNamedFramebufferfv(target.id(), GL_COLOR, 0, black);
+        target.clearColour(black);
         glDepthMask(GL_TRUE);  // clears and blits obey the mask
         if (withViewDepth) {
-            glBlitNamedFramebuffer(viewDepth.target().id(), target.id(), 0, 0, width, height, 0, 0,
-                                   width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+            target.blitDepthFrom(viewDepth.target(), width, height);
         } else {
-            glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &far);
+            target.clearDepth(far);
         }
     }
 
@@ -316,14 +316,14 @@ struct Renderer::Impl {
             }
             // sRGB output: the target is SRGB8_ALPHA8, so writes (and blending) encode.
             const bool srgb = options.shading.output == OutputEncoding::Srgb;
-            if (srgb) glEnable(GL_FRAMEBUFFER_SRGB);
+            if (srgb) gl::setSrgbWrites(true);
             mainPass.render(scene, in, options, scored ? &visibilityTarget : nullptr);
             lastMain = in;
             lastMainOptions = options;
             if (options.debugView == DebugView::LightFrusta) {
                 debugPass.drawFrusta(shadowed, in.clipFromView * in.viewFromWorld);
             }
-            if (srgb) glDisable(GL_FRAMEBUFFER_SRGB);
+            if (srgb) gl::setSrgbWrites(false);
         }
     }
 
@@ -331,16 +331,16 @@ struct Renderer::Impl {
         makeCurrent();
         if (!panelTarget || panelColour.width() != width || panelColour.height() != height) {
             panelColour = gl::Texture::plain2D("shadow map panel", GL_RGBA8, width, height);
-            glTextureParameteri(panelColour.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTextureParameteri(panelColour.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            panelColour.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            panelColour.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
             panelTarget = gl::Framebuffer("shadow map panel");
-            glNamedFramebufferTexture(panelTarget.id(), GL_COLOR_ATTACHMENT0, panelColour.id(), 0);
+            panelTarget.attach(GL_COLOR_ATTACHMENT0, panelColour);
             panelTarget.checkComplete();
         }
         glBindFramebuffer(GL_FRAMEBUFFER, panelTarget.id());
         glViewport(0, 0, width, height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-        glClearNamedFramebufferfv(panelTarget.id(), GL_COLOR, 0, black);
+        panelTarget.clearColour(black);
         if (!debugPass.drawMaps(shadowPass, plan.shadowed(), light, width, height)) return {};
         return {panelColour.id(), width, height};
     }

@@ -8,6 +8,7 @@
 
 #include "gl/Caps.h"
 #include "gl/Program.h"
+#include "gl/State.h"
 #include "gnomon/Error.h"
 #include "render/DepthRuns.h"
 #include "render/PassClock.h"
@@ -45,17 +46,9 @@ const gl::Program& ShadowPass::program(int variant, bool alphaTested, bool opaqu
 }
 
 namespace {
-void setCompare(GLuint texture) {
-    glTextureParameteri(texture, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTextureParameteri(texture, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-}
-
 gl::Framebuffer depthOnlyFramebuffer(const std::string& label) {
     gl::Framebuffer fb(label);
-    glNamedFramebufferDrawBuffer(fb.id(), GL_NONE);
-    glNamedFramebufferReadBuffer(fb.id(), GL_NONE);
+    fb.depthOnly();
     return fb;
 }
 }  // namespace
@@ -105,7 +98,7 @@ void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
                                             size, layers);
     } else {
         mMaps = gl::Texture::array2D("shadow maps", nativeFormat(format), size, size, layers);
-        setCompare(mMaps.id());
+        mMaps.setDepthCompare();
     }
     if (!mMaps.allocated() || (colour && !mColourDepth.allocated())) {
         const std::size_t perTexel = colour ? 8 : texelBytes(nativeFormat(format));
@@ -117,12 +110,11 @@ void ShadowPass::allocate2D(int size, int layers, DepthFormat format) {
         const std::string label = "shadow map layer " + std::to_string(layer);
         gl::Framebuffer fb = colour ? gl::Framebuffer(label) : depthOnlyFramebuffer(label);
         if (colour) {
-            glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, mMaps.id(), 0, layer);
-            glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mColourDepth.id(), 0,
-                                           layer);
-            glNamedFramebufferDrawBuffer(fb.id(), GL_COLOR_ATTACHMENT0);
+            fb.attachLayer(GL_COLOR_ATTACHMENT0, mMaps, layer);
+            fb.attachLayer(GL_DEPTH_ATTACHMENT, mColourDepth, layer);
+            fb.drawColour0();
         } else {
-            glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mMaps.id(), 0, layer);
+            fb.attachLayer(GL_DEPTH_ATTACHMENT, mMaps, layer);
         }
         fb.checkComplete();
         mFramebuffers.push_back(std::move(fb));
@@ -143,16 +135,16 @@ void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
                 std::size_t(size) * std::size_t(size) * 6u * std::size_t(cubes) *
                     texelBytes(nativeFormat(format)));
     }
-    setCompare(mCubes.id());
+    mCubes.setDepthCompare();
     mCubeFaceFramebuffers.clear();
     if (mLayered) {
         mCubeFramebuffer = depthOnlyFramebuffer("point shadow cubes (layered)");
-        glNamedFramebufferTexture(mCubeFramebuffer.id(), GL_DEPTH_ATTACHMENT, mCubes.id(), 0);
+        mCubeFramebuffer.attach(GL_DEPTH_ATTACHMENT, mCubes);
         mCubeFramebuffer.checkComplete();
     } else {
         for (int face = 0; face < 6 * cubes; ++face) {
             gl::Framebuffer fb = depthOnlyFramebuffer("point shadow face " + std::to_string(face));
-            glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, mCubes.id(), 0, face);
+            fb.attachLayer(GL_DEPTH_ATTACHMENT, mCubes, face);
             fb.checkComplete();
             mCubeFaceFramebuffers.push_back(std::move(fb));
         }
@@ -181,7 +173,7 @@ void ShadowPass::setDepthState(const ShadowOptions& options, bool depthClamp) co
     if (options.cull != CullMode::None) {
         glCullFace(options.cull == CullMode::Front ? GL_FRONT : GL_BACK);
     }
-    depthClamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
+    gl::setDepthClamp(depthClamp);
 }
 
 template <typename SetUniforms>
@@ -220,14 +212,14 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
     if (!mBareDepth || mBareDepth.width() != size) {
         mBareDepth = gl::Texture::plain2D("bare depth pass", GL_DEPTH_COMPONENT32F, size, size);
         mBareFramebuffer = depthOnlyFramebuffer("bare depth pass");
-        glNamedFramebufferTexture(mBareFramebuffer.id(), GL_DEPTH_ATTACHMENT, mBareDepth.id(), 0);
+        mBareFramebuffer.attach(GL_DEPTH_ATTACHMENT, mBareDepth);
         mBareFramebuffer.checkComplete();
     }
     glFinish();
     const auto start = std::chrono::steady_clock::now();
     glBindFramebuffer(GL_FRAMEBUFFER, mBareFramebuffer.id());
     const float one = 1.0f;
-    glClearNamedFramebufferfv(mBareFramebuffer.id(), GL_DEPTH, 0, &one);
+    mBareFramebuffer.clearDepth(one);
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -235,7 +227,7 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
     glEnable(GL_CULL_FACE);  // the cheapest state: back faces culled, no offsets, no clamp
     glCullFace(GL_BACK);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_DEPTH_CLAMP);
+    gl::setDepthClamp(false);
     glUseProgram(program(kPlain, false).id());
     glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
     scene.bind();
@@ -299,26 +291,25 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
                             : format == DepthFormat::R8             ? kColour
                             : format == DepthFormat::Rgba8Packed256 ? kColour + 1
                                                                     : kColour + 2;
-        const GLuint fb = mFramebuffers[size_t(light.layer)].id();
-        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        gl::Framebuffer& fb = mFramebuffers[size_t(light.layer)];
+        glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
         // Clear this map's square only (clears ignore the viewport but not the scissor):
         // the other maps of the layer stay. Lookups never leave the square, so no stale
         // depth is read. Encoded depth clears to all ones, which every packing decodes as
         // >= 1 (far).
         glEnable(GL_SCISSOR_TEST);
         glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
-        glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &one);
+        fb.clearDepth(one);
         if (colour) {
             const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-            glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
+            fb.clearColour(white);
         }
         glDisable(GL_SCISSOR_TEST);
         drawCasters(scene, plan, light, options, variant, 1,
                     [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]); });
     } else {
         // Only this light's six faces are cleared; other cubes keep their maps.
-        glClearTexSubImage(mCubes.id(), 0, 0, 0, 6 * light.layer, mCubes.width(), mCubes.height(),
-                           6, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+        mCubes.clearCubeDepth(light.layer, one);
         // Faces the view does not look up are cleared and left empty.
         std::array<GLint, 6> faces{};
         GLsizei count = 0;
@@ -387,7 +378,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePla
     }
     if (any) {
         glDisable(GL_POLYGON_OFFSET_FILL);
-        glDisable(GL_DEPTH_CLAMP);
+        gl::setDepthClamp(false);
         glDisable(GL_CULL_FACE);
     }
     return stats;
@@ -417,21 +408,21 @@ Image16 ShadowPass::readBack(const ShadowedLight& light) const {
     std::vector<float> depth(size_t(size) * size);
     std::vector<std::uint8_t> encoded(colour ? depth.size() * 4 : 0);
     for (int face = 0; face < faces; ++face) {
-        const GLuint texture = cube ? mCubes.id() : mMaps.id();
+        const gl::Texture& texture = cube ? mCubes : mMaps;
         const int layer = cube ? 6 * light.layer + face : light.layer;
         const int x = cube ? 0 : light.origin.x, y = cube ? 0 : light.origin.y;
         if (colour) {
             // Decoded on the CPU by the same scheme the shaders use (shadow/DepthPacking).
-            glGetTextureSubImage(texture, 0, x, y, layer, size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE,
-                                 GLsizei(encoded.size()), encoded.data());
+            texture.read(x, y, layer, size, size, GL_RGBA, GL_UNSIGNED_BYTE, encoded.size(),
+                         encoded.data());
             for (size_t i = 0; i < depth.size(); ++i) {
                 const glm::vec4 c(encoded[4 * i], encoded[4 * i + 1], encoded[4 * i + 2],
                                   encoded[4 * i + 3]);
                 depth[i] = shadow::decodeDepth(mMapFormat, c / 255.0f);
             }
         } else {
-            glGetTextureSubImage(texture, 0, x, y, layer, size, size, 1, GL_DEPTH_COMPONENT,
-                                 GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
+            texture.read(x, y, layer, size, size, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         depth.size() * sizeof(float), depth.data());
         }
         toGrey(depth, size, out, face * size);
     }

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "gl/Program.h"
+#include "gl/State.h"
 #include "gnomon/Error.h"
 #include "render/DepthRuns.h"
 #include "render/PassClock.h"
@@ -17,11 +18,12 @@ namespace {
                                    "or use --blend-shadows dithered (no transmittance maps)");
 }
 
-gl::Framebuffer target(const std::string& label, GLuint colour, GLuint depth, int layer) {
+gl::Framebuffer target(const std::string& label, const gl::Texture& colour,
+                       const gl::Texture& depth, int layer) {
     gl::Framebuffer fb(label);
-    glNamedFramebufferTextureLayer(fb.id(), GL_COLOR_ATTACHMENT0, colour, 0, layer);
-    glNamedFramebufferTextureLayer(fb.id(), GL_DEPTH_ATTACHMENT, depth, 0, layer);
-    glNamedFramebufferDrawBuffer(fb.id(), GL_COLOR_ATTACHMENT0);
+    fb.attachLayer(GL_COLOR_ATTACHMENT0, colour, layer);
+    fb.attachLayer(GL_DEPTH_ATTACHMENT, depth, layer);
+    fb.drawColour0();
     fb.checkComplete();
     return fb;
 }
@@ -50,8 +52,8 @@ void TransmittancePass::allocate(const ShadowPass& pass) {
                     std::size_t(size) * std::size_t(size) * 8u * std::size_t(layers));
         }
         for (int layer = 0; layer < layers; ++layer) {
-            mLayerTargets.push_back(target("transmittance layer " + std::to_string(layer),
-                                           mMaps.id(), depth.id(), layer));
+            mLayerTargets.push_back(
+                target("transmittance layer " + std::to_string(layer), mMaps, depth, layer));
         }
     }
     if (const gl::Texture& depth = pass.cubes(); depth) {
@@ -62,8 +64,8 @@ void TransmittancePass::allocate(const ShadowPass& pass) {
                     std::size_t(size) * std::size_t(size) * 48u * std::size_t(cubes));
         }
         for (int face = 0; face < 6 * cubes; ++face) {
-            mFaceTargets.push_back(target("transmittance face " + std::to_string(face), mCubes.id(),
-                                          depth.id(), face));
+            mFaceTargets.push_back(
+                target("transmittance face " + std::to_string(face), mCubes, depth, face));
         }
     }
     mGeneration = pass.generation();
@@ -86,15 +88,15 @@ void TransmittancePass::drawLight(const GpuScene& scene, const ShadowedLight& li
     const bool cube = light.frame.kind == shadow::FrameKind::Cube;
     collect(scene, light, options);
     const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    light.depthClamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
+    gl::setDepthClamp(light.depthClamp);
     for (int face = 0; face < (cube ? 6 : 1); ++face) {
-        const GLuint fb = cube ? mFaceTargets[std::size_t(6 * light.layer + face)].id()
-                               : mLayerTargets[std::size_t(light.layer)].id();
-        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        gl::Framebuffer& fb = cube ? mFaceTargets[std::size_t(6 * light.layer + face)]
+                                   : mLayerTargets[std::size_t(light.layer)];
+        glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
         glViewport(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
         glEnable(GL_SCISSOR_TEST);  // this map's square only: the layer's other maps stay
         glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
-        glClearNamedFramebufferfv(fb, GL_COLOR, 0, white);
+        fb.clearColour(white);
         glDisable(GL_SCISSOR_TEST);
         // A face no pixel of the view looks up (ShadowMath.h: faces) is left cleared.
         if (mVisible.empty() || (cube && !light.frame.drawsFace(face))) continue;
@@ -142,7 +144,7 @@ int TransmittancePass::update(const GpuScene& scene, const ShadowPass& pass,
     forMapsDrawn(lights, drawn, all, one);
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_CLAMP);
+    gl::setDepthClamp(false);
     glDepthMask(GL_TRUE);
     return maps;
 }

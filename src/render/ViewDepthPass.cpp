@@ -1,6 +1,7 @@
 #include "render/ViewDepthPass.h"
 
 #include "gl/Program.h"
+#include "gl/State.h"
 #include "render/DepthRuns.h"
 #include "shadow/FrustumClip.h"
 #include "shadow/ShadowMath.h"
@@ -25,12 +26,12 @@ void ViewDepthPass::draw(const GpuScene& scene) {
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
     const float one = 1.0f;
     glDepthMask(GL_TRUE);  // the clear obeys it
-    glClearNamedFramebufferfv(mTarget.id(), GL_DEPTH, 0, &one);
+    mTarget.clearDepth(one);
     glViewport(0, 0, mGrid.size.x, mGrid.size.y);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_DEPTH_CLAMP);
+    gl::setDepthClamp(false);
     glCullFace(GL_BACK);
     scene.bind();
     // What the main pass draws opaque: masked items cut where it cuts, blended ones skipped.
@@ -63,14 +64,13 @@ void ViewDepthPass::draw(const GpuScene& scene) {
 void ViewDepthPass::allocate(const shadow::SampleGrid& grid) {
     mDepth = gl::Texture::plain2D("view depth", GL_DEPTH_COMPONENT32F, grid.size.x, grid.size.y);
     mTarget = gl::Framebuffer("view depth");
-    glNamedFramebufferDrawBuffer(mTarget.id(), GL_NONE);
-    glNamedFramebufferReadBuffer(mTarget.id(), GL_NONE);
-    glNamedFramebufferTexture(mTarget.id(), GL_DEPTH_ATTACHMENT, mDepth.id(), 0);
+    mTarget.depthOnly();
+    mTarget.attach(GL_DEPTH_ATTACHMENT, mDepth);
     mTarget.checkComplete();
     mRanges = gl::Texture::plain2D("view depth ranges", GL_RG32F, grid.cells.x, grid.cells.y);
     mRangeTarget = gl::Framebuffer("view depth ranges");
-    glNamedFramebufferTexture(mRangeTarget.id(), GL_COLOR_ATTACHMENT0, mRanges.id(), 0);
-    glNamedFramebufferDrawBuffer(mRangeTarget.id(), GL_COLOR_ATTACHMENT0);
+    mRangeTarget.attach(GL_COLOR_ATTACHMENT0, mRanges);
+    mRangeTarget.drawColour0();
     mRangeTarget.checkComplete();
 }
 
@@ -87,7 +87,7 @@ void ViewDepthPass::reduce() {
     glUseProgram(mReduce.id());
     glUniform2i(0, mGrid.block, mGrid.block);
     glUniform2i(1, mGrid.size.x, mGrid.size.y);
-    glBindTextureUnit(0, mDepth.id());
+    gl::bindTexture(0, mDepth);
     glBindSampler(0, 0);  // the main pass's comparing sampler would compare the gathers
     glBindVertexArray(mEmpty.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -109,8 +109,8 @@ const shadow::ViewSamples& ViewDepthPass::sample(const GpuScene& scene, const Ca
     draw(scene);
     reduce();
     mRead.resize(std::size_t(grid.cells.x) * std::size_t(grid.cells.y));
-    glGetTextureImage(mRanges.id(), 0, GL_RG, GL_FLOAT, GLsizei(mRead.size() * sizeof(glm::vec2)),
-                      mRead.data());
+    mRanges.read(0, 0, 0, grid.cells.x, grid.cells.y, GL_RG, GL_FLOAT,
+                 mRead.size() * sizeof(glm::vec2), mRead.data());
     shadow::viewSamples(mRead, grid, camera, aspect, mSamples);
     mValid = true;
     mRevision = scene.revision();

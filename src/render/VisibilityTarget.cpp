@@ -13,8 +13,11 @@ void readLayers(const gl::Texture& texture, GLenum format, int channels, int wid
                 int lights, const Store& store) {
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     std::vector<float> layers(pixels * std::size_t(channels) * std::size_t(lights));
-    glGetTextureImage(texture.id(), 0, format, GL_FLOAT, GLsizei(layers.size() * sizeof(float)),
-                      layers.data());
+    const std::size_t layerFloats = pixels * std::size_t(channels);
+    for (int l = 0; l < lights; ++l) {
+        texture.read(0, 0, l, width, height, format, GL_FLOAT, layerFloats * sizeof(float),
+                     &layers[std::size_t(l) * layerFloats]);
+    }
     for (int l = 0; l < lights; ++l) {
         for (int y = 0; y < height; ++y) {
             const float* src = &layers[(std::size_t(l) * pixels +
@@ -40,19 +43,19 @@ void VisibilityTarget::clear(int width, int height, int lights, bool withTint) {
         mVisibility = gl::Texture::array2D("shadow visibility", GL_RG32F, width, height, layers);
     }
     const float unset[2] = {1.0f, 0.0f};
-    glClearTexImage(mVisibility.id(), 0, GL_RG, GL_FLOAT, unset);
+    mVisibility.clear(GL_RG, unset);
     if (!mObjects || mObjects.width() != width || mObjects.height() != height) {
         mObjects = gl::Texture::plain2D("shadow visibility objects", GL_R32F, width, height);
     }
     const float none = 0.0f;
-    glClearTexImage(mObjects.id(), 0, GL_RED, GL_FLOAT, &none);
+    mObjects.clear(GL_RED, &none);
     mWithTint = withTint;
     if (!withTint) return;
     if (!fits(mTint)) {
         mTint = gl::Texture::array2D("shadow tint", GL_RGBA32F, width, height, layers);
     }
     const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glClearTexImage(mTint.id(), 0, GL_RGBA, GL_FLOAT, white);
+    mTint.clear(GL_RGBA, white);
 }
 
 void VisibilityTarget::read(int width, int height, int lights, bool drawn,

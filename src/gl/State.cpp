@@ -1,0 +1,44 @@
+#include "gl/State.h"
+
+#include "gl/Caps.h"
+#include "gnomon/Error.h"
+
+namespace gnomon::gl {
+namespace {
+void requireImages() {
+    if (!activeCaps().imageStore) {
+        throw Error(ErrorKind::Gl,
+                    "image stores (gnomon score's visibility) are not available in OpenGL ES "
+                    "3.0 / WebGL2");
+    }
+}
+}  // namespace
+
+void setDepthClamp(bool on) {
+    if (!activeCaps().depthClamp) return;
+    // GL_DEPTH_CLAMP and ES's GL_DEPTH_CLAMP_EXT are the same enum.
+    on ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
+}
+
+void setSrgbWrites(bool on) {
+    if (!activeCaps().srgbWriteControl) return;
+    on ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
+}
+
+void bindImage(int unit, const Texture& texture, GLenum format) {
+    requireImages();
+    const GLboolean layered = texture.target() == GL_TEXTURE_2D ? GL_FALSE : GL_TRUE;
+    glBindImageTexture(GLuint(unit), texture.id(), 0, layered, 0, GL_WRITE_ONLY, format);
+}
+
+void unbindImage(int unit, GLenum format) {
+    requireImages();
+    glBindImageTexture(GLuint(unit), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+}
+
+void imageStoresDone() {
+    requireImages();
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+}  // namespace gnomon::gl

@@ -1,0 +1,22 @@
+// Pipeline switches that differ between OpenGL 4.5 and ES 3.0 (WebGL2), and image stores,
+// which only OpenGL 4.5 has here. Everything else the passes set (depth test, blending,
+// viewport, scissor, polygon offset, masks) is the same call on both and stays in the passes.
+#pragma once
+
+#include "gl/Objects.h"
+
+namespace gnomon::gl {
+
+// Depth clamping (pancaked shadow casters); on ES only with EXT_depth_clamp (Caps::depthClamp),
+// otherwise a no-op the caller has planned for.
+void setDepthClamp(bool on);
+// Linear-to-sRGB encoding of writes to sRGB targets. ES always encodes, so this switch
+// exists only on OpenGL 4.5 (Caps::srgbWriteControl).
+void setSrgbWrites(bool on);
+// `texture` (level 0, every layer) as image unit `unit`, write only, texels of `format`.
+void bindImage(int unit, const Texture& texture, GLenum format);
+void unbindImage(int unit, GLenum format);
+// Image stores made so far are seen by texture reads and readbacks that follow.
+void imageStoresDone();
+
+}  // namespace gnomon::gl
