@@ -60,6 +60,14 @@ GLint glWrap(TextureWrap w) {
                                               : GL_REPEAT;
 }
 
+// Mesh-local indices made global: OpenGL ES 3.0 (WebGL2) draws have no base vertex.
+void appendRebased(std::vector<std::uint32_t>& indices, const std::vector<std::uint32_t>& own,
+                   std::uint32_t base) {
+    indices.reserve(indices.size() + own.size());
+    for (std::uint32_t i : own)
+        indices.push_back(i + base);
+}
+
 }  // namespace
 
 void GpuScene::uploadGeometry(const Scene& scene) {
@@ -75,7 +83,8 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     mMeshRanges.clear();
     std::vector<std::pair<std::size_t, GLsizei>> full;
     for (const Mesh& m : scene.meshes) {
-        mMeshRanges.emplace_back(indices.size() * sizeof(std::uint32_t), GLint(vertices.size()));
+        mMeshRanges.emplace_back(indices.size() * sizeof(std::uint32_t),
+                                 std::uint32_t(vertices.size()));
         full.emplace_back(mMeshRanges.back().first, GLsizei(m.indices.size()));
         for (size_t i = 0; i < m.positions.size(); ++i) {
             vertices.push_back({m.positions[i], m.normals[i],
@@ -89,8 +98,7 @@ void GpuScene::uploadGeometry(const Scene& scene) {
                 vertices.push_back(
                     {p, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec3(1.0f), glm::vec2(0.0f)});
         }
-        const std::vector<std::uint32_t>& own = mSplits[full.size() - 1].indices;
-        indices.insert(indices.end(), own.begin(), own.end());
+        appendRebased(indices, mSplits[full.size() - 1].indices, mMeshRanges.back().second);
     }
     // Every stand-in made so far after all full meshes, sharing their vertices (same base
     // vertex); meshes too small to simplify keep drawing their own range.
@@ -103,7 +111,7 @@ void GpuScene::uploadGeometry(const Scene& scene) {
             const std::vector<std::uint32_t>& own = meshes[m].indices;
             if (own.empty()) continue;
             ranges[m] = {indices.size() * sizeof(std::uint32_t), GLsizei(own.size())};
-            indices.insert(indices.end(), own.begin(), own.end());
+            appendRebased(indices, own, mMeshRanges[m].second);
         }
     }
     mVertices =
@@ -237,7 +245,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
                                       sizeof(GpaObject));
         mItems[i] = {
             std::uint32_t(i), GLsizei(mesh.indices.size()), mMeshRanges[o.mesh].first,
-            mMeshRanges[o.mesh].second, mat.doubleSided,
+            mat.doubleSided,
             // On solids wound outwards in the world, as culling in a shadow pass needs.
             split.winding * glm::determinant(glm::mat3(g.worldFromModel)) > 0.0f
                 ? GLsizei(split.closedIndices)
@@ -329,10 +337,9 @@ bool GpuScene::uploadDrawCommands() {
             const GLuint closed =
                 GLuint(standIn ? item.standInClosedIndexCount : item.closedIndexCount);
             for (Part part : {Part::All, Part::Closed, Part::Open}) {
-                DrawCommand c{count, 1, first, item.baseVertex, item.object};
+                gl::DrawCommand c{count, 1, first, 0, item.object};
                 if (part == Part::Closed) c.count = closed;
-                if (part == Part::Open)
-                    c = {count - closed, 1, first + closed, item.baseVertex, item.object};
+                if (part == Part::Open) c = {count - closed, 1, first + closed, 0, item.object};
                 for (GLsizei k = 1; k <= GLsizei(kMaxInstances); ++k) {
                     c.instanceCount = GLuint(k);
                     mCommandScratch[commandIndex(i, k, standIn, part)] = c;
@@ -340,17 +347,7 @@ bool GpuScene::uploadDrawCommands() {
             }
         }
     }
-    if (!mCommands || mCommandScratch.size() != mCommandData.size() ||
-        std::memcmp(mCommandScratch.data(), mCommandData.data(),
-                    mCommandData.size() * sizeof(DrawCommand)) != 0) {
-        mCommandData.swap(mCommandScratch);
-        mCommands = gl::Buffer(
-            "draw commands",
-            std::max<std::size_t>(n, 1) * kCommandSets * kMaxInstances * sizeof(DrawCommand),
-            n ? mCommandData.data() : nullptr, 0);
-        return true;
-    }
-    return false;
+    return mCommands.assign(mCommandScratch);
 }
 
 // The vertex stages read the object records as texels of a buffer texture, not from a storage
@@ -360,7 +357,7 @@ bool GpuScene::uploadDrawCommands() {
 void GpuScene::bind() const {
     glBindVertexArray(mVao.id());
     gl::bindTexture(kObjectTextureUnit, mObjectTexels);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mCommands.id());
+    mCommands.bind();
 }
 
 void GpuScene::setInstanceDivisor(GLsizei instances) const {
@@ -374,20 +371,15 @@ void GpuScene::draw(const DrawItem& item, GLsizei instances, Part part) const {
     const GLsizei count = part == Part::Closed ? item.closedIndexCount : item.indexCount - skipped;
     if (count == 0) return;
     setInstanceDivisor(instances);
-    glDrawElementsInstancedBaseVertexBaseInstance(
-        GL_TRIANGLES, count, GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>(item.firstIndexByte + std::size_t(skipped) * sizeof(GLuint)),
-        instances, item.baseVertex, item.object);
+    const GLuint first = GLuint(item.firstIndexByte / sizeof(GLuint)) + GLuint(skipped);
+    gl::drawElements({GLuint(count), GLuint(instances), first, 0, item.object});
 }
 
 void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances, bool standIns,
                          Part part) const {
     if (count == 0) return;
     setInstanceDivisor(instances);
-    const std::size_t command = commandIndex(first, instances, standIns, part);
-    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                reinterpret_cast<const void*>(command * sizeof(DrawCommand)),
-                                GLsizei(count), 0);
+    mCommands.draw(commandIndex(first, instances, standIns, part), count);
 }
 
 }  // namespace gnomon::render

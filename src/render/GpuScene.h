@@ -4,8 +4,8 @@
 // vertex stages as texels of a buffer texture). Items
 // are ordered opaque, then masked, then blended, and by texture and sidedness within each,
 // so passes bind each texture once and draw each run of like items with one
-// glMultiDrawElementsIndirect from a static command buffer (one command per item; the
-// object index reaches the shaders as an instanced attribute, through baseInstance).
+// one call from a static command list (gl::DrawCommands: one command per item; the object
+// index reaches the shaders as an instanced attribute, through baseInstance).
 #pragma once
 
 #include <cstdint>
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/Aabb.h"
+#include "gl/Draw.h"
 #include "gl/Objects.h"
 #include "gnomon/Scene.h"
 #include "scene/MeshTopology.h"
@@ -44,8 +45,7 @@ std::string objectRecordsOverflow(std::size_t objects, std::size_t maxTexels);
 struct DrawItem {
     std::uint32_t object = 0;
     GLsizei indexCount = 0;
-    std::size_t firstIndexByte = 0;
-    GLint baseVertex = 0;
+    std::size_t firstIndexByte = 0;  // indices are global (no base vertex)
     bool doubleSided = false;
     // The first closedIndexCount indices lie on solids wound outwards in the world
     // (splitForCulling): a shadow pass that culls their back faces keeps their shadow. The
@@ -161,19 +161,13 @@ private:
     bool mHaveGeometry = false;
     void setInstanceDivisor(GLsizei instances) const;
 
-    // glMultiDrawElementsIndirect's record.
-    struct DrawCommand {
-        GLuint count, instanceCount, firstIndex;
-        GLint baseVertex;
-        GLuint baseInstance;  // the object index, read through the instanced attribute
-    };
     gl::Buffer mVertices, mIndices, mObjects;
     gl::Texture mObjectTexels;  // mObjects as RGBA32F texels, 13 per record
     gl::Buffer mObjectIds;      // 0..n-1: attribute 4, one per instance
     // One command per item and part (all, closed, open), for 1 to 6 instances, then the same
     // for the stand-ins: commandIndex.
-    gl::Buffer mCommands;
-    std::vector<DrawCommand> mCommandData, mCommandScratch;
+    gl::DrawCommands mCommands;
+    std::vector<gl::DrawCommand> mCommandScratch;
     mutable GLsizei mDivisor = 1;
     mutable gl::VertexArray mVao;  // its instance divisor changes per draw (setInstanceDivisor)
     std::vector<GpaObject> mObjectData;  // reused every frame, no allocation once sized
@@ -181,8 +175,9 @@ private:
     // the maps and refit the lights (a new revision).
     std::vector<std::uint8_t> mCasts;
     std::vector<DrawItem> mItems;
-    std::vector<shadow::SceneItem> mPlanItems;               // mItems' plan data, same order
-    std::vector<std::pair<std::size_t, GLint>> mMeshRanges;  // first index byte, base vertex
+    std::vector<shadow::SceneItem> mPlanItems;  // mItems' plan data, same order
+    std::vector<std::pair<std::size_t, std::uint32_t>>
+        mMeshRanges;  // first index byte, first vertex
     // Stand-in casters by detail: the ones made for the current geometry (empty indices: the
     // mesh's own), at most kKeptStandIns of them, and where each mesh's lies in the index
     // buffer per detail (1: the full meshes), first index byte and count.
