@@ -117,7 +117,8 @@ public:
     // The same frame left on the GPU, not read back (the viewer): frameTexture() names it.
     void draw(const Scene& scene, const RenderOptions& options);
     // The texture holding the last frame: its bytes are what render() returns (sRGB-encoded
-    // for --output-encoding srgb, not decoded when sampled). Empty before the first frame;
+    // for --output-encoding srgb, not decoded when sampled; on OpenGL ES, which has no
+    // texture views, sRGB frames are decoded when sampled). Empty before the first frame;
     // valid until the next frame.
     GlTexture frameTexture() const;
     // Draws the last frame's shadow maps of `light` (an index into Scene::lights) as

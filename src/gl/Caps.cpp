@@ -41,6 +41,8 @@ Caps queryCaps() {
     c.maxTextureBufferSize = 0;
     c.depthClamp = has("GL_EXT_depth_clamp");
     c.multiDraw = has("GL_ANGLE_multi_draw") || has("GL_WEBGL_multi_draw");
+    c.floatTargets = has("GL_EXT_color_buffer_float");
+    c.floatLinear = has("GL_OES_texture_float_linear");
     return c;
 }
 

@@ -30,6 +30,8 @@ struct Caps {
     bool debugLabels = false;         // KHR_debug object labels and messages
     bool depthClamp = true;           // GL_DEPTH_CLAMP (ES: EXT_depth_clamp)
     bool multiDraw = false;           // ES: ANGLE/WEBGL multi_draw with gl_DrawID
+    bool floatTargets = true;         // render to 32F colour (ES: EXT_color_buffer_float)
+    bool floatLinear = true;          // filter 32F textures (ES: OES_texture_float_linear)
     // Limits.
     int maxUniformBlockSize = 16384;
     int maxTextureSize = 2048;

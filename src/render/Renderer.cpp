@@ -77,6 +77,12 @@ struct Renderer::Impl {
     std::unique_ptr<render::PassClock> clock;  // made when timing is first switched on
 
     explicit Impl(const ContextOptions& o) : context(openContext(o)) {
+        // View depth ranges, moments and score's visibility are float render targets.
+        if (!caps.get().floatTargets) {
+            throw Error(ErrorKind::Gl,
+                        "no usable OpenGL ES: gnomon renders to float textures "
+                        "(EXT_color_buffer_float), which this driver does not offer");
+        }
         // PCF taps may cross cube faces (ES filters across faces always).
         if (caps.get().seamlessCubes) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     }
@@ -109,7 +115,10 @@ struct Renderer::Impl {
             return;
         }
         colour = gl::Texture::plain2D("output colour", format, width, height);
-        colourView = gl::Texture::view2D("output colour as stored", colour, GL_RGBA8);
+        // Without texture views (ES), frameTexture() hands out the target itself.
+        if (caps.get().textureViews) {
+            colourView = gl::Texture::view2D("output colour as stored", colour, GL_RGBA8);
+        }
         // The view depth pass's format, so its depth can be copied in (bindClearedTarget).
         depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT32F, width, height);
         target = gl::Framebuffer("output");
@@ -392,7 +401,7 @@ void Renderer::draw(const Scene& scene, const RenderOptions& options) {
 }
 
 GlTexture Renderer::frameTexture() const {
-    const gl::Texture& t = mImpl->colourView;
+    const gl::Texture& t = mImpl->colourView ? mImpl->colourView : mImpl->colour;
     return {t.id(), t.width(), t.height()};
 }
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "gl/Caps.h"
 #include "gl/Program.h"
 #include "gl/State.h"
 #include "gnomon/Error.h"
@@ -11,8 +12,15 @@
 namespace gnomon::render {
 
 namespace {
+// RGBA16: colour and the nearest blended depth, 8 bytes a texel. ES 3.0 (WebGL2) cannot
+// render to it; half floats hold the colour as well, the depth less finely.
+GLenum tintFormat() {
+    return gl::activeCaps().norm16 ? GL_RGBA16 : GL_RGBA16F;
+}
+
 [[noreturn]] void refused(const std::string& what, std::size_t bytes) {
-    throw Error(ErrorKind::Gl, "coloured shadows: " + what + " of RGBA16 need " +
+    const char* format = gl::activeCaps().norm16 ? "RGBA16" : "RGBA16F";
+    throw Error(ErrorKind::Gl, "coloured shadows: " + what + " of " + format + " need " +
                                    std::to_string(bytes >> 20) +
                                    " MiB, which the OpenGL driver refused; lower --map-size "
                                    "or use --blend-shadows dithered (no transmittance maps)");
@@ -46,7 +54,7 @@ void TransmittancePass::allocate(const ShadowPass& pass) {
     mCubes = gl::Texture();
     if (const gl::Texture& depth = pass.mapDepth(); pass.mapArraySize() > 0) {
         const int size = depth.width(), layers = depth.layers();
-        mMaps = gl::Texture::array2D("transmittance maps", GL_RGBA16, size, size, layers);
+        mMaps = gl::Texture::array2D("transmittance maps", tintFormat(), size, size, layers);
         if (!mMaps.allocated()) {
             refused(std::to_string(layers) + " layer(s) of " + std::to_string(size) + "²",
                     std::size_t(size) * std::size_t(size) * 8u * std::size_t(layers));
@@ -58,7 +66,7 @@ void TransmittancePass::allocate(const ShadowPass& pass) {
     }
     if (const gl::Texture& depth = pass.cubes(); depth) {
         const int size = depth.width(), cubes = depth.layers() / 6;
-        mCubes = gl::Texture::cubeArray("transmittance cubes", GL_RGBA16, size, cubes);
+        mCubes = gl::Texture::cubeArray("transmittance cubes", tintFormat(), size, cubes);
         if (!mCubes.allocated()) {
             refused(std::to_string(cubes) + " cube(s) of 6 x " + std::to_string(size) + "²",
                     std::size_t(size) * std::size_t(size) * 48u * std::size_t(cubes));
