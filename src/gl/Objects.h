@@ -104,6 +104,12 @@ public:
     // An image to show as it is (a UI's overlay): RGBA8 (grey and RGB widened, alpha 255
     // where absent), bytes not decoded when sampled, one level, NEAREST, first row at t = 0.
     static Texture display2D(const std::string& label, const Image& image);
+    // Records of RGBA32F texels for texelFetch (no filtering): `texels` texels from `rgba`
+    // in rows of `rowTexels`, texel k at (k mod rowTexels, k / rowTexels); the last row is
+    // padded with zeros. Data a shader reads where buffer textures are missing (ES) or too
+    // small.
+    static Texture texelRows(const std::string& label, const float* rgba, std::size_t texels,
+                             int rowTexels);
     // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
     // storage.
     static Texture layersView(const std::string& label, const Texture& source);

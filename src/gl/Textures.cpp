@@ -278,6 +278,25 @@ Texture Texture::display2D(const std::string& label, const Image& image) {
     return t;
 }
 
+Texture Texture::texelRows(const std::string& label, const float* rgba, std::size_t texels,
+                           int rowTexels) {
+    const int rows = int(
+        std::max<std::size_t>(1, (texels + std::size_t(rowTexels) - 1) / std::size_t(rowTexels)));
+    std::vector<float> padded(std::size_t(rowTexels) * std::size_t(rows) * 4, 0.0f);
+    if (texels > 0) std::memcpy(padded.data(), rgba, texels * 4 * sizeof(float));
+    Texture t(create(GL_TEXTURE_2D), GL_TEXTURE_2D, GL_RGBA32F, rowTexels, rows, 1);
+    storage(t.id(), GL_TEXTURE_2D, 1, GL_RGBA32F, rowTexels, rows, 1);
+    if (dsa()) {
+        glTextureSubImage2D(t.id(), 0, 0, 0, rowTexels, rows, GL_RGBA, GL_FLOAT, padded.data());
+    } else {
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, rowTexels, rows, GL_RGBA, GL_FLOAT, padded.data());
+    }
+    t.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    t.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    setLabel(GL_TEXTURE, t.id(), label);
+    return t;
+}
+
 void bindTexture(int unit, const Texture& texture) {
     if (dsa()) {
         glBindTextureUnit(GLuint(unit), texture.id());

@@ -1,0 +1,17 @@
+#version 450 core
+// One ray per pixel through the BVH (bvh_trace.glsl), for the ray-rate benchmark: ray k of
+// the pixel at (x, y) is texel y * width + x of uRayOrigins (xyz, tfar) and uRayDirections
+// (xyz, 1 for a shadow ray that stops at any caster). Writes the hit distance, -1 for none.
+#include "bvh_trace.glsl"
+
+layout(binding = 14) uniform highp sampler2D uRayOrigins;
+layout(binding = 15) uniform highp sampler2D uRayDirections;
+
+layout(location = 0) out vec4 fHit;
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    int k = p.y * textureSize(uRayOrigins, 0).x + p.x;
+    vec4 o = bvhTexel(uRayOrigins, k), d = bvhTexel(uRayDirections, k);
+    fHit = vec4(bvhTrace(o.xyz, d.xyz, 0.0, o.w, d.w > 0.5), 0.0, 0.0, 1.0);
+}

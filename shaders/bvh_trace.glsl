@@ -1,0 +1,126 @@
+// Rays through the project's own BVH (src/truth/Bvh.h), read from two RGBA32F textures with
+// texelFetch so it runs on WebGL2 as on OpenGL 4.5: node i is texels 2i, 2i+1 of uBvhNodes,
+// triangle j texels 3j..3j+2 of uBvhTriangles, texel k of a texture at (k mod width,
+// k / width). The same traversal as the C++ (front to back, a stack of deferred siblings,
+// box exits widened as Ize 2013 shows) and the watertight triangle test of Woop, Benthin and
+// Wald 2013, without the C++'s double-precision retry of an area of exactly 0.
+layout(binding = 12) uniform highp sampler2D uBvhNodes;
+layout(binding = 13) uniform highp sampler2D uBvhTriangles;
+
+const float kBvhWiden = 1.0 + 2.0 * (3.0 * 5.9604645e-8) / (1.0 - 3.0 * 5.9604645e-8);
+const int kBvhStack = 64;
+
+vec4 bvhTexel(highp sampler2D s, int k) {
+    int w = textureSize(s, 0).x;
+    return texelFetch(s, ivec2(k % w, k / w), 0);
+}
+
+// A ray in the form both tests use: the inverse direction for slabs, the shear for triangles.
+struct BvhRayFrame {
+    vec3 origin, inv;
+    int kx, ky, kz;
+    vec3 shear;  // sx, sy, sz
+};
+
+BvhRayFrame bvhFrame(vec3 origin, vec3 dir) {
+    BvhRayFrame r;
+    dir += vec3(0.0);  // -0 to +0, as the C++
+    r.origin = origin;
+    r.inv = 1.0 / dir;
+    vec3 m = abs(dir);
+    r.kz = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+    r.kx = (r.kz + 1) % 3;
+    r.ky = (r.kx + 1) % 3;
+    if (dir[r.kz] < 0.0) {
+        int k = r.kx;
+        r.kx = r.ky;
+        r.ky = k;
+    }
+    r.shear = vec3(dir[r.kx] / dir[r.kz], dir[r.ky] / dir[r.kz], 1.0 / dir[r.kz]);
+    return r;
+}
+
+// Where the ray enters node `node`'s box within (tnear, tfar], or -1 when it misses it.
+float bvhEnter(BvhRayFrame r, int node, float tnear, float tfar) {
+    vec3 lo = bvhTexel(uBvhNodes, 2 * node).xyz, hi = bvhTexel(uBvhNodes, 2 * node + 1).xyz;
+    vec3 t0 = (lo - r.origin) * r.inv, t1 = (hi - r.origin) * r.inv;
+    vec3 tn = min(t0, t1), tf = max(t0, t1) * kBvhWiden;
+    float enter = max(max(tn.x, tn.y), max(tn.z, tnear));
+    float leave = min(min(tf.x, tf.y), min(tf.z, tfar));
+    return enter <= leave ? enter : -1.0;
+}
+
+// The distance to triangle `tri` along the ray when it is hit within (tnear, tfar], else -1.
+float bvhHitTriangle(BvhRayFrame r, int tri, float tnear, float tfar) {
+    vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz - r.origin;
+    vec3 b = bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - r.origin;
+    vec3 c = bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - r.origin;
+    float ax = a[r.kx] - r.shear.x * a[r.kz], ay = a[r.ky] - r.shear.y * a[r.kz];
+    float bx = b[r.kx] - r.shear.x * b[r.kz], by = b[r.ky] - r.shear.y * b[r.kz];
+    float cx = c[r.kx] - r.shear.x * c[r.kz], cy = c[r.ky] - r.shear.y * c[r.kz];
+    float u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return -1.0;
+    float det = u + v + w;
+    if (det == 0.0) return -1.0;
+    float t = r.shear.z * (u * a[r.kz] + v * b[r.kz] + w * c[r.kz]);
+    float s = det < 0.0 ? -1.0 : 1.0;
+    if (!(t * s > tnear * det * s) || !(t * s <= tfar * det * s)) return -1.0;
+    return t / det;
+}
+
+// The nearest hit's distance (when `anyCaster`: the first caster's) within (tnear, tfar];
+// -1 for none.
+float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster) {
+    if (textureSize(uBvhNodes, 0).x < 2) return -1.0;  // an empty hierarchy
+    BvhRayFrame r = bvhFrame(origin, dir);
+    float best = -1.0;
+    if (bvhEnter(r, 0, tnear, tfar) < 0.0) return best;
+    int stackNode[kBvhStack];
+    float stackEnter[kBvhStack];
+    int top = 0;
+    int node = 0;
+    for (;;) {
+        vec4 info = bvhTexel(uBvhNodes, 2 * node + 1);
+        int first = int(bvhTexel(uBvhNodes, 2 * node).w);
+        int count = int(info.w) >> 1;
+        bool descended = false;
+        if (count == 0) {
+            int near = first, far = first + 1;
+            float e0 = bvhEnter(r, near, tnear, tfar), e1 = bvhEnter(r, far, tnear, tfar);
+            if (e0 >= 0.0 && e1 >= 0.0) {
+                if (e1 < e0) {
+                    near = far;
+                    far = first;
+                    float e = e0;
+                    e0 = e1;
+                    e1 = e;
+                }
+                stackNode[top] = far;
+                stackEnter[top] = e1;
+                top = min(top + 1, kBvhStack - 1);
+                node = near;
+                descended = true;
+            } else if (e0 >= 0.0 || e1 >= 0.0) {
+                node = e0 >= 0.0 ? near : far;
+                descended = true;
+            }
+        } else {
+            for (int i = first; i < first + count; ++i) {
+                if (anyCaster && (int(bvhTexel(uBvhTriangles, 3 * i + 2).w) & 1) == 0) continue;
+                float t = bvhHitTriangle(r, i, tnear, tfar);
+                if (t < 0.0) continue;
+                best = t;
+                tfar = t;
+                if (anyCaster) return best;
+            }
+        }
+        if (descended) continue;
+        // The next deferred node the ray may still meet before its (shrunk) end.
+        do {
+            if (top == 0) return best;
+            --top;
+        } while (stackEnter[top] > tfar * kBvhWiden);
+        node = stackNode[top];
+    }
+    return best;
+}
