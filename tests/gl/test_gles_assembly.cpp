@@ -196,6 +196,17 @@ TEST(GlesAssembly, InterfaceBlocksBecomeVaryings) {
               std::string::npos);
 }
 
+// The object records' ES layout and draw base are the C++ side's constants.
+TEST(GlesAssembly, SceneDataFollowsTheEsConstants) {
+    const gl::AssembledSource es = gl::assembleShader("depth.vert.glsl", {}, kGles);
+    EXPECT_NE(std::find(es.locations.begin(), es.locations.end(),
+                        gl::FixedSlot{gl::kDrawBaseLocation, "uDrawBase"}),
+              es.locations.end());
+    EXPECT_NE(es.text.find("\n#define GNOMON_OBJECTS_PER_ROW " +
+                           std::to_string(gl::kObjectsPerRow) + "\n"),
+              std::string::npos);
+}
+
 // ANGLE's references (Chrome's WebGL errors), Mesa's and NVIDIA's, on ES text: the dialect's
 // own lines are named as injected, the files' lines by file and line.
 TEST(GlesAssembly, InfoLogNamesInjectedAndFileLines) {
