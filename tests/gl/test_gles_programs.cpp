@@ -12,12 +12,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <optional>
 #include <set>
 #include <sstream>
 
-#include "gl/Context.h"
+#include "GlesTest.h"
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
 #include "gnomon/Error.h"
@@ -26,28 +24,6 @@
 
 namespace gnomon::test {
 namespace {
-
-// The two contexts: OpenGL ES, and OpenGL 4.5 for what each program has active there.
-struct Contexts {
-    gl::HeadlessContext es{false, false, gl::Api::Gles3};
-    gl::ContextCaps esCaps;
-    std::optional<gl::HeadlessContext> native;
-    std::optional<gl::ContextCaps> nativeCaps;
-    Contexts() {
-        native.emplace(false, false, gl::Api::Gl45);
-        nativeCaps.emplace();
-        useEs();
-    }
-    void useEs() {
-        es.makeCurrent();
-        esCaps.activate();
-    }
-    void useNative() {
-        native->makeCurrent();
-        nativeCaps->activate();
-    }
-};
-Contexts* gContexts = nullptr;
 
 struct Spec {
     std::string label;
@@ -81,7 +57,7 @@ Active activeIn(const gl::Program& p, const std::vector<gl::AssembledSource>& so
 // Builds `spec` in both dialects and checks the ES program's slots against the layouts.
 void checkProgram(const Spec& spec) {
     SCOPED_TRACE(spec.label);
-    const gl::Dialect es = gl::dialectOf(gContexts->esCaps.get());
+    const gl::Dialect es = gl::dialectOf(esCaps());
     std::vector<gl::AssembledSource> sources;
     for (const gl::Stage& stage : spec.stages)
         sources.push_back(gl::assembleShader(stage.file, spec.defines, es));
@@ -90,7 +66,7 @@ void checkProgram(const Spec& spec) {
     // uDrawBase is GLSL ES's own.
     Active wanted;
     {
-        gContexts->useNative();
+        useNative();
         const gl::Program native = gl::buildProgram(spec.label, spec.stages, spec.defines);
         wanted = activeIn(native, sources);
     }
@@ -100,7 +76,7 @@ void checkProgram(const Spec& spec) {
             wanted.uniforms.insert("uDrawBase");
         }
     }
-    gContexts->useEs();
+    useEs();
     gl::Program p;
     try {
         p = gl::buildProgram(spec.label, spec.stages, spec.defines);
@@ -209,7 +185,7 @@ TEST(GlesPrograms, DebugPass) {
 
 // The main pass's light count for the ES context, as MainPass sizes its light block.
 int maxLights() {
-    return std::min(256, gContexts->esCaps.get().maxUniformBlockSize / int(sizeof(GpuLight)));
+    return std::min(256, esCaps().maxUniformBlockSize / int(sizeof(GpuLight)));
 }
 
 void checkMain(const render::MainVariant& v) {
@@ -317,7 +293,7 @@ int lineStarting(const std::string& file, const std::string& start) {
 
 // What WebGL2 cannot have fails where it is asked for: gl_Layer's extension, the images.
 TEST(GlesPrograms, WebGL2Lacks) {
-    gContexts->useEs();
+    useEs();
     try {
         gl::buildProgram("shadow depth cube", {{GL_VERTEX_SHADER, "depth_cube.vert.glsl"}});
         ADD_FAILURE() << "depth_cube.vert compiled in GLSL ES: build it there too";
@@ -344,7 +320,7 @@ TEST(GlesPrograms, WebGL2Lacks) {
 // A driver error deep in the includes of a large variant names its file and line in ES text
 // too (the dialect's lines and rewrites keep the line map).
 TEST(GlesPrograms, DriverErrorNamesItsLine) {
-    gContexts->useEs();
+    useEs();
     render::MainVariant v = frameVariant(RenderOptions{}, false, true);
     std::vector<std::string> d = v.defines(maxLights());
     d.push_back("uEye )");  // declared in main.frag.glsl after all its includes
@@ -377,20 +353,3 @@ TEST(GlesPrograms, EveryRootShaderIsBuilt) {
 
 }  // namespace
 }  // namespace gnomon::test
-
-// Lists tests without GL (for CTest discovery); otherwise opens the OpenGL ES context and the
-// OpenGL 4.5 one, and exits 77 (CTest: skipped) when either cannot be made.
-int main(int argc, char** argv) {
-    testing::InitGoogleTest(&argc, argv);
-    if (GTEST_FLAG_GET(list_tests)) return RUN_ALL_TESTS();
-    std::optional<gnomon::test::Contexts> contexts;
-    try {
-        contexts.emplace();
-    } catch (const gnomon::Error& e) {
-        if (e.kind() != gnomon::ErrorKind::Gl) throw;
-        std::fprintf(stderr, "skipping GLSL ES tests: %s\n", e.what());
-        return 77;
-    }
-    gnomon::test::gContexts = &*contexts;
-    return RUN_ALL_TESTS();
-}
