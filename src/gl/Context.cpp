@@ -134,7 +134,7 @@ HeadlessContext::HeadlessContext(bool debug, bool verbose, Api api) {
             fail(none + ": EGL has no config for " + (es ? "OpenGL ES 3" : "desktop OpenGL"));
         }
     }
-    // ES: 3.0 or any later version the driver gives (Mesa gives 3.2).
+    // ES: 3.0, or whichever later version the driver gives.
     std::vector<EGLint> contextAttribs = {EGL_CONTEXT_MAJOR_VERSION, es ? 3 : 4,
                                           EGL_CONTEXT_MINOR_VERSION, es ? 0 : 5};
     if (!es) {
