@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
             glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
             glViewport(0, 0, width, height);
             glDisable(GL_DEPTH_TEST);
-            glUseProgram(program.id());
+            gl::use(program);
             gl::bindTexture(12, nodes);
             gl::bindTexture(13, triangles);
             gl::bindTexture(14, origins);

@@ -50,9 +50,8 @@ float uphillReference(CubeTap c, TapPlane plane, vec2 o) {
 // Lantern's post; tests/gl/test_score.cpp's post).
 bool cubeSilhouette(CubeTap c, TapPlane plane) {
     vec2 downhill = c.step * sign(plane.full);
-    float beyond =
-        texture(uShadowCubes, vec4(c.toPoint + downhill.x * c.u + downhill.y * c.v, c.layer),
-                cubeReference(c, plane, downhill));
+    vec3 tap = c.toPoint + downhill.x * c.u + downhill.y * c.v;
+    float beyond = CUBE_COMPARE(uShadowCubes, tap, c.layer, cubeReference(c, plane, downhill));
     return atSilhouette(plane, kSingleTapSilhouetteCosine, 1.0 - beyond);
 }
 // One comparison: at a silhouette the point's own footprint, whose uphill half holds the face
@@ -60,8 +59,8 @@ bool cubeSilhouette(CubeTap c, TapPlane plane) {
 float cubeSingleTap(CubeTap c, TapPlane plane) {
     float fullSpread = 0.5 * c.step * (abs(plane.full.x) + abs(plane.full.y));
     bool silhouette = cubeSilhouette(c, plane);
-    return texture(uShadowCubes, vec4(c.toPoint, c.layer),
-                   silhouette ? c.reference - fullSpread : c.reference - plane.spread);
+    float reference = silhouette ? c.reference - fullSpread : c.reference - plane.spread;
+    return CUBE_COMPARE(uShadowCubes, c.toPoint, c.layer, reference);
 }
 #endif
 
@@ -88,7 +87,7 @@ float cubeKernel(CubeTap c, TapPlane plane) {
     // footprint lies wholly beyond the point (the others may read the point's own texel) was
     // lit. Each tap is read once. Without a receiver plane there is no downhill (the flat
     // plane) and no silhouette: the plain K x K kernel.
-    float sum = texture(uShadowCubes, vec4(c.toPoint, c.layer), cubeReference(c, plane, vec2(0.0)));
+    float sum = CUBE_COMPARE(uShadowCubes, c.toPoint, c.layer, cubeReference(c, plane, vec2(0.0)));
     float downhillShadow = 0.0;
     float beyond = 0.999 * c.step * (abs(full.x) + abs(full.y));
     for (int y = 0; y <= r; ++y) {
@@ -97,7 +96,7 @@ float cubeKernel(CubeTap c, TapPlane plane) {
             vec2 o = vec2(x, y) * c.step;
             vec2 downhill = dot(full, o) < 0.0 ? -o : o;
             vec3 tap = c.toPoint + downhill.x * c.u + downhill.y * c.v;
-            float t = texture(uShadowCubes, vec4(tap, c.layer), cubeReference(c, plane, downhill));
+            float t = CUBE_COMPARE(uShadowCubes, tap, c.layer, cubeReference(c, plane, downhill));
             sum += t;
             downhillShadow += dot(full, downhill) >= beyond ? 1.0 - t : 0.0;
         }
@@ -111,7 +110,7 @@ float cubeKernel(CubeTap c, TapPlane plane) {
             float compareTo = silhouette ? uphillReference(c, plane, uphill)
                                          : cubeReference(c, plane, uphill);
             vec3 tap = c.toPoint + uphill.x * c.u + uphill.y * c.v;
-            sum += texture(uShadowCubes, vec4(tap, c.layer), compareTo);
+            sum += CUBE_COMPARE(uShadowCubes, tap, c.layer, compareTo);
         }
     }
     return sum / float(kCubeKernel * kCubeKernel);
@@ -132,7 +131,7 @@ float cubePcss(LightRecord light, CubeTap c, TapPlane plane, float major, float 
     for (int i = 0; i < 16; ++i) {
         vec2 o = turn * kPoissonDisc[i] * search;
         vec3 tap = c.toPoint + (o.x * c.u + o.y * c.v) * texelAtReceiver;
-        float z = texture(uShadowCubeDepths, vec4(tap, c.layer)).r;
+        float z = CUBE_READ(uShadowCubeDepths, tap, c.layer).r;
 #if defined(RECEIVER_PLANE)
         if (z < cubeReference(c, plane, o * texelAtReceiver)) {
 #else
@@ -151,10 +150,10 @@ float cubePcss(LightRecord light, CubeTap c, TapPlane plane, float major, float 
         vec2 o = turn * kPoissonDisc[i] * radius;
         vec3 tap = c.toPoint + (o.x * c.u + o.y * c.v) * texelAtReceiver;
 #if defined(RECEIVER_PLANE)
-        sum += texture(uShadowCubes, vec4(tap, c.layer),
-                       cubeReference(c, plane, o * texelAtReceiver));
+        float reference = cubeReference(c, plane, o * texelAtReceiver);
+        sum += CUBE_COMPARE(uShadowCubes, tap, c.layer, reference);
 #else
-        sum += texture(uShadowCubes, vec4(tap, c.layer), c.reference - length(o) * perTexel);
+        sum += CUBE_COMPARE(uShadowCubes, tap, c.layer, c.reference - length(o) * perTexel);
 #endif
     }
     return sum / 16.0;
@@ -174,10 +173,10 @@ float cubePoisson(CubeTap c, TapPlane plane) {
     float sum = 0.0;
     for (int i = 0; i < 16; ++i) {
         vec2 o = turn * kPoissonDisc[i] * radius;
-        vec4 tap = vec4(c.toPoint + o.x * c.u + o.y * c.v, c.layer);
+        vec3 tap = c.toPoint + o.x * c.u + o.y * c.v;
         float reference = silhouette && dot(plane.full, o) < 0.0 ? uphillReference(c, plane, o)
                                                                  : cubeReference(c, plane, o);
-        sum += texture(uShadowCubes, tap, reference);
+        sum += CUBE_COMPARE(uShadowCubes, tap, c.layer, reference);
     }
     return sum / 16.0;
 }
@@ -256,7 +255,7 @@ ShadowSample cubeVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
 #elif defined(RECEIVER_PLANE)
     result.visibility = cubeSingleTap(c, plane);
 #else
-    result.visibility = texture(uShadowCubes, vec4(c.toPoint, c.layer), c.reference);
+    result.visibility = CUBE_COMPARE(uShadowCubes, c.toPoint, c.layer, c.reference);
 #endif
     return result;
 }

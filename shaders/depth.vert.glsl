@@ -23,7 +23,7 @@ out vec3 vColour;
 #endif
 
 void main() {
-    ObjectData o = objectAt(aObject);
+    ObjectData o = objectAt(OBJECT_INDEX);
 #ifdef VIEW_CAMERA
     vec4 ws, vs;
     gl_Position = viewClip(o, msPosition, ws, vs);

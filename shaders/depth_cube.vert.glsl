@@ -16,7 +16,7 @@ layout(location = 8) uniform int uFace[6];
 #endif
 
 void main() {
-    ObjectData o = objectAt(aObject);
+    ObjectData o = objectAt(OBJECT_INDEX);
     vec4 wsPosition = o.worldFromModel * vec4(msPosition, 1.0);
 #ifdef ALPHA_TEST
     passAlphaRule(o);

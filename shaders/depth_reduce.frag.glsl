@@ -5,6 +5,7 @@
 // block's frustum between those two depths, which is what fitted shadow maps must hold.
 // Read 2x2 texels at a time by textureGather, a quarter of the reads of one texelFetch per
 // texel.
+#include "texel_gather.glsl"
 layout(binding = 0) uniform sampler2D uDepth;
 layout(location = 0) uniform ivec2 uBlock;  // block size in pixels
 layout(location = 1) uniform ivec2 uSize;   // the depth buffer's size
@@ -19,7 +20,7 @@ void main() {
         for (int x = first.x; x <= last.x; x += 2) {
             // Texels (x, y + 1), (x + 1, y + 1), (x + 1, y), (x, y): those past the block's
             // last row or column (an odd block, the buffer's edge) count as nothing.
-            vec4 d = textureGather(uDepth, vec2(x + 1, y + 1) * texel);
+            vec4 d = GATHER_2D(uDepth, x, y, texel);
             bool right = x + 1 <= last.x, up = y + 1 <= last.y;
             d = mix(vec4(1.0), d, bvec4(up, right && up, right, true));
             bvec4 covered = lessThan(d, vec4(1.0));

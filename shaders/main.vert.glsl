@@ -35,7 +35,7 @@ out VertexOut {
 } vOut;
 
 void main() {
-    ObjectData o = objectAt(aObject);
+    ObjectData o = objectAt(OBJECT_INDEX);
     vec4 wsPosition, vsPosition;  // vsPosition: unused here, the depth pass's chain
     gl_Position = viewClip(o, msPosition, wsPosition, vsPosition);
     vec3 wsNormal = normalize(mat3(o.worldFromModelNormal) * msNormal);
@@ -50,7 +50,7 @@ void main() {
     vOut.alpha = vec3(o.baseColour.a, o.flags.y, o.flags.z);
 #endif
 #ifdef VISIBILITY_PASS
-    vOut.object = float(aObject);
+    vOut.object = float(OBJECT_INDEX);
 #endif
 #ifdef STAND_IN_LIFT
     // The object's stand-in error, model units to world units (at most: its largest scale).

@@ -58,7 +58,7 @@ float gatherPcf(MapTap m, TapPlane plane) {
             vec2 wx = vec2(mx == 0 ? 1.0 - f.x : 1.0, mx == r ? f.x : 1.0);
             // Gathered at the corner the four texels share: x (k, k+1), y (k+1, k+1),
             // z (k+1, k), w (k, k) as (column, row).
-            vec4 d = textureGather(uShadowDepths, vec3((vec2(kx, ky) + 1.0) * texelUv, m.layer));
+            vec4 d = GATHER_LAYER(uShadowDepths, vec2(kx, ky), texelUv, m.layer);
             vec2 o = vec2(kx, ky) - s;
             vec4 capped = dot(g, o) + vec4(g.y, g.x + g.y, g.x, 0.0);
             vec4 along = planeAlong4(capped,

@@ -1,7 +1,7 @@
 // Shadow map lookup: world point -> light texture space, divide by w, compare with the stored
 // depth plus tolerance. Single-frustum maps of all lights live in one texture array (one layer
 // per light, a light's map in the layer's lower-left corner); point lights' cube maps in one
-// cube-map array. Each lookup (mapVisibility, cubeVisibility, faceVisibility,
+// cube-map array (cube_access.glsl). Each lookup (mapVisibility, cubeVisibility, faceVisibility,
 // cascadeVisibility) takes a light record, the Receiver and the direction to the light and
 // returns a ShadowSample; single maps' filters are in map_filters.glsl, cubes' in
 // cube_lookup.glsl.
@@ -11,7 +11,9 @@
 // texels) for PCF and POISSON,
 // OUTSIDE_CLAMP (the textbooks' clamp-to-edge; default: outside the map is lit),
 // COLOURED_SHADOWS (each lookup also returns its tint: transmittance_lookup.glsl).
-layout(binding = 1) uniform samplerCubeArrayShadow uShadowCubes;
+#include "cube_access.glsl"
+#include "texel_gather.glsl"
+layout(binding = 1) uniform CUBE_SHADOW_MAPS uShadowCubes;
 
 // Depth-aware tolerance: x steps of the stored depth's spacing; y, z that step for the 2D
 // maps' and the cubes' formats (shadow::toleranceStep says which step, and why float
@@ -54,7 +56,7 @@ float rawDepth(vec2 uv, float layer) {
 #endif
 #endif
 #if defined(FILTER_PCSS)
-layout(binding = 3) uniform samplerCubeArray uShadowCubeDepths;
+layout(binding = 3) uniform CUBE_MAPS uShadowCubeDepths;
 #endif
 #if defined(FILTER_MOMENTS)
 #include "moment_lookup.glsl"

@@ -3,8 +3,10 @@
 // depth maps are. A texel tints only a receiver behind the nearest blended caster it holds
 // (its alpha: that caster's stored depth), so what lies between the glass and the light
 // stays untinted.
-layout(binding = 7) uniform sampler2DArray uTransmittance;         // LINEAR
-layout(binding = 8) uniform samplerCubeArray uTransmittanceCubes;  // NEAREST
+#include "cube_access.glsl"
+#include "texel_gather.glsl"
+layout(binding = 7) uniform sampler2DArray uTransmittance;  // LINEAR
+layout(binding = 8) uniform CUBE_MAPS uTransmittanceCubes;  // NEAREST
 
 vec3 tintOf(vec4 stored, float reference) {
     return reference > stored.a ? stored.rgb : vec3(1.0);
@@ -18,7 +20,7 @@ vec3 tintOf(vec4 stored, float reference) {
 // one would take four.
 vec3 mapTint(vec2 uv, float layer, float reference, vec2 lo, vec2 hi, float texelUv) {
     uv = clamp(uv, lo, hi);
-    vec4 depths = textureGather(uTransmittance, vec3(uv, layer), 3);
+    vec4 depths = GATHER_LAYER_AT(uTransmittance, uv, layer, 3);
     vec2 f = fract(uv / texelUv - 0.5);
     // Gathered as (i, j+1), (i+1, j+1), (i+1, j), (i, j): their bilinear weights.
     vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
@@ -30,5 +32,5 @@ vec3 mapTint(vec2 uv, float layer, float reference, vec2 lo, vec2 hi, float texe
 
 // Cubes: the nearest texel of the face the direction meets.
 vec3 cubeTint(vec3 toPoint, float layer, float reference) {
-    return tintOf(texture(uTransmittanceCubes, vec4(toPoint, layer)), reference);
+    return tintOf(CUBE_READ(uTransmittanceCubes, toPoint, layer), reference);
 }

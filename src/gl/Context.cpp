@@ -113,38 +113,42 @@ EGLDisplay openDisplay(std::string& platform) {
 
 }  // namespace
 
-HeadlessContext::HeadlessContext(bool debug, bool verbose) {
+HeadlessContext::HeadlessContext(bool debug, bool verbose, Api api) {
     std::lock_guard lock(gDisplayMutex);
     if (gDisplay == EGL_NO_DISPLAY) gDisplay = openDisplay(gPlatform);
     EGLDisplay display = gDisplay;
     mPlatform = gPlatform;
     mDisplay = display;
-    if (!eglBindAPI(EGL_OPENGL_API)) {
-        fail("no usable OpenGL: this EGL cannot bind the desktop OpenGL API (" +
-             eglErrorName(eglGetError()) + ")");
+    const bool es = api == Api::Gles3;
+    const std::string none = es ? "no usable OpenGL ES" : "no usable OpenGL";
+    if (!eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) {
+        fail(none + ": this EGL cannot bind the " + (es ? "OpenGL ES" : "desktop OpenGL") +
+             " API (" + eglErrorName(eglGetError()) + ")");
     }
     EGLConfig config = EGL_NO_CONFIG_KHR;
     if (!hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context")) {
-        const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+        const EGLint attribs[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT,
+                                  EGL_NONE};
         EGLint n = 0;
         if (!eglChooseConfig(display, attribs, &config, 1, &n) || n < 1) {
-            fail("no usable OpenGL: EGL has no config for desktop OpenGL");
+            fail(none + ": EGL has no config for " + (es ? "OpenGL ES 3" : "desktop OpenGL"));
         }
     }
-    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                     4,
-                                     EGL_CONTEXT_MINOR_VERSION,
-                                     5,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_CONTEXT_OPENGL_DEBUG,
-                                     debug ? EGL_TRUE : EGL_FALSE,
-                                     EGL_NONE};
-    mContext = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs);
+    // ES: 3.0, or whichever later version the driver gives.
+    std::vector<EGLint> contextAttribs = {EGL_CONTEXT_MAJOR_VERSION, es ? 3 : 4,
+                                          EGL_CONTEXT_MINOR_VERSION, es ? 0 : 5};
+    if (!es) {
+        contextAttribs.insert(contextAttribs.end(), {EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT});
+    }
+    contextAttribs.insert(contextAttribs.end(),
+                          {EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE});
+    mContext = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs.data());
     if (mContext == EGL_NO_CONTEXT) {
         const EGLint e = eglGetError();
-        fail("no usable OpenGL: the driver cannot create an OpenGL 4.5 core context (" +
-             eglErrorName(e) + "; gnomon needs OpenGL 4.5, Mesa's llvmpipe provides it)");
+        fail(none + ": the driver cannot create an " + (es ? "OpenGL ES 3.0" : "OpenGL 4.5 core") +
+             " context (" + eglErrorName(e) + "; gnomon needs " +
+             (es ? "OpenGL ES 3.0" : "OpenGL 4.5") + ", Mesa's llvmpipe provides it)");
     }
     try {
         makeCurrent();
@@ -152,7 +156,11 @@ HeadlessContext::HeadlessContext(bool debug, bool verbose) {
             std::fprintf(stderr, "gnomon: OpenGL %s via %s\n", currentGlInfo().c_str(),
                          mPlatform.c_str());
         }
-        requireGl45();
+        if (es) {
+            requireGles3();
+        } else {
+            requireGl45();
+        }
         if (debug) installDebugOutput();
     } catch (...) {
         eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -201,6 +209,13 @@ void requireGl45() {
     glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
     if (version < 45 || !(mask & GL_CONTEXT_CORE_PROFILE_BIT)) {
         fail("no usable OpenGL: gnomon needs OpenGL 4.5 core, the driver gave " + currentGlInfo());
+    }
+}
+
+void requireGles3() {
+    if (epoxy_is_desktop_gl() || epoxy_gl_version() < 30) {
+        fail("no usable OpenGL ES: gnomon's ES path needs OpenGL ES 3.0, the driver gave " +
+             currentGlInfo());
     }
 }
 

@@ -5,11 +5,13 @@
 // the passes do. Every object gets a debug label so captures and KHR_debug read well.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "gl/Object.h"
+#include "gl/ShaderSource.h"
 #include "gnomon/Image.h"
 
 namespace gnomon::gl {
@@ -192,11 +194,27 @@ private:
 // The status returned by glCheckNamedFramebufferStatus, in words.
 std::string framebufferStatusText(GLenum status);
 
+// A linked program, in the dialect it was built for. Its shaders give their uniforms fixed
+// locations (gl/Program.h): OpenGL 4.5 keeps them; GLSL ES has none, so there the program
+// holds the location the link gave each (-1: inactive).
 class Program : public Object<ProgramDeleter> {
 public:
-    Program() = default;
-    explicit Program(GLuint name) : Object(name) {}
+    Program() { mLocations.fill(-1); }
+    explicit Program(GLuint name, Api api = Api::Gl45) : Object(name), mApi(api) {
+        mLocations.fill(-1);
+    }
+    Api api() const { return mApi; }
+    // The location of the uniform the shaders declare at `fixed` (0 to kFixedLocations - 1).
+    GLint location(int fixed) const {
+        return mApi == Api::Gl45 ? fixed : mLocations[std::size_t(fixed)];
+    }
+    const std::array<GLint, kFixedLocations>& locations() const { return mLocations; }
+    void setLocation(int fixed, GLint location) { mLocations[std::size_t(fixed)] = location; }
     GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+
+private:
+    Api mApi = Api::Gl45;
+    std::array<GLint, kFixedLocations> mLocations;
 };
 
 class Query : public Object<QueryDeleter> {

@@ -90,11 +90,11 @@ bool DebugPass::drawMaps(const ShadowPass& maps, const std::vector<ShadowedLight
     }
     if (!mRawSampler) mRawSampler = gl::Sampler::storedDepth("debug maps sampler");
     if (!mEmpty) mEmpty = gl::VertexArray("fullscreen (no attributes)");
-    glUseProgram(mapsProgram(format).id());
-    glUniform2i(0, columns, rows);
-    glUniform3f(1, x0, y0, panel);
-    glUniform1i(2, count);
-    glUniform4fv(3, count, panels);
+    gl::use(mapsProgram(format));
+    gl::uniform(0, glm::ivec2(columns, rows));
+    gl::uniform(1, glm::vec3(x0, y0, panel));
+    gl::uniform(2, count);
+    gl::uniform(3, std::span<const float>(panels, std::size_t(4 * count)), 4);
     gl::bindTexture(0, *texture);
     glBindSampler(0, mRawSampler.id());
     glDisable(GL_DEPTH_TEST);
@@ -153,8 +153,8 @@ void DebugPass::drawFrusta(const std::vector<ShadowedLight>& shadowed,
             gl::buildProgram("debug lines", {{GL_VERTEX_SHADER, "debug_lines.vert.glsl"},
                                              {GL_FRAGMENT_SHADER, "debug_lines.frag.glsl"}});
     }
-    glUseProgram(mLinesProgram.id());
-    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld[0][0]);
+    gl::use(mLinesProgram);
+    gl::uniform(0, clipFromWorld);
     glDisable(GL_DEPTH_TEST);  // volumes show through the scene
     glBindVertexArray(mLines.id());
     glDrawArrays(GL_LINES, 0, GLsizei(mLineData.size() / 2));

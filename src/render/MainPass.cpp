@@ -134,22 +134,22 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
 }
 
 void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
-    glUseProgram(p.id());
-    glUniformMatrix4fv(1, 1, GL_FALSE, &u.in->viewFromWorld[0][0]);
-    glUniformMatrix4fv(2, 1, GL_FALSE, &u.in->clipFromView[0][0]);
-    glUniform3fv(3, 1, &u.in->ambient[0]);
-    glUniform1f(4, u.shadowFactor);
-    glUniform3fv(5, 1, &u.eye[0]);
-    glUniform4iv(6, 1, &u.ranges[0]);
-    glUniform1i(10, u.first);
-    glUniform3fv(7, 1, &u.depthAware[0]);
-    if (u.in->hasCascades) glUniform4fv(11, 1, &u.in->cascadeDepth[0]);
+    gl::use(p);
+    gl::uniform(1, u.in->viewFromWorld);
+    gl::uniform(2, u.in->clipFromView);
+    gl::uniform(3, u.in->ambient);
+    gl::uniform(4, u.shadowFactor);
+    gl::uniform(5, u.eye);
+    gl::uniform(6, u.ranges);
+    gl::uniform(10, u.first);
+    gl::uniform(7, u.depthAware);
+    if (u.in->hasCascades) gl::uniform(11, u.in->cascadeDepth);
     if (u.in->viewDepth) {
-        glUniform4fv(8, 1, &u.viewZFromDepth[0]);
-        glUniform1f(9, u.contactLength);
-        glUniformMatrix4fv(13, 1, GL_FALSE, &u.clipFromWorld[0][0]);
+        gl::uniform(8, u.viewZFromDepth);
+        gl::uniform(9, u.contactLength);
+        gl::uniform(13, u.clipFromWorld);
     }
-    if (u.in->shadowMoments) glUniform1f(12, u.lightBleed);
+    if (u.in->shadowMoments) gl::uniform(12, u.lightBleed);
 }
 
 // Opaque and masked items in their order (the fast program, then the material one where

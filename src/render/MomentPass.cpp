@@ -68,17 +68,18 @@ int MomentPass::blur(const ShadowPass& pass, const ShadowedLight& light, int rad
     // moments array (one pass).
     const GLuint layerTarget = mLayerTargets[std::size_t(light.layer)].id();
     glBindFramebuffer(GL_FRAMEBUFFER, radius > 0 ? mRowTarget.id() : layerTarget);
-    glUseProgram(program(mFilter, true, radius).id());
-    glUniform4iv(0, 1, &square[0]);
-    glUniform3f(2, light.frame.near, light.frame.far, light.frame.orthographic ? 0.0f : 1.0f);
+    gl::use(program(mFilter, true, radius));
+    gl::uniform(0, square);
+    gl::uniform(
+        2, glm::vec3(light.frame.near, light.frame.far, light.frame.orthographic ? 0.0f : 1.0f));
     gl::bindTexture(0, pass.maps());
     glBindSampler(0, mStored.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     if (radius == 0) return 1;
     // Columns: into the map's square of the moments array.
     glBindFramebuffer(GL_FRAMEBUFFER, layerTarget);
-    glUseProgram(program(mFilter, false, radius).id());
-    glUniform4iv(0, 1, &square[0]);
+    gl::use(program(mFilter, false, radius));
+    gl::uniform(0, square);
     gl::bindTexture(0, mRows);
     glBindSampler(0, mStored.id());  // NEAREST: the shader reads texel centres
     glDrawArrays(GL_TRIANGLES, 0, 3);

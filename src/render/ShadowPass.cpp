@@ -195,8 +195,7 @@ void ShadowPass::drawCasters(const GpuScene& scene, const shadow::FramePlan& pla
             return casterCull(item, options, mHoldsLight[item.object] != 0);
         },
         [&](bool alpha) {
-            glUseProgram(
-                program(variant, alpha, options.blendShadows == BlendShadows::Coloured).id());
+            gl::use(program(variant, alpha, options.blendShadows == BlendShadows::Coloured));
             setUniforms();
         });
 }
@@ -228,8 +227,8 @@ double ShadowPass::bareDepthPass(const GpuScene& scene, const glm::mat4& clipFro
     glCullFace(GL_BACK);
     glDisable(GL_POLYGON_OFFSET_FILL);
     gl::setDepthClamp(false);
-    glUseProgram(program(kPlain, false).id());
-    glUniformMatrix4fv(1, 1, GL_FALSE, &clipFromWorld[0][0]);
+    gl::use(program(kPlain, false));
+    gl::uniform(1, clipFromWorld);
     scene.bind();
     std::uint32_t runStart = 0, runLength = 0;
     const std::vector<DrawItem>& items = scene.items();
@@ -305,8 +304,7 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
             fb.clearColour(white);
         }
         glDisable(GL_SCISSOR_TEST);
-        drawCasters(scene, plan, light, options, variant, 1,
-                    [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0][0]); });
+        drawCasters(scene, plan, light, options, variant, 1, [&] { gl::uniform(1, m[0]); });
     } else {
         // Only this light's six faces are cleared; other cubes keep their maps.
         mCubes.clearCubeDepth(light.layer, one);
@@ -319,16 +317,16 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
         if (mLayered) {
             glBindFramebuffer(GL_FRAMEBUFFER, mCubeFramebuffer.id());
             drawCasters(scene, plan, light, options, kCube, count, [&] {
-                glUniformMatrix4fv(1, 6, GL_FALSE, &m[0][0][0]);
-                glUniform1i(7, 6 * light.layer);
-                glUniform1iv(8, count, faces.data());
+                gl::uniform(1, std::span<const glm::mat4>(m));
+                gl::uniform(7, 6 * light.layer);
+                gl::uniform(8, std::span<const GLint>(faces.data(), std::size_t(count)));
             });
         } else {
             for (int face : std::span(faces.data(), size_t(count))) {
                 glBindFramebuffer(GL_FRAMEBUFFER,
                                   mCubeFaceFramebuffers[size_t(6 * light.layer + face)].id());
                 drawCasters(scene, plan, light, options, kPlain, 1,
-                            [&] { glUniformMatrix4fv(1, 1, GL_FALSE, &m[size_t(face)][0][0]); });
+                            [&] { gl::uniform(1, m[size_t(face)]); });
             }
         }
     }

@@ -114,8 +114,8 @@ void TransmittancePass::drawLight(const GpuScene& scene, const ShadowedLight& li
             scene, mVisible, 1, /*standIns=*/false, [](const DrawItem&) { return true; },
             [](const DrawItem&) { return Cull::None; },
             [&](bool) {
-                glUseProgram(program().id());
-                glUniformMatrix4fv(1, 1, GL_FALSE, &m[0][0]);
+                gl::use(program());
+                gl::uniform(1, m);
             });
     }
 }

@@ -55,9 +55,9 @@ void ViewDepthPass::draw(const GpuScene& scene) {
             return shadow::beyondNearPlane(item.bounds, clipFromWorld) ? Cull::Solids : Cull::None;
         },
         [&](bool alpha) {
-            glUseProgram(program(alpha).id());
-            glUniformMatrix4fv(1, 1, GL_FALSE, &mViewFromWorld[0][0]);
-            glUniformMatrix4fv(2, 1, GL_FALSE, &mClipFromView[0][0]);
+            gl::use(program(alpha));
+            gl::uniform(1, mViewFromWorld);
+            gl::uniform(2, mClipFromView);
         });
 }
 
@@ -84,9 +84,9 @@ void ViewDepthPass::reduce() {
     glBindFramebuffer(GL_FRAMEBUFFER, mRangeTarget.id());
     glViewport(0, 0, mGrid.cells.x, mGrid.cells.y);
     glDisable(GL_DEPTH_TEST);
-    glUseProgram(mReduce.id());
-    glUniform2i(0, mGrid.block, mGrid.block);
-    glUniform2i(1, mGrid.size.x, mGrid.size.y);
+    gl::use(mReduce);
+    gl::uniform(0, glm::ivec2(mGrid.block, mGrid.block));
+    gl::uniform(1, glm::ivec2(mGrid.size.x, mGrid.size.y));
     gl::bindTexture(0, mDepth);
     glBindSampler(0, 0);  // the main pass's comparing sampler would compare the gathers
     glBindVertexArray(mEmpty.id());

@@ -99,7 +99,6 @@ TEST(Tune, APixelIsNotAGain) {
         EXPECT_EQ(r.chosen, 0);
         return;
     }
-    EXPECT_TRUE(r.sameQuality || best.error < start.error);
     ASSERT_TRUE(r.shifted.done);
     ASSERT_EQ(r.shifted.bestErrors.size(), 4u);
     bool noWorseOnEach = true;
@@ -109,6 +108,11 @@ TEST(Tune, APixelIsNotAGain) {
     }
     EXPECT_EQ(r.shifted.holds, noWorseOnEach);
     EXPECT_EQ(r.chosen, r.shifted.holds ? r.best : 0);
+    // Which of tying trials is best depends on their timings; once chosen, it is the
+    // start's quality at less cost, or better.
+    if (r.chosen > 0) {
+        EXPECT_TRUE(r.sameQuality || best.error < start.error);
+    }
     const nlohmann::json j = nlohmann::json::parse(toJson(r, "tutorial-room"));
     EXPECT_EQ(j["chosen"].get<int>(), r.chosen);
     EXPECT_EQ(j["same_quality"].get<bool>(), r.sameQuality);
