@@ -20,6 +20,11 @@ struct ContextOptions {
     // Draw in the OpenGL 4.5 core context current on the calling thread (a window's, as in
     // `gnomon view`) instead of creating a headless one; it must be current at every call.
     bool currentContext = false;
+    // A headless OpenGL ES 3.0 context used as WebGL2 has it (what the browser build runs),
+    // for trying that path natively: no cube-map arrays, buffer textures, indirect draws,
+    // image stores (gnomon score) or shadow-map readback. Ignored with currentContext, whose
+    // API is found from the context itself.
+    bool gles = false;
 };
 
 // One light's shadow map read back from the GPU (grey, darker = nearer).

@@ -239,4 +239,8 @@ void installDebugOutput() {
     glDebugMessageCallback(onDebugMessage, nullptr);
 }
 
+void requireUsable() {
+    epoxy_is_desktop_gl() ? requireGl45() : requireGles3();
+}
+
 }  // namespace gnomon::gl

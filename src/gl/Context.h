@@ -38,6 +38,8 @@ std::string currentGlInfo();
 void requireGl45();
 // Throws gnomon::Error unless the current context is OpenGL ES >= 3.0.
 void requireGles3();
+// Either, by the current context's API.
+void requireUsable();
 // Routes KHR_debug messages of the current context to stderr (errors and warnings).
 void installDebugOutput();
 

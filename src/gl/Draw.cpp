@@ -3,34 +3,55 @@
 #include <algorithm>
 #include <cstring>
 
+#include "gl/Caps.h"
+#include "gl/Program.h"
+#include "gl/ShaderSource.h"
+
 namespace gnomon::gl {
 
 bool DrawCommands::assign(std::vector<DrawCommand>& commands) {
-    if (mBuffer && commands.size() == mData.size() &&
+    if (mHeld && commands.size() == mData.size() &&
         std::memcmp(commands.data(), mData.data(), mData.size() * sizeof(DrawCommand)) == 0) {
         return false;
     }
     mData.swap(commands);
-    mBuffer = Buffer("draw commands", std::max<std::size_t>(mData.size(), 1) * sizeof(DrawCommand),
-                     mData.empty() ? nullptr : mData.data(), 0);
+    mHeld = true;
+    if (activeCaps().drawIndirect) {
+        mBuffer =
+            Buffer("draw commands", std::max<std::size_t>(mData.size(), 1) * sizeof(DrawCommand),
+                   mData.empty() ? nullptr : mData.data(), 0);
+    }
     return true;
 }
 
 void DrawCommands::bind() const {
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mBuffer.id());
+    if (activeCaps().drawIndirect) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, mBuffer.id());
 }
 
 void DrawCommands::draw(std::size_t first, std::size_t count) const {
-    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                reinterpret_cast<const void*>(first * sizeof(DrawCommand)),
-                                GLsizei(count), 0);
+    if (activeCaps().drawIndirect) {
+        glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                    reinterpret_cast<const void*>(first * sizeof(DrawCommand)),
+                                    GLsizei(count), 0);
+        return;
+    }
+    for (std::size_t k = first; k < first + count; ++k)
+        drawElements(mData[k]);
 }
 
 void drawElements(const DrawCommand& c) {
-    glDrawElementsInstancedBaseVertexBaseInstance(
-        GL_TRIANGLES, GLsizei(c.count), GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>(std::size_t(c.firstIndex) * sizeof(GLuint)),
-        GLsizei(c.instanceCount), c.baseVertex, c.baseInstance);
+    const void* offset = reinterpret_cast<const void*>(std::size_t(c.firstIndex) * sizeof(GLuint));
+    if (activeCaps().drawIndirect) {
+        glDrawElementsInstancedBaseVertexBaseInstance(
+            GL_TRIANGLES, GLsizei(c.count), GL_UNSIGNED_INT, offset, GLsizei(c.instanceCount),
+            c.baseVertex, c.baseInstance);
+        return;
+    }
+    // ES: no base instance; the object index is a uniform of the program in use.
+    if (c.count == 0) return;
+    uniform(kDrawBaseLocation, int(c.baseInstance));
+    glDrawElementsInstanced(GL_TRIANGLES, GLsizei(c.count), GL_UNSIGNED_INT, offset,
+                            GLsizei(c.instanceCount));
 }
 
 }  // namespace gnomon::gl

@@ -28,14 +28,16 @@ public:
     void bind() const;
     // Commands [first, first + count), unsigned 32-bit indices, triangles.
     void draw(std::size_t first, std::size_t count) const;
-    bool empty() const { return !mBuffer; }
+    bool empty() const { return !mHeld; }
 
 private:
-    Buffer mBuffer;
+    bool mHeld = false;
+    Buffer mBuffer;  // OpenGL 4.5 only; ES draws from mData one command at a time
     std::vector<DrawCommand> mData;
 };
 
-// One command on its own (32-bit indices, triangles).
+// One command on its own (32-bit indices, triangles). On ES the object index goes to the
+// program in use as uDrawBase (gl::kDrawBaseLocation).
 void drawElements(const DrawCommand& command);
 
 }  // namespace gnomon::gl

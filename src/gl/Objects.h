@@ -112,6 +112,8 @@ public:
     // small.
     static Texture texelRows(const std::string& label, const float* rgba, std::size_t texels,
                              int rowTexels);
+    // New contents for a texelRows texture: `texels` texels (at most its width x height).
+    void writeTexelRows(const float* rgba, std::size_t texels);
     // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
     // storage.
     static Texture layersView(const std::string& label, const Texture& source);

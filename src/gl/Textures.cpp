@@ -297,6 +297,23 @@ Texture Texture::texelRows(const std::string& label, const float* rgba, std::siz
     return t;
 }
 
+void Texture::writeTexelRows(const float* rgba, std::size_t texels) {
+    const std::size_t w = std::size_t(mWidth), full = texels / w, rest = texels % w;
+    auto write = [&](int y, std::size_t width, std::size_t rows, const float* from) {
+        if (width == 0 || rows == 0) return;
+        if (dsa()) {
+            glTextureSubImage2D(id(), 0, 0, y, GLsizei(width), GLsizei(rows), GL_RGBA, GL_FLOAT,
+                                from);
+        } else {
+            glBindTexture(GL_TEXTURE_2D, id());
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, y, GLsizei(width), GLsizei(rows), GL_RGBA,
+                            GL_FLOAT, from);
+        }
+    };
+    write(0, w, full, rgba);
+    write(int(full), rest, 1, rgba + full * w * 4);
+}
+
 void bindTexture(int unit, const Texture& texture) {
     if (dsa()) {
         glBindTextureUnit(GLuint(unit), texture.id());

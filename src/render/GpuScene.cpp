@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "gl/Caps.h"
+#include "gl/ShaderSource.h"
 #include "gnomon/Error.h"
 #include "scene/MeshTopology.h"
 #include "scene/SceneUtil.h"
@@ -278,7 +279,18 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     }
     if (uploadDrawCommands()) changed = true;
     if (dataChanged) {
-        if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
+        const float* records = n ? &mObjectData[0].worldFromModel[0][0] : nullptr;
+        if (!gl::activeCaps().textureBuffers) {
+            // ES: rows of kObjectsPerRow records in a 2D texture (scene_data.glsl).
+            const int rowTexels = int(gl::kObjectsPerRow * kObjectTexels);
+            if (mObjectCount != n || !mObjectTexels) {
+                checkObjectTexels(n);
+                mObjectTexels =
+                    gl::Texture::texelRows("scene objects", records, n * kObjectTexels, rowTexels);
+            } else if (n > 0) {
+                mObjectTexels.writeTexelRows(records, n * kObjectTexels);
+            }
+        } else if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
             checkObjectTexels(n);
             mObjects = gl::Buffer("scene objects", n * sizeof(GpaObject), mObjectData.data(),
                                   GL_DYNAMIC_STORAGE_BIT);
@@ -286,6 +298,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         } else {
             mObjects.update(0, n * sizeof(GpaObject), mObjectData.data());
         }
+        mObjectCount = n;
         changed = true;
     }
     if (changed) ++mRevision;
@@ -298,14 +311,19 @@ std::string objectRecordsOverflow(std::size_t objects, std::size_t maxTexels) {
     const std::size_t texels = objects * kObjectTexels;
     if (texels <= maxTexels) return {};
     return "the scene has " + std::to_string(objects) + " objects: their records need " +
-           std::to_string(texels) + " texels of a buffer texture, more than this driver's " +
+           std::to_string(texels) + " texels of a data texture, more than this driver's " +
            std::to_string(maxTexels) + "; merge objects that share a material";
 }
 
-// A buffer texture holds at most GL_MAX_TEXTURE_BUFFER_SIZE texels (65 536 at least).
+// A buffer texture holds at most GL_MAX_TEXTURE_BUFFER_SIZE texels (65 536 at least); ES's
+// rows of records, kObjectsPerRow records a row and at most MAX_TEXTURE_SIZE rows.
 void GpuScene::checkObjectTexels(std::size_t objects) {
-    const int most = gl::activeCaps().maxTextureBufferSize;
-    const std::string overflow = objectRecordsOverflow(objects, std::size_t(std::max(most, 0)));
+    const gl::Caps& caps = gl::activeCaps();
+    const std::size_t most =
+        caps.textureBuffers
+            ? std::size_t(std::max(caps.maxTextureBufferSize, 0))
+            : gl::kObjectsPerRow * kObjectTexels * std::size_t(std::max(caps.maxTextureSize, 0));
+    const std::string overflow = objectRecordsOverflow(objects, most);
     if (!overflow.empty()) throw Error(ErrorKind::Gl, overflow);
 }
 
@@ -315,7 +333,9 @@ bool GpuScene::uploadDrawCommands() {
     const std::size_t n = mItems.size();
     // Object indices, read as an instanced attribute: instance i of a draw with base
     // instance b reads entry b + i / divisor.
-    if (!mObjectIds || mObjectIds.size() != std::max<std::size_t>(n, 1) * sizeof(GLuint)) {
+    // ES has no base instance: the shaders take the object index from a uniform instead.
+    if (gl::activeCaps().drawIndirect &&
+        (!mObjectIds || mObjectIds.size() != std::max<std::size_t>(n, 1) * sizeof(GLuint))) {
         std::vector<GLuint> ids(std::max<std::size_t>(n, 1));
         for (std::size_t i = 0; i < ids.size(); ++i)
             ids[i] = GLuint(i);
@@ -361,7 +381,7 @@ void GpuScene::bind() const {
 }
 
 void GpuScene::setInstanceDivisor(GLsizei instances) const {
-    if (instances == mDivisor) return;
+    if (instances == mDivisor || !mObjectIds) return;
     mVao.divisor(1, int(instances));  // every copy: one object
     mDivisor = instances;
 }

@@ -162,8 +162,9 @@ private:
     void setInstanceDivisor(GLsizei instances) const;
 
     gl::Buffer mVertices, mIndices, mObjects;
-    gl::Texture mObjectTexels;  // mObjects as RGBA32F texels, 13 per record
-    gl::Buffer mObjectIds;      // 0..n-1: attribute 4, one per instance
+    gl::Texture mObjectTexels;     // mObjects as RGBA32F texels, 13 per record
+    std::size_t mObjectCount = 0;  // records in mObjectTexels
+    gl::Buffer mObjectIds;         // 0..n-1: attribute 4, one per instance
     // One command per item and part (all, closed, open), for 1 to 6 instances, then the same
     // for the stand-ins: commandIndex.
     gl::DrawCommands mCommands;

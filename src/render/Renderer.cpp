@@ -91,14 +91,15 @@ struct Renderer::Impl {
     static std::optional<gl::HeadlessContext> openContext(const ContextOptions& o) {
         if (!o.currentContext) {
             return std::optional<gl::HeadlessContext>(std::in_place, o.debug || kDebugBuild,
-                                                      o.verbose);
+                                                      o.verbose,
+                                                      o.gles ? gl::Api::Gles3 : gl::Api::Gl45);
         }
         if (!gl::hasCurrentContext()) {
             throw Error(ErrorKind::Gl,
                         "Renderer: ContextOptions::currentContext is set but no OpenGL context "
                         "is current on this thread");
         }
-        gl::requireGl45();
+        gl::requireUsable();
         if (o.debug || kDebugBuild) gl::installDebugOutput();
         return std::nullopt;
     }

@@ -4,12 +4,24 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "GlTest.h"
 
 namespace gnomon::test {
+// GNOMON_TEST_GLES=1: the renderer on OpenGL ES 3.0 as WebGL2 has it (ctest label gles).
+bool testsGles() {
+    const char* v = std::getenv("GNOMON_TEST_GLES");
+    return v && std::string(v) == "1";
+}
+
 Renderer& sharedRenderer() {
-    static Renderer renderer;
+    static Renderer renderer([] {
+        ContextOptions o;
+        o.gles = testsGles();
+        return o;
+    }());
     return renderer;
 }
 }  // namespace gnomon::test

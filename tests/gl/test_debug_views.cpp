@@ -24,6 +24,7 @@ int mismatches(const Image& view, int x0, int y0, const Image16& map, int face, 
 }
 
 TEST(DebugViews, ShadowMapShowsTheStoredDepths) {
+    GNOMON_NEEDS_DEPTH_READBACK();
     Scene s = builtinScene("tutorial-room");
     RenderOptions o = s.options;
     o.width = o.height = 256;
@@ -36,6 +37,7 @@ TEST(DebugViews, ShadowMapShowsTheStoredDepths) {
 }
 
 TEST(DebugViews, ShadowMapUnfoldsACubeInTwoRows) {
+    GNOMON_NEEDS_DEPTH_READBACK();
     Scene s = builtinScene("tutorial-point");
     RenderOptions o = s.options;
     o.width = 3 * 128;
@@ -53,6 +55,7 @@ TEST(DebugViews, ShadowMapUnfoldsACubeInTwoRows) {
 }
 
 TEST(DebugViews, ShadowMapPutsCascadesSideBySide) {
+    GNOMON_NEEDS_DEPTH_READBACK();
     Scene s = builtinScene("tutorial-room");
     RenderOptions o = s.options;
     o.width = 3 * 64;

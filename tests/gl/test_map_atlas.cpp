@@ -28,6 +28,7 @@ Scene fiveSpots() {
 }
 
 TEST(MapAtlas, SmallMapsShareALayerAndShadowAsIfAlone) {
+    GNOMON_NEEDS_SCORE();
     const Scene s = fiveSpots();
     Renderer& r = sharedRenderer();
     RenderOptions o;

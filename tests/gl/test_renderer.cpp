@@ -20,6 +20,13 @@ RenderOptions small(const Scene& s) {
     return o;
 }
 
+// The label `gles` runs these tests on OpenGL ES, the others on OpenGL 4.5 core: each on the
+// API it names, so that a silent fallback cannot pass for the web's path.
+TEST(Renderer, RunsOnTheApiAskedFor) {
+    const std::string info = sharedRenderer().glInfo();
+    EXPECT_EQ(info.find("OpenGL ES") != std::string::npos, testsGles()) << info;
+}
+
 TEST(Renderer, BookShadowIsColourTimesFactor) {
     const Scene s = builtinScene("book-triangle");
     RenderOptions o = small(s);

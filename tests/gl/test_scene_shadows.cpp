@@ -99,6 +99,7 @@ TEST(Shadows, ManualShadowCameraWithoutPlanesInMillimetres) {
 
 // at least 16 shadowed lights in one main pass, each with its own map.
 TEST(Shadows, SixteenSpotLightsEachCastTheirShadow) {
+    GNOMON_NEEDS_DEPTH_READBACK();
     Scene scene;
     scene.name = "sixteen spots";
     Material grey;
