@@ -33,8 +33,11 @@ Image truthPicture(const Scene& scene, const RenderOptions& options, truth::Trac
     truth::ReferenceOptions ro;
     ro.threads = 1;
     ro.tracer = tracer;
-    const truth::Reference ref = truth::traceReference(scene, options, ro);
+    // Only the light shown is traced (the scene's others would cost rays and show nothing).
     const int light = pictureLight(scene, options);
+    RenderOptions traced = options;
+    if (light >= 0 && lightIsOn(scene, options, std::size_t(light))) traced.lightOnly = light;
+    const truth::Reference ref = truth::traceReference(scene, traced, ro);
     Image image(ref.width, ref.height, 4);
     for (int y = 0; y < ref.height; ++y) {
         for (int x = 0; x < ref.width; ++x) {

@@ -1,9 +1,11 @@
 // The picture the web page shows while the renderer does not yet run in the browser: the scene
 // from its camera as the ray-traced reference sees it (truth/Reference.h), shaded by one
-// light. Each surface shows its material's base colour, times a quarter where the light's
-// shadow ray is blocked or the light does not reach it, and brighter with the cosine to the
-// light where it arrives. The page traces it on the project's BVH; the native check of the
-// page (tests/web) traces the same picture on Embree, so the two can be compared.
+// light. Each surface shows its material's base colour (textures left out), brighter with
+// the cosine to the light where the light's shadow ray arrives, and a quarter of it where the
+// ray is blocked or the reference traces none (the light does not reach the surface, or it
+// takes no part in shadows: --shadows off, a light that casts none, a surface that receives
+// none). The page traces it on the project's BVH; the native check of the page (tests/web)
+// traces the same picture on Embree, so the two can be compared.
 #pragma once
 
 #include "gnomon/Image.h"
