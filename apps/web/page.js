@@ -10,6 +10,7 @@ var Module = {
     printErr: (text) => console.warn(text),
     onRuntimeInitialized: () => {
         fillMenu();
+        element('file').addEventListener('change', (e) => loadFiles(e.target.files));
         window.addEventListener('hashchange', show);
         show();
     },
@@ -34,6 +35,26 @@ function fillMenu() {
         const params = addressParams();
         params.set('scene', menu.value);
         location.hash = params.toString();
+    });
+}
+
+// Files chosen with the button go into the page's memory file system under /upload (a .gltf
+// with its .bin and textures: chosen together), and the address names the model; the link
+// then works only in this page, while the files are in memory.
+function loadFiles(files) {
+    if (!files.length) return;
+    if (!Module.FS.analyzePath('/upload').exists) Module.FS.mkdir('/upload');
+    const written = [...files].map((file) => file.arrayBuffer().then((bytes) => {
+        Module.FS.writeFile('/upload/' + file.name, new Uint8Array(bytes));
+    }));
+    Promise.all(written).then(() => {
+        const names = [...files].map((file) => file.name);
+        const model = names.find((name) => /\.(gltf|glb)$/i.test(name)) || names[0];
+        const params = addressParams();
+        params.set('scene', '/upload/' + model);
+        const address = '#' + params.toString();
+        if (location.hash === address) show();  // the same files again: no hashchange
+        else location.hash = address;
     });
 }
 

@@ -79,9 +79,25 @@ async function launch() {
     return browser;
 }
 
-// Opens `url` and waits until the title begins with one of `done` (e.g. 'gnomon ready',
-// 'gnomon error') or `timeoutMs` passes. Resolves to {page, title, errors}; errors: what the
-// page logged as errors or threw, one line each. Throws Setup on timeout, with those lines.
+// Waits until the page's title begins with one of `done` (e.g. 'gnomon ready', 'gnomon
+// error') or `timeoutMs` passes; resolves to the title. Throws Setup on timeout, with the
+// lines in `errors`.
+async function waitForTitle(page, done, timeoutMs, errors) {
+    try {
+        await page.waitForFunction(
+            (prefixes) => prefixes.some((p) => document.title.startsWith(p)),
+            {timeout: timeoutMs, polling: 100}, done);
+    } catch (e) {
+        const title = await page.title().catch(() => '?');
+        throw new Setup(`${page.url()}: the title did not begin with '${done.join("' or '")}' ` +
+                        `within ${timeoutMs / 1000} s (it is '${title}')` +
+                        (errors.length ? '; the page logged:\n  ' + errors.join('\n  ') : ''));
+    }
+    return page.title();
+}
+
+// Opens `url` and waits for its title (waitForTitle). Resolves to {page, title, errors};
+// errors: what the page logged as errors or threw, one line each, kept as it runs on.
 async function open(browser, url, done, timeoutMs) {
     const page = await browser.newPage();
     const errors = [];
@@ -91,17 +107,7 @@ async function open(browser, url, done, timeoutMs) {
     page.on('pageerror', (e) => errors.push('uncaught: ' + e.message));
     page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
     await page.goto(url);
-    try {
-        await page.waitForFunction(
-            (prefixes) => prefixes.some((p) => document.title.startsWith(p)),
-            {timeout: timeoutMs, polling: 100}, done);
-    } catch (e) {
-        const title = await page.title().catch(() => '?');
-        throw new Setup(`${url}: the title did not begin with '${done.join("' or '")}' within ` +
-                        `${timeoutMs / 1000} s (it is '${title}')` +
-                        (errors.length ? '; the page logged:\n  ' + errors.join('\n  ') : ''));
-    }
-    return {page, title: await page.title(), errors};
+    return {page, title: await waitForTitle(page, done, timeoutMs, errors), errors};
 }
 
-module.exports = {Setup, serve, launch, open};
+module.exports = {Setup, serve, launch, open, waitForTitle};
