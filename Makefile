@@ -1,5 +1,7 @@
 # gnomon: the two quick-start commands (`make demo`, `make test`) and their helpers.
 # SANITIZE=1 builds with ASan+UBSan (Debug) into build/asan instead of build/release.
+# `make web` builds the web page into build/web (docs/web.md); `make test` builds it too and
+# runs its browser tests with the rest.
 
 SANITIZE ?= 0
 JOBS ?= $(shell nproc)
@@ -20,8 +22,13 @@ OUT ?= out
 # `make install`: gnomon into PREFIX/bin (and the library for find_package); the default needs
 # no root and ~/.local/bin is on PATH in Debian's default profile once it exists.
 PREFIX ?= $(HOME)/.local
+# The web page: Emscripten's build tree, and the page itself. Emscripten's tools run on Node
+# and need Debian's Node modules (acorn), which a Node from elsewhere does not search.
+WEB_BUILD := build/web-build
+WEB_OUT := build/web
+WEB_ENV := NODE_PATH=/usr/share/nodejs
 
-.PHONY: all deps configure build demo test install format clean
+.PHONY: all deps configure build demo test web install format clean
 all: build
 
 deps:
@@ -36,8 +43,19 @@ build: configure
 demo: build
 	@scripts/demo.sh $(GNOMON) $(OUT)
 
+# A page that did not build fails the web tests, which say why; the other tests run anyway.
 test: build
+	@$(MAKE) --no-print-directory web || echo "gnomon: make web failed; the web tests will fail" >&2
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# build/web/.built marks a page the last `make web` finished: the browser tests check it.
+web:
+	@rm -f $(WEB_OUT)/.built
+	@scripts/web-deps.sh
+	@[ -f $(WEB_BUILD)/CMakeCache.txt ] || \
+	    $(WEB_ENV) emcmake cmake -S . -B $(WEB_BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@$(WEB_ENV) cmake --build $(WEB_BUILD) -j $(JOBS)
+	@touch $(WEB_OUT)/.built
 
 install: build
 	@cmake --install $(BUILD_DIR) --prefix $(PREFIX) >/dev/null

@@ -185,25 +185,12 @@ RenderOptions RenderFlags::resolve(const Scene& scene) const {
 }
 
 void RenderFlags::apply(RenderOptions& o) const {
-    for (const OptionSpec& spec : optionSchema()) {
-        if (!given(spec)) continue;
-        if (auto why = parseOption(spec, values.at(spec.name), o))
-            bad("--" + std::string(spec.name), *why);
-    }
-    if (auto problems = o.validate(); !problems.empty()) {
-        std::string all;
-        for (const auto& p : problems)
-            all += (all.empty() ? "" : "; ") + p;
-        throw Error(ErrorKind::InvalidInput, all);
-    }
+    std::map<std::string, std::string> texts;  // the flags given
+    for (const OptionSpec& spec : optionSchema())
+        if (given(spec)) texts[spec.name] = values.at(spec.name);
     // A flag given that the other options make pointless: said once, not silently ignored.
-    for (const OptionSpec& spec : optionSchema()) {
-        if (spec.matters && given(spec) && !spec.matters(o)) {
-            std::fprintf(stderr,
-                         "gnomon: warning: --%s does nothing here: it applies only with %s\n",
-                         spec.name, spec.onlyWith);
-        }
-    }
+    for (const std::string& warning : applyOptionTexts(texts, o))
+        std::fprintf(stderr, "gnomon: warning: %s\n", warning.c_str());
 }
 
 bool RenderFlags::given(const OptionSpec& spec) const {

@@ -6,6 +6,7 @@
 // code that uses it (docs/extending.md).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,6 +85,14 @@ std::string optionRange(const OptionSpec& spec);
 std::string optionValueName(const OptionSpec& spec);
 // "" when `spec`'s value in `o` is within its range, else one sentence naming the option.
 std::string checkOption(const OptionSpec& spec, const RenderOptions& o);
+// Sets the options `given` names (schema name -> CLI spelling) over `o`, in schema order,
+// then validate()s them all: what the CLI's flags and the web page's address do. Throws
+// gnomon::Error (InvalidInput) in the CLI's words: "--map-size: ..." for text parseOption
+// refuses, validate()'s sentences joined by "; " for values out of range. Returns one
+// warning per given option the others make pointless ("--pcf-size does nothing here: it
+// applies only with ..."). Names outside the schema are the caller's to refuse.
+std::vector<std::string> applyOptionTexts(const std::map<std::string, std::string>& given,
+                                          RenderOptions& o);
 
 // The docs' option tables, made from the schema (README.md and docs/scene-file.md hold
 // them between <!-- options:... --> markers; a test keeps them equal to these).

@@ -6,6 +6,7 @@
 #include <limits>
 #include <regex>
 
+#include "gnomon/Error.h"
 #include "gnomon/OptionSchema.h"
 
 namespace gnomon {
@@ -188,6 +189,26 @@ std::string checkOption(const OptionSpec& spec, const RenderOptions& o) {
         }
     }
     return "";
+}
+
+std::vector<std::string> applyOptionTexts(const std::map<std::string, std::string>& given,
+                                          RenderOptions& o) {
+    for (const OptionSpec& spec : optionSchema()) {
+        const auto text = given.find(spec.name);
+        if (text == given.end()) continue;
+        if (auto why = parseOption(spec, text->second, o))
+            throw Error(ErrorKind::InvalidInput, "--" + std::string(spec.name) + ": " + *why);
+    }
+    if (auto problems = o.validate(); !problems.empty())
+        throw Error(ErrorKind::InvalidInput, joined(problems, "; "));
+    std::vector<std::string> warnings;
+    for (const OptionSpec& spec : optionSchema()) {
+        if (spec.matters && given.count(spec.name) && !spec.matters(o)) {
+            warnings.push_back("--" + std::string(spec.name) +
+                               " does nothing here: it applies only with " + spec.onlyWith);
+        }
+    }
+    return warnings;
 }
 
 namespace {

@@ -3,10 +3,10 @@
 #include "scene/SceneFileWrite.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
+#include "core/FloatText.h"
 #include "gnomon/Error.h"
 #include "gnomon/Image.h"
 #include "gnomon/OptionSchema.h"
@@ -19,10 +19,7 @@ namespace {
 // 0.10000000149011612).
 OJson number(float v) {
     if (!std::isfinite(v)) return OJson(double(v));  // refused by checkFinite
-    char buf[64];
-    const auto res = std::to_chars(buf, buf + sizeof buf, v);
-    *res.ptr = '\0';
-    return OJson(std::strtod(buf, nullptr));
+    return OJson(std::strtod(shortestText(v).c_str(), nullptr));
 }
 
 OJson vec(const glm::vec3& v) {

@@ -1,0 +1,89 @@
+// The page's entry points, bound to JavaScript with embind (apps/web/page.js calls them): the
+// scenes it can show, and `show(address)`, which reads the address, loads the scene, traces
+// its picture on the project's BVH (TruthPicture.h) and hands back the pixels with a short
+// report. Errors come back in the CLI's words, prefixed as the CLI prefixes them.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "PageRequest.h"
+#include "TruthPicture.h"
+#include "gnomon/Error.h"
+
+namespace {
+
+using emscripten::val;
+
+// Where the page's bundled models are (file_packager's --preload DIR@/scenes; absent when
+// the build found none).
+constexpr const char* kBundle = "/scenes";
+
+val strings(const std::vector<std::string>& list) {
+    val out = val::array();
+    for (const std::string& s : list)
+        out.call<void>("push", s);
+    return out;
+}
+
+// "light 0 (directional, sun)": the light the picture shows.
+std::string lightLabel(const gnomon::Scene& scene, int light) {
+    if (light < 0) return "no light";
+    const gnomon::Light& l = scene.lights[std::size_t(light)];
+    return "light " + std::to_string(light) + " (" + gnomon::toString(l.type) +
+           (l.name.empty() ? "" : ", " + l.name) + ")";
+}
+
+// Built-in scene names, then the bundled models' folders, for the page's menu.
+val scenes() {
+    std::vector<std::string> names;
+    for (const gnomon::SceneInfo& s : gnomon::builtinScenes())
+        names.push_back(s.name);
+    std::vector<std::string> models;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(kBundle, ec), end; !ec && it != end;
+         it.increment(ec)) {
+        if (it->is_directory(ec)) models.push_back(it->path().filename().string());
+    }
+    std::sort(models.begin(), models.end());
+    names.insert(names.end(), models.begin(), models.end());
+    return strings(names);
+}
+
+// {ok, width, height, pixels (RGBA, a copy), scene, light, seconds, warnings} or {ok: false,
+// error}.
+val show(const std::string& address) {
+    val result = val::object();
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        const gnomon::web::PageScene page =
+            gnomon::web::loadRequest(gnomon::web::parseAddress(address), kBundle);
+        const gnomon::Image image =
+            gnomon::web::truthPicture(page.scene, page.options, gnomon::truth::TracerKind::Bvh);
+        const int light = gnomon::web::pictureLight(page.scene, page.options);
+        const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+        result.set("ok", true);
+        result.set("width", image.width);
+        result.set("height", image.height);
+        result.set("pixels", val::global("Uint8ClampedArray")
+                                 .new_(emscripten::typed_memory_view(image.pixels.size(),
+                                                                     image.pixels.data())));
+        result.set("scene", page.scene.name);
+        result.set("light", lightLabel(page.scene, light));
+        result.set("seconds", took.count());
+        result.set("warnings", strings(page.warnings));
+    } catch (const std::exception& e) {
+        result.set("ok", false);
+        result.set("error", std::string("gnomon: error: ") + e.what());
+    }
+    return result;
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(gnomon_page) {
+    emscripten::function("scenes", &scenes);
+    emscripten::function("show", &show);
+}
