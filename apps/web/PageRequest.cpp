@@ -36,7 +36,7 @@ std::string decoded(const std::string& text) {
 
 // Every key the address takes, for the nearest-name hint.
 std::vector<std::string> knownKeys() {
-    std::vector<std::string> keys = {"scene", "preset", "ground"};
+    std::vector<std::string> keys = {"scene", "preset", "ground", "picture"};
     for (const OptionSpec& spec : optionSchema())
         keys.push_back(spec.name);
     return keys;
@@ -54,6 +54,10 @@ void setKey(PageRequest& r, const std::string& key, const std::string& value) {
         if (value != "" && value != "on" && value != "off")
             refuse("ground: expected on or off, got '" + value + "'");
         r.ground = value != "off";
+    } else if (key == "picture") {
+        if (value != "render" && value != "truth")
+            refuse("picture: expected render or truth, got '" + value + "'");
+        r.truth = value == "truth";
     } else if (findOption(key)) {
         r.options[key] = value;
     } else {

@@ -1,6 +1,6 @@
 // What the web page's address asks for: `#scene=NAME&OPTION=VALUE&...`, with the CLI's option
-// names and spellings (gnomon/OptionSchema.h) plus `scene`, `preset` and `ground`, read into
-// a scene and its options. Anything wrong is refused in the CLI's words, so a link that does
+// names and spellings (gnomon/OptionSchema.h) plus `scene`, `preset`, `ground` and `picture`, read
+// into a scene and its options. Anything wrong is refused in the CLI's words, so a link that does
 // not work says why as `gnomon render` would. No GL and no browser: the native check of the
 // page (tests/web) reads the same address with the same code.
 #pragma once
@@ -18,6 +18,8 @@ struct PageRequest {
     std::string scene = "book-triangle";  // a built-in scene, or a model in the page's bundle
     Preset preset = Preset::Default;      // where options start, as --preset
     bool ground = false;                  // as --ground: a floor under a model without one
+    // picture=truth: the ray-traced picture (TruthPicture.h) instead of the renderer's.
+    bool truth = false;
     std::map<std::string, std::string> options;  // schema name -> text as given
 };
 

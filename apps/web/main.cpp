@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "PageRequest.h"
+#include "RenderPicture.h"
 #include "TruthPicture.h"
 #include "gnomon/Error.h"
 
@@ -58,10 +59,12 @@ val show(const std::string& address) {
     val result = val::object();
     try {
         const auto start = std::chrono::steady_clock::now();
-        const gnomon::web::PageScene page =
-            gnomon::web::loadRequest(gnomon::web::parseAddress(address), kBundle);
-        const gnomon::Image image =
-            gnomon::web::truthPicture(page.scene, page.options, gnomon::truth::TracerKind::Bvh);
+        const gnomon::web::PageRequest request = gnomon::web::parseAddress(address);
+        const gnomon::web::PageScene page = gnomon::web::loadRequest(request, kBundle);
+        const gnomon::Image image = request.truth
+                                        ? gnomon::web::truthPicture(page.scene, page.options,
+                                                                    gnomon::truth::TracerKind::Bvh)
+                                        : gnomon::web::renderPicture(page.scene, page.options);
         const int light = gnomon::web::pictureLight(page.scene, page.options);
         const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
         result.set("ok", true);
@@ -72,6 +75,7 @@ val show(const std::string& address) {
                                                                      image.pixels.data())));
         result.set("scene", page.scene.name);
         result.set("light", lightLabel(page.scene, light));
+        result.set("truth", request.truth);
         result.set("seconds", took.count());
         result.set("warnings", strings(page.warnings));
     } catch (const std::exception& e) {

@@ -1,5 +1,6 @@
 // gnomon's page (apps/web): reads the address (#scene=NAME&OPTION=VALUE..., the command
-// line's option names), asks the wasm module (main.cpp) for the scene's ray-traced picture,
+// line's option names), asks the wasm module (main.cpp) for the scene's picture (rendered with
+// WebGL2, or with picture=truth ray-traced),
 // draws it into the canvas #gnomon and says in the title when it is done: "gnomon ready: ..."
 // (what the browser tests wait for) or "gnomon error: ..." with the CLI's message.
 'use strict';
@@ -59,8 +60,8 @@ function loadFiles(files) {
 }
 
 function show() {
-    document.title = 'gnomon: tracing';
-    element('status').textContent = 'tracing…';
+    document.title = 'gnomon: working';
+    element('status').textContent = 'working…';
     element('scene').value = addressParams().get('scene') || 'book-triangle';
     // A frame first, so the status shows before the trace holds the page.
     requestAnimationFrame(() => setTimeout(() => draw(Module.show(location.hash)), 0));
@@ -92,8 +93,10 @@ function draw(result) {
         warnings.append(item);
     }
     const ms = Math.round(result.seconds * 1000);
-    element('caption').textContent = `${result.scene} at ${result.width}×${result.height}, ` +
-        `${result.light}: traced on the BVH in ${ms} ms`;
+    element('caption').textContent = result.truth
+        ? `${result.scene} at ${result.width}×${result.height}, ${result.light}: traced on ` +
+              `the BVH in ${ms} ms`
+        : `${result.scene} at ${result.width}×${result.height}: rendered with WebGL2 in ${ms} ms`;
     element('status').textContent = 'ready';
     document.title = `gnomon ready: ${result.scene} ${result.width}x${result.height}`;
 }

@@ -1,6 +1,10 @@
 #include "gl/Caps.h"
 
-#include <epoxy/gl.h>
+#include <cstring>
+#include <set>
+#include <string>
+
+#include "gl/Gl.h"
 
 namespace gnomon::gl {
 namespace {
@@ -11,8 +15,20 @@ int integer(GLenum name) {
     return int(value);
 }
 
-bool has(const char* extension) {
-    return epoxy_has_gl_extension(extension);
+// The context's extensions by name ("GL_EXT_depth_clamp"; a browser's WebGL extensions
+// have the same "GL_" names in Emscripten).
+std::set<std::string> extensions() {
+    std::set<std::string> out;
+    for (int i = 0, n = integer(GL_NUM_EXTENSIONS); i < n; ++i) {
+        const GLubyte* name = glGetStringi(GL_EXTENSIONS, GLuint(i));
+        if (name) out.insert(reinterpret_cast<const char*>(name));
+    }
+    return out;
+}
+
+bool isEs() {
+    const GLubyte* version = glGetString(GL_VERSION);
+    return version && std::strncmp(reinterpret_cast<const char*>(version), "OpenGL ES", 9) == 0;
 }
 
 const Caps kGl45{};
@@ -22,7 +38,9 @@ thread_local const Caps* tActive = nullptr;
 
 Caps queryCaps() {
     Caps c;
-    c.api = epoxy_is_desktop_gl() ? Api::Gl45 : Api::Gles3;
+    const std::set<std::string> all = extensions();
+    auto has = [&](const char* name) { return all.count(name) > 0; };
+    c.api = isEs() ? Api::Gles3 : Api::Gl45;
     c.maxUniformBlockSize = integer(GL_MAX_UNIFORM_BLOCK_SIZE);
     c.maxTextureSize = integer(GL_MAX_TEXTURE_SIZE);
     c.maxArrayLayers = integer(GL_MAX_ARRAY_TEXTURE_LAYERS);

@@ -3,7 +3,7 @@
 // its delete call; creation goes through DSA (glCreate*) so objects exist before binding.
 #pragma once
 
-#include <epoxy/gl.h>
+#include "gl/Gl.h"
 
 #include <string>
 #include <utility>

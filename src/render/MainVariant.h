@@ -5,8 +5,8 @@
 // distinct variants give distinct defines.
 #pragma once
 
-#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -49,7 +49,12 @@ struct MainVariant {
     Bits cascadedCount : 4 = 0;
     Bits unused : 8 = 0;
 
-    std::uint64_t key() const { return std::bit_cast<std::uint64_t>(*this); }
+    // The bits as one number (memcpy: libc++ 14, the web build's, has no std::bit_cast).
+    std::uint64_t key() const {
+        std::uint64_t k = 0;
+        std::memcpy(&k, this, sizeof k);
+        return k;
+    }
     // main.frag.glsl's #defines for this variant, after MAX_LIGHTS.
     std::vector<std::string> defines(int maxLights) const;
     // The defines without the unrolled loops' bodies, as a program's label.

@@ -63,6 +63,10 @@ void ViewDepthPass::draw(const GpuScene& scene) {
 
 void ViewDepthPass::allocate(const shadow::SampleGrid& grid) {
     mDepth = gl::Texture::plain2D("view depth", GL_DEPTH_COMPONENT32F, grid.size.x, grid.size.y);
+    // Read with texelFetch and no sampler (reduce()): ES counts a depth texture filtered
+    // LINEAR without comparison, or with mipmaps it lacks, as incomplete, reading 0.
+    mDepth.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    mDepth.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     mTarget = gl::Framebuffer("view depth");
     mTarget.depthOnly();
     mTarget.attach(GL_DEPTH_ATTACHMENT, mDepth);

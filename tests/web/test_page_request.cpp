@@ -47,6 +47,13 @@ TEST(PageAddress, GroundIsAFlagOrOnOrOff) {
     EXPECT_THROW(parseAddress("#ground=maybe"), Error);
 }
 
+TEST(PageAddress, PictureIsTheRenderUnlessTruthIsAsked) {
+    EXPECT_FALSE(parseAddress("#scene=book-triangle").truth);
+    EXPECT_FALSE(parseAddress("#picture=render").truth);
+    EXPECT_TRUE(parseAddress("#picture=truth").truth);
+    EXPECT_THROW(parseAddress("#picture=raytraced"), Error);
+}
+
 TEST(PageAddress, RefusesUnknownAndRepeatedKeysAndBadPresets) {
     EXPECT_EQ(errorOf("#map-sise=64"),
               "unknown option in the address: 'map-sise'; did you "

@@ -1,0 +1,15 @@
+// The page's real-time picture: gnomon's renderer in a WebGL2 context of the page's own
+// (canvas #gl, never shown), the frame read back as the CLI's `gnomon render` reads it.
+#pragma once
+
+#include "gnomon/Image.h"
+#include "gnomon/Options.h"
+#include "gnomon/Scene.h"
+
+namespace gnomon::web {
+
+// Throws gnomon::Error when the browser gives no WebGL2 context with float render targets,
+// or for what the renderer refuses (in the CLI's words).
+Image renderPicture(const Scene& scene, const RenderOptions& options);
+
+}  // namespace gnomon::web
