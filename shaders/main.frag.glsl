@@ -61,7 +61,17 @@ layout(location = 11) uniform vec4 uCascadeDepth;
 #define CASCADE_DEPTH 0.0
 #endif
 
-#ifdef VISIBILITY_PASS
+#if defined(VISIBILITY_PASS) && defined(GNOMON_GLES)
+// OpenGL ES 3.0 (WebGL2) has no image stores: one light's record a pass, uRecordLight's, into
+// colour targets beside the (unused) colour: visibility, texel world size and 1 + the object
+// (0: none); with coloured shadows the tint.
+#define VISIBILITY_OUTPUTS
+layout(location = 15) uniform int uRecordLight;
+layout(location = 1) out vec4 fVisibility;
+#ifdef COLOURED_SHADOWS
+layout(location = 2) out vec4 fTint;
+#endif
+#elif defined(VISIBILITY_PASS)
 layout(early_fragment_tests) in;
 layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
 // Per pixel: 1 + the scene object whose shadows are recorded here (0: none), so that the
@@ -158,7 +168,15 @@ void shade(LightRecord light, Surface s, vec3 toLight, float falloff, vec3 visib
 #endif
 }
 
-#ifdef VISIBILITY_PASS
+#ifdef VISIBILITY_OUTPUTS
+void recordVisibility(LightRecord light, ShadowSample shadow) {
+    if (light.sceneLight != uRecordLight) return;
+    fVisibility.xy = vec2(shadow.visibility, shadow.texelWorld);
+#ifdef COLOURED_SHADOWS
+    fTint = vec4(shadow.tint, 1.0);
+#endif
+}
+#elif defined(VISIBILITY_PASS)
 void recordVisibility(LightRecord light, ShadowSample shadow) {
     imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight),
                vec4(shadow.visibility, shadow.texelWorld, 0.0, 0.0));
@@ -405,7 +423,12 @@ void main() {
     if (vIn.alpha.y != 2.0) alpha = 1.0;
     s.blended = vIn.alpha.y == 2.0;
 #endif
-#ifdef VISIBILITY_PASS
+#ifdef VISIBILITY_OUTPUTS
+    fVisibility = vec4(1.0, 0.0, s.receives ? vIn.object + 1.0 : 0.0, 1.0);
+#ifdef COLOURED_SHADOWS
+    fTint = vec4(1.0);
+#endif
+#elif defined(VISIBILITY_PASS)
     if (s.receives) imageStore(uObjectRecord, ivec2(gl_FragCoord.xy), vec4(vIn.object + 1.0));
 #endif
     s.toEye = normalize(uEye - vIn.wsPosition);

@@ -21,9 +21,9 @@ struct ContextOptions {
     // `gnomon view`) instead of creating a headless one; it must be current at every call.
     bool currentContext = false;
     // A headless OpenGL ES 3.0 context used as WebGL2 has it (what the browser build runs),
-    // for trying that path natively: no cube-map arrays, buffer textures, indirect draws,
-    // image stores (gnomon score) or shadow-map readback. Ignored with currentContext, whose
-    // API is found from the context itself.
+    // for trying that path natively: no cube-map arrays, buffer textures, indirect draws or
+    // image stores (each has its stand-in), and no shadow-map readback (shadowMaps() throws).
+    // Ignored with currentContext, whose API is found from the context itself.
     bool gles = false;
 };
 

@@ -138,6 +138,15 @@ void Framebuffer::drawColour0() {
     glDrawBuffers(1, &colour0);
 }
 
+void Framebuffer::drawBuffers(const std::vector<GLenum>& buffers) {
+    if (dsa()) {
+        glNamedFramebufferDrawBuffers(id(), GLsizei(buffers.size()), buffers.data());
+        return;
+    }
+    EditBinding edit(id());
+    glDrawBuffers(GLsizei(buffers.size()), buffers.data());
+}
+
 void Framebuffer::clearDepth(float depth) {
     if (dsa()) {
         glClearNamedFramebufferfv(id(), GL_DEPTH, 0, &depth);

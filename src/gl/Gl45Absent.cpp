@@ -89,6 +89,9 @@ void glNamedBufferSubData(GLuint, GLintptr, GLsizeiptr, const void*) {
 void glNamedFramebufferDrawBuffer(GLuint, GLenum) {
     absent("glNamedFramebufferDrawBuffer");
 }
+void glNamedFramebufferDrawBuffers(GLuint, GLsizei, const GLenum*) {
+    absent("glNamedFramebufferDrawBuffers");
+}
 void glNamedFramebufferReadBuffer(GLuint, GLenum) {
     absent("glNamedFramebufferReadBuffer");
 }

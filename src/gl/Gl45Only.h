@@ -57,6 +57,7 @@ void glMultiDrawElementsIndirect(GLenum, GLenum, const void*, GLsizei, GLsizei);
 void glNamedBufferStorage(GLuint, GLsizeiptr, const void*, GLbitfield);
 void glNamedBufferSubData(GLuint, GLintptr, GLsizeiptr, const void*);
 void glNamedFramebufferDrawBuffer(GLuint, GLenum);
+void glNamedFramebufferDrawBuffers(GLuint, GLsizei, const GLenum*);
 void glNamedFramebufferReadBuffer(GLuint, GLenum);
 void glNamedFramebufferTexture(GLuint, GLenum, GLuint, GLint);
 void glNamedFramebufferTextureLayer(GLuint, GLenum, GLuint, GLint, GLint);

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "gl/Object.h"
 #include "gl/ShaderSource.h"
@@ -184,6 +185,8 @@ public:
     void depthOnly();
     // Draws into colour attachment 0 only.
     void drawColour0();
+    // Fragment output i goes to buffers[i] (GL_COLOR_ATTACHMENTi or GL_NONE).
+    void drawBuffers(const std::vector<GLenum>& buffers);
     void clearDepth(float depth);
     void clearColour(const float rgba[4]);
     // The depth of `source`'s rectangle (0, 0, width, height) copied in.

@@ -168,6 +168,11 @@ void Texture::clear(GLenum format, const float* value) {
     }
     const bool depth = format == GL_DEPTH_COMPONENT;
     const GLenum attachment = depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0;
+    // glClearBufferfv reads four values for colour: the given channels, then 0 0 0 1.
+    const int given = format == GL_RED ? 1 : format == GL_RG ? 2 : format == GL_RGB ? 3 : 4;
+    float rgba[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    for (int c = 0; c < (depth ? 1 : given); ++c)
+        rgba[c] = value[c];
     for (int layer = 0; layer < std::max(mLayers, 1); ++layer) {
         clearThrough(
             [&] {
@@ -177,7 +182,7 @@ void Texture::clear(GLenum format, const float* value) {
                     glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, attachment, id(), 0, layer);
                 }
             },
-            depth ? GL_DEPTH : GL_COLOR, value);
+            depth ? GL_DEPTH : GL_COLOR, rgba);
     }
 }
 

@@ -150,6 +150,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
         gl::uniform(13, u.clipFromWorld);
     }
     if (u.in->shadowMoments) gl::uniform(12, u.lightBleed);
+    if (u.recordLight >= 0) gl::uniform(15, u.recordLight);
 }
 
 // Opaque and masked items in their order (the fast program, then the material one where
@@ -256,6 +257,24 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     glDisable(GL_CULL_FACE);
 }
 
+// ES (no image stores): the visibility pass once per light, into that light's layer.
+void MainPass::recordVisibilityByLight(const GpuScene& scene, const RenderOptions& options,
+                                       FrameUniforms u, const VisibilityTarget& visibility,
+                                       bool floor) {
+    GLint frame = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frame);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    for (int light = 0; light < visibility.layers(); ++light) {
+        glBindFramebuffer(GL_FRAMEBUFFER, visibility.layerTarget(light).id());
+        u.recordLight = light;
+        drawItems(scene, options, u, true, floor);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frame));
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+}
+
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
                       const VisibilityTarget* visibility, bool floor) {
     const TiledLights& tiled = *in.tiled;
@@ -301,7 +320,9 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         u.ranges = tiled.ranges();
         u.first = 0;
     }
-    if (visibility) {
+    if (visibility && !gl::activeCaps().imageStore) {
+        recordVisibilityByLight(scene, options, u, *visibility, floor);
+    } else if (visibility) {
         // The surfaces that won the depth test, again: each light's visibility per pixel,
         // untiled (the score reads every light's visibility everywhere).
         gl::bindImage(0, visibility->visibility(), GL_RG32F);

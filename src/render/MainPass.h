@@ -81,8 +81,11 @@ private:
         glm::vec3 depthAware{0.0f};  // steps, map and cube stored-depth spacing
         glm::ivec4 ranges{0};        // the light order's range: every light, or one tile's
         int first = 0;
+        int recordLight = -1;  // ES visibility passes: the scene light recorded
     };
     void useProgram(const gl::Program& p, const FrameUniforms& u);
+    void recordVisibilityByLight(const GpuScene& scene, const RenderOptions& options,
+                                 FrameUniforms u, const VisibilityTarget& visibility, bool floor);
     void drawItems(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
                    bool visibilityPass, bool floor);
     // What an item's own content leaves out of its program, beyond what the frame's does.

@@ -322,7 +322,7 @@ struct Renderer::Impl {
         } else {
             if (scored) {
                 visibilityTarget.clear(options.width, options.height, int(s.lights.size()),
-                                       in.transmittance != nullptr);
+                                       in.transmittance != nullptr, depth);
             }
             // sRGB output: the target is SRGB8_ALPHA8, so writes (and blending) encode.
             const bool srgb = options.shading.output == OutputEncoding::Srgb;

@@ -1,7 +1,10 @@
 #include "render/VisibilityTarget.h"
 
 #include <algorithm>
+#include <string>
 #include <vector>
+
+#include "gl/Caps.h"
 
 namespace gnomon::render {
 
@@ -34,28 +37,55 @@ void readLayers(const gl::Texture& texture, GLenum format, int channels, int wid
 }
 }  // namespace
 
-void VisibilityTarget::clear(int width, int height, int lights, bool withTint) {
+void VisibilityTarget::clear(int width, int height, int lights, bool withTint,
+                             const gl::Texture& depth) {
+    const bool images = gl::activeCaps().imageStore;
     const int layers = std::max(1, lights);
     auto fits = [&](const gl::Texture& t) {
         return t && t.width() == width && t.height() == height && t.layers() == layers;
     };
+    const bool remade = !fits(mVisibility) || (withTint && !fits(mTint));
     if (!fits(mVisibility)) {
-        mVisibility = gl::Texture::array2D("shadow visibility", GL_RG32F, width, height, layers);
+        mVisibility = gl::Texture::array2D("shadow visibility", images ? GL_RG32F : GL_RGBA32F,
+                                           width, height, layers);
     }
-    const float unset[2] = {1.0f, 0.0f};
-    mVisibility.clear(GL_RG, unset);
-    if (!mObjects || mObjects.width() != width || mObjects.height() != height) {
-        mObjects = gl::Texture::plain2D("shadow visibility objects", GL_R32F, width, height);
+    const float unset[4] = {1.0f, 0.0f, 0.0f, 0.0f};  // lit, no map, (ES) no object
+    mVisibility.clear(images ? GL_RG : GL_RGBA, unset);
+    if (images) {
+        if (!mObjects || mObjects.width() != width || mObjects.height() != height) {
+            mObjects = gl::Texture::plain2D("shadow visibility objects", GL_R32F, width, height);
+        }
+        const float none = 0.0f;
+        mObjects.clear(GL_RED, &none);
     }
-    const float none = 0.0f;
-    mObjects.clear(GL_RED, &none);
     mWithTint = withTint;
-    if (!withTint) return;
-    if (!fits(mTint)) {
-        mTint = gl::Texture::array2D("shadow tint", GL_RGBA32F, width, height, layers);
+    if (withTint) {
+        if (!fits(mTint)) {
+            mTint = gl::Texture::array2D("shadow tint", GL_RGBA32F, width, height, layers);
+        }
+        const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        mTint.clear(GL_RGBA, white);
     }
-    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    mTint.clear(GL_RGBA, white);
+    if (!images && (remade || mTargetsDepth != depth.id() || mTargetsTint != withTint ||
+                    mLayerTargets.empty())) {
+        makeLayerTargets(depth);
+    }
+}
+
+void VisibilityTarget::makeLayerTargets(const gl::Texture& depth) {
+    mLayerTargets.clear();
+    for (int layer = 0; layer < mVisibility.layers(); ++layer) {
+        gl::Framebuffer fb("shadow visibility layer " + std::to_string(layer));
+        fb.attachLayer(GL_COLOR_ATTACHMENT1, mVisibility, layer);
+        if (mWithTint) fb.attachLayer(GL_COLOR_ATTACHMENT2, mTint, layer);
+        fb.attach(GL_DEPTH_ATTACHMENT, depth);
+        fb.drawBuffers(
+            {GL_NONE, GL_COLOR_ATTACHMENT1, GLenum(mWithTint ? GL_COLOR_ATTACHMENT2 : GL_NONE)});
+        fb.checkComplete();
+        mLayerTargets.push_back(std::move(fb));
+    }
+    mTargetsDepth = depth.id();
+    mTargetsTint = mWithTint;
 }
 
 void VisibilityTarget::read(int width, int height, int lights, bool drawn,
@@ -71,13 +101,23 @@ void VisibilityTarget::read(int width, int height, int lights, bool drawn,
     out.object.assign(drawn ? std::size_t(out.width) * std::size_t(out.height) : 0, -1);
     out.tint.assign(mWithTint ? 3 * cells : 0, 1.0f);
     if (lights == 0 || !drawn) return;
-    readLayers(mVisibility, GL_RG, 2, out.width, out.height, lights,
-               [&](std::size_t cell, const float* v) {
-                   out.visibility[cell] = v[0];
-                   out.texelWorld[cell] = v[1];
-               });
-    readLayers(mObjects, GL_RED, 1, out.width, out.height, 1,
-               [&](std::size_t pixel, const float* v) { out.object[pixel] = int(v[0]) - 1; });
+    if (!mObjects) {  // ES: the object in the visibility layers' third channel
+        readLayers(mVisibility, GL_RGBA, 4, out.width, out.height, lights,
+                   [&](std::size_t cell, const float* v) {
+                       out.visibility[cell] = v[0];
+                       out.texelWorld[cell] = v[1];
+                   });
+        readLayers(mVisibility, GL_RGBA, 4, out.width, out.height, 1,
+                   [&](std::size_t pixel, const float* v) { out.object[pixel] = int(v[2]) - 1; });
+    } else {
+        readLayers(mVisibility, GL_RG, 2, out.width, out.height, lights,
+                   [&](std::size_t cell, const float* v) {
+                       out.visibility[cell] = v[0];
+                       out.texelWorld[cell] = v[1];
+                   });
+        readLayers(mObjects, GL_RED, 1, out.width, out.height, 1,
+                   [&](std::size_t pixel, const float* v) { out.object[pixel] = int(v[0]) - 1; });
+    }
     if (!mWithTint) return;
     readLayers(mTint, GL_RGBA, 4, out.width, out.height, lights,
                [&](std::size_t cell, const float* v) { std::copy(v, v + 3, &out.tint[3 * cell]); });

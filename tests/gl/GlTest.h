@@ -12,12 +12,8 @@ Renderer& sharedRenderer();
 // True when the tests run on OpenGL ES 3.0 (GNOMON_TEST_GLES=1): what WebGL2 lacks is skipped.
 bool testsGles();
 
-// First line of a test that scores (image stores) or reads a depth map back, which the ES
-// path cannot do yet: skipped there, with the reason.
-#define GNOMON_NEEDS_SCORE()                                                             \
-    if (::gnomon::test::testsGles())                                                     \
-    GTEST_SKIP() << "gnomon score's visibility needs image stores, which OpenGL ES 3.0 " \
-                    "(WebGL2) lacks"
+// First line of a test that reads a depth map back, which OpenGL ES 3.0 (WebGL2) cannot:
+// skipped there, with the reason.
 #define GNOMON_NEEDS_DEPTH_READBACK() \
     if (::gnomon::test::testsGles())  \
     GTEST_SKIP() << "OpenGL ES 3.0 (WebGL2) cannot read a depth map back"

@@ -41,7 +41,6 @@ Scene lightInABox(LightType type) {
 }
 
 TEST(ClosedCasters, ABoxAroundTheLightShadowsEverythingOutside) {
-    GNOMON_NEEDS_SCORE();
     for (LightType type : {LightType::Point, LightType::Spot}) {
         const Scene s = lightInABox(type);
         ASSERT_EQ(s.options.shadow.cull, CullMode::Back);  // the default, which culls solids
@@ -52,7 +51,6 @@ TEST(ClosedCasters, ABoxAroundTheLightShadowsEverythingOutside) {
 }
 
 TEST(ClosedCasters, ABoxWoundInwardsKeepsItsShadow) {
-    GNOMON_NEEDS_SCORE();
     Scene s = lightInABox(LightType::Directional);
     s.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
     Mesh& box = s.meshes[1];
@@ -71,7 +69,6 @@ TEST(ClosedCasters, ABoxWoundInwardsKeepsItsShadow) {
 // through them and out of the culled far side: here a patch of the floor beside the floating
 // box, a few hundred pixels, would be lit inside its shadow.
 TEST(ClosedCasters, ASolidWithAFewFacesTurnedKeepsItsShadow) {
-    GNOMON_NEEDS_SCORE();
     Scene s = lightInABox(LightType::Point);
     Mesh solid = gridSolid(16, 0.25f, {-2.0f, 3.0f, -2.0f});  // 4 units wide, y 3 to 7
     // The +x side (the second), its middle 2 x 2 squares (x = 2, y 4.75 to 5.25, z -0.25 to
@@ -124,7 +121,6 @@ std::uint32_t addMaskCuttingSide(Scene& s, Mesh& box, glm::vec3 clearSide, bool 
 // back faces culled, nothing of it was left in the map (the slab of assimp's ClearCoatTest
 // with a partly clear coating let light onto the dome behind it the same way).
 TEST(ClosedCasters, ASolidCutByItsTextureIsNotCulled) {
-    GNOMON_NEEDS_SCORE();
     Scene s = lightInABox(LightType::Directional);
     s.lights[0].direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
     Mesh& box = s.meshes[1];

@@ -103,7 +103,6 @@ TEST_P(ColouredShadows, GlassTintsTheLightThroughIt) {
 }
 
 TEST_P(ColouredShadows, MatchesTheReference) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = glassPane(GetParam());
     const ScoreResult result = score(sharedRenderer(), s, s.options);
     std::printf("coloured shadows (%s): %.2f/255 over %ld tinted cells\n",
@@ -156,7 +155,6 @@ TEST(ColouredShadowsPass, DrawnOnlyForMapsDrawnAndOnlyForBlendedCasters) {
 // Many exported models mark opaque materials BLEND: their fully opaque texels shadow as an
 // opaque caster's do (depth map, filtering, self-shadowing), not as a black tint.
 TEST(ColouredShadowsPass, FullyOpaqueBlendedCastersShadowAsOpaqueOnes) {
-    GNOMON_NEEDS_SCORE();
     const Scene blended = glassPane(false, 255);
     Scene opaque = blended;
     opaque.materials[1].alphaMode = AlphaMode::Opaque;

@@ -17,7 +17,6 @@ RenderOptions detached(const Scene& s) {
 }
 
 TEST(ContactShadows, HalveTheLeakAtDetachedContacts) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room-thin");
     RenderOptions off = detached(s), on = detached(s);
     on.shadow.contactLength = 1.0f;
@@ -41,7 +40,6 @@ TEST(ContactShadows, HalveTheLeakAtDetachedContacts) {
 
 // Where the map already has the contacts (the defaults), the march adds no false shadow.
 TEST(ContactShadows, AddNoFalseShadowWhereTheMapIsRight) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room");
     RenderOptions off = s.options;
     off.width = off.height = 256;
@@ -62,7 +60,6 @@ TEST(ContactShadows, AddNoFalseShadowWhereTheMapIsRight) {
 // an occluder (the march of 0.01), nor the two depth passes' rounding of the same surface
 // (the march of 0.001).
 TEST(ContactShadows, AShortMarchDoesNotShadowItsOwnReceiver) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("tutorial-room");
     ASSERT_EQ(s.lights.size(), 1u);
     s.lights[0].direction = -glm::vec3(0.0f, 0.5f, 0.8660254f);  // --sun 0,30

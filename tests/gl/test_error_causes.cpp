@@ -67,7 +67,6 @@ float farthestLeakOccluder(float tolerance) {
 
 // A tolerance three times larger reaches occluders about as much farther.
 TEST(ErrorCauses, DetachedShadowsLeakAsFarAsTheTolerance) {
-    GNOMON_NEEDS_SCORE();
     const float near = farthestLeakOccluder(0.1f), far = farthestLeakOccluder(0.3f);
     EXPECT_GT(far, 2.0f * near) << near << " at 0.1, " << far << " at 0.3";
     EXPECT_LT(far, 4.0f * near) << near << " at 0.1, " << far << " at 0.3";
@@ -75,7 +74,6 @@ TEST(ErrorCauses, DetachedShadowsLeakAsFarAsTheTolerance) {
 
 // With no tolerance at all the floor shadows itself (acne): false shadow, no occluder.
 TEST(ErrorCauses, AcneIsFalseShadowWithNoOccluder) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room");
     RenderOptions o = s.options;
     o.width = o.height = 128;
@@ -92,7 +90,6 @@ TEST(ErrorCauses, AcneIsFalseShadowWithNoOccluder) {
 // A score without explain lists nothing (a search's trials do not pay for the rays); the CSV
 // has a header and one row per cell, and score.json the counts.
 TEST(ErrorCauses, OnlyWhenAskedAndCsvHasEveryCell) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room-thin");
     RenderOptions o = s.options;
     o.width = o.height = 128;

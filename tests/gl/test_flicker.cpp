@@ -26,7 +26,6 @@ PathScoreResult dolly(const std::string& pathName, bool stabilise) {
 }
 
 TEST(Flicker, StillPathIsZero) {
-    GNOMON_NEEDS_SCORE();
     const PathScoreResult r = dolly("still", false);
     ASSERT_EQ(r.frames.size(), 6u);
     EXPECT_FALSE(r.interrupted);
@@ -38,7 +37,6 @@ TEST(Flicker, StillPathIsZero) {
 }
 
 TEST(Flicker, UnstabilisedMapsShimmerAndStabilisedOnesHoldStill) {
-    GNOMON_NEEDS_SCORE();
     const PathScoreResult off = dolly("dolly", false);
     const PathScoreResult on = dolly("dolly", true);
     ASSERT_EQ(off.frames.size(), 6u);

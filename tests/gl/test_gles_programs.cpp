@@ -6,9 +6,9 @@
 //
 // The families mirror the passes' program() functions (ShadowPass, ViewDepthPass,
 // TransmittancePass, MomentPass, DebugPass); the main pass's variants come from MainVariant
-// itself. WebGL2 cannot have two programs, named in WebGL2Lacks below: depth_cube.vert (a
-// vertex shader's gl_Layer; the six-pass fallback draws cubes there) and the main pass's
-// VISIBILITY_PASS (image stores; gnomon score).
+// itself. WebGL2 cannot have depth_cube.vert (a vertex shader's gl_Layer; the six-pass
+// fallback draws cubes there), named in WebGL2Lacks below; the main pass's VISIBILITY_PASS
+// writes colour outputs there instead of images.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -296,7 +296,7 @@ int lineStarting(const std::string& file, const std::string& start) {
     return 0;
 }
 
-// What WebGL2 cannot have fails where it is asked for: gl_Layer's extension, the images.
+// What WebGL2 cannot have fails where it is asked for: gl_Layer's extension.
 TEST(GlesPrograms, WebGL2Lacks) {
     useEs();
     try {
@@ -308,17 +308,23 @@ TEST(GlesPrograms, WebGL2Lacks) {
                   std::string::npos)
             << e.what();
     }
-    render::MainVariant v = frameVariant(RenderOptions{}, false, false);
-    v.visibilityPass = 1;
-    try {
-        gl::buildProgram("visibility", {{GL_FRAGMENT_SHADER, "main.frag.glsl"}},
-                         v.defines(maxLights()));
-        ADD_FAILURE() << "VISIBILITY_PASS compiled in GLSL ES: build it there too";
-    } catch (const Error& e) {
-        const int line = lineStarting("main.frag.glsl", "layout(rg32f");
-        EXPECT_NE(std::string(e.what()).find("main.frag.glsl:" + std::to_string(line)),
-                  std::string::npos)
-            << e.what();
+}
+
+// gnomon score's visibility pass without image stores: one light a pass into colour outputs,
+// the recorded light a uniform (MainPass::recordVisibilityByLight), with and without tint.
+TEST(GlesPrograms, VisibilityPassByLight) {
+    useEs();
+    for (bool coloured : {false, true}) {
+        render::MainVariant v = frameVariant(RenderOptions{}, false, true);
+        v.visibilityPass = 1;
+        v.coloured = coloured;
+        const gl::Program p = gl::buildProgram(
+            "visibility",
+            {{GL_VERTEX_SHADER, "main.vert.glsl"}, {GL_FRAGMENT_SHADER, "main.frag.glsl"}},
+            v.defines(maxLights()));
+        EXPECT_GE(p.location(15), 0) << "uRecordLight";
+        EXPECT_EQ(glGetFragDataLocation(p.id(), "fVisibility"), 1);
+        EXPECT_EQ(glGetFragDataLocation(p.id(), "fTint"), coloured ? 2 : -1);
     }
 }
 

@@ -28,7 +28,6 @@ Scene fiveSpots() {
 }
 
 TEST(MapAtlas, SmallMapsShareALayerAndShadowAsIfAlone) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = fiveSpots();
     Renderer& r = sharedRenderer();
     RenderOptions o;

@@ -183,7 +183,6 @@ TEST(Materials, BlendedSurfaceIsSeenThrough) {
 }
 
 TEST(Materials, ReferenceAgreesWithMaskedAndDitheredShadows) {
-    GNOMON_NEEDS_SCORE();
     const Scene mask = texturedPlate(AlphaMode::Mask);
     RenderOptions o = mask.options;
     o.width = o.height = 128;

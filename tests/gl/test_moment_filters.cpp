@@ -21,7 +21,6 @@ RenderOptions small(const Scene& s, ShadowFilter f) {
 class MomentFilter : public ::testing::TestWithParam<ShadowFilter> {};
 
 TEST_P(MomentFilter, ScoresNearPcfOnTheRoom) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room");
     const ScoreResult pcf = score(sharedRenderer(), s, small(s, ShadowFilter::Pcf));
     const ScoreResult moments = score(sharedRenderer(), s, small(s, GetParam()));
@@ -63,7 +62,6 @@ INSTANTIATE_TEST_SUITE_P(Filters, MomentFilter,
 // below; four moments (EVSM4, MSM) bound it far tighter. Counted beyond what PCF leaks at the
 // same edges (it compares each texel, so it cannot bleed).
 TEST(MomentFilters, FourMomentsBleedLessThanTwo) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = loadSceneFile(GNOMON_EXAMPLES_DIR "/layered-casters.json");
     auto leak = [&](ShadowFilter f) {
         RenderOptions o = small(s, f);
@@ -80,7 +78,6 @@ TEST(MomentFilters, FourMomentsBleedLessThanTwo) {
 // Point lights' cubes have no moments: with the moment filters their lookups are the default
 // 3 x 3 PCF, so a scene lit by a cube alone sees exactly what PCF sees.
 TEST(MomentFilters, CubesKeepTheDefaultPcf) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-point");
     ShadowVisibility pcf, msm;
     RenderOptions o = small(s, ShadowFilter::Pcf);

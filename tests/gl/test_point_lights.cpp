@@ -214,7 +214,6 @@ Scene barOnGround() {
 // sees resolve the bar's shadow that the cube blurs away (as they do the Stanford Dragon's
 // scales on a ground under a close lamp).
 TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = barOnGround();
     RenderOptions o;
     o.width = o.height = 128;
@@ -244,7 +243,6 @@ TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
 // nothing), drawn from much finer maps, and still agree with rays away from edges: what errors
 // are left lie on the bar's shadow outline.
 TEST(PointLights, AGroundThatCastsNothingLeavesTheMapsToTheBar) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = barOnGround();
     RenderOptions o;
     o.width = o.height = 128;
@@ -348,7 +346,6 @@ TEST(PointLights, CasterTowardsAFaceCornerShadowsTheReceiverBehindIt) {
 // is drawn at the larger one. Drawn at its own size it would fill a corner of each face while
 // its lookups read the whole face.
 TEST(PointLights, LightsAskingForDifferentMapSizesShareTheCubesRight) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("tutorial-point");
     RenderOptions o = s.options;
     o.width = o.height = 128;

@@ -27,7 +27,6 @@ RenderOptions small(const Scene& s) {
 // cameras (the course's simplification), so surfaces outside those volumes, or shadowed
 // along diverging rays, come out lit: the score measures the textbook's error.
 TEST(Score, DefaultsAreRightAwayFromEdges) {
-    GNOMON_NEEDS_SCORE();
     for (const SceneInfo& info : builtinScenes()) {
         SCOPED_TRACE(info.name);
         const Scene s = builtinScene(info.name);
@@ -69,7 +68,6 @@ Scene boxUnderLight(const Light& light) {
 // inside the light's downward face would read as shadowed; the tolerance follows the rounding
 // of the terms and coordinates the depths are made of.
 TEST(Score, FloatRoundingNearTheLightLeavesTheFaceUnderItLit) {
-    GNOMON_NEEDS_SCORE();
     std::vector<Light> lights;
     for (float height : {0.6f, 0.8f, 1.03f}) {
         Light point;
@@ -102,7 +100,6 @@ TEST(Score, FloatRoundingNearTheLightLeavesTheFaceUnderItLit) {
 // cubes' Poisson taps, in a map fitted to the view (a frustum) and in the light's cube (fitted
 // to the boxes), and 2.9 degrees from edge-on, within the cube kernel's 4.
 TEST(Score, SideAlmostEdgeOnBesideTheFaceTheLightMeetsIsLit) {
-    GNOMON_NEEDS_SCORE();
     Scene s;
     s.name = "post beside a point light";
     s.materials.push_back(Material{});
@@ -145,7 +142,6 @@ TEST(Score, SideAlmostEdgeOnBesideTheFaceTheLightMeetsIsLit) {
 // No tolerance of any kind: acne over most lit surfaces (false shadow), and the defaults
 // remove it.
 TEST(Score, NoBiasIsFalseShadowDefaultsAreNot) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room");
     RenderOptions bad = small(s);
     bad.shadow.biasConstant = bad.shadow.biasDepthAware = 0.0f;
@@ -161,7 +157,6 @@ TEST(Score, NoBiasIsFalseShadowDefaultsAreNot) {
 
 // A huge constant tolerance detaches shadows (peter-panning): leaks, no false shadow.
 TEST(Score, HugeToleranceLeaks) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room-thin");
     RenderOptions o = small(s);
     o.shadow.biasConstant = 0.2f;
@@ -172,7 +167,6 @@ TEST(Score, HugeToleranceLeaks) {
 
 // PCSS is scored against the soft reference.
 TEST(Score, PcssUsesTheSoftReference) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room");
     RenderOptions o = small(s);
     o.shadow.filter = ShadowFilter::Pcss;
@@ -185,7 +179,6 @@ TEST(Score, PcssUsesTheSoftReference) {
 }
 
 TEST(Score, JsonHasEveryField) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("mixed-lights");
     const RenderOptions o = small(s);
     const ScoreResult r = score(sharedRenderer(), s, o);
@@ -207,7 +200,6 @@ TEST(Score, JsonHasEveryField) {
 // made wrong on purpose count as leaks while their record names the reference's surface,
 // and are left out once it does not.
 TEST(Score, OnlyTheSurfaceTheReferenceSeesIsScored) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = builtinScene("tutorial-room");
     const RenderOptions o = small(s);
     const ScoreOptions so;
@@ -279,7 +271,6 @@ Scene movedBy(const Scene& s, const glm::vec3& d, float k = 1.0f) {
 // off the surface. The same a hundred times smaller too: a model a few tenths across, where a
 // light's camera made in world coordinates that far out would be off by a good share of it.
 TEST(Score, FarFromTheOriginAsAtTheOrigin) {
-    GNOMON_NEEDS_SCORE();
     for (const float k : {1.0f, 0.01f})
         for (const char* name : {"tutorial-room", "tutorial-point", "tutorial-spot"}) {
             SCOPED_TRACE(std::string(name) + " x " + std::to_string(k));

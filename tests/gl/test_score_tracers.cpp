@@ -43,7 +43,6 @@ void expectSameScore(const std::string& name, const Scene& s, const RenderOption
 }
 
 TEST(ScoreTracers, BvhScoresAsEmbreeDoes) {
-    GNOMON_NEEDS_SCORE();
     for (const char* name : {"tutorial-room", "mixed-lights", "book-triangle"}) {
         const Scene s = builtinScene(name);
         RenderOptions o = s.options;

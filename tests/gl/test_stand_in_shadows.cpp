@@ -115,7 +115,6 @@ TEST(StandInCasters, TheFilesOwnVersionCastsTheShadow) {
 // about what the full mesh does, with nothing wrong away from shadow edges (without the lift,
 // false shadow spreads over the bowl).
 TEST(StandInCasters, AConcaveSurfaceIsNotShadowedByItsOwnStandIn) {
-    GNOMON_NEEDS_SCORE();
     Scene s = greyScene("bowl");
     const Mesh sphere = mesh::sphere("sphere", glm::vec3(0.0f), 2.0f, 384, 192);
     Mesh bowl = sphere;

@@ -33,7 +33,6 @@ TuneOptions quickTune() {
 }
 
 TEST(Tune, FindsTheKnownRemedyForAcne) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("tutorial-room");
     RenderOptions start = smallStart(s, 96);
     start.shadow.biasSlope = 0.0f;
@@ -84,7 +83,6 @@ TEST(Tune, FindsTheKnownRemedyForAcne) {
 // has the defaults' error within that, and the shifted views find it no worse on every shift
 // or the defaults are kept.
 TEST(Tune, APixelIsNotAGain) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("tutorial-room");
     TuneOptions o = quickTune();
     o.maxSweeps = 1;
@@ -128,7 +126,6 @@ TEST(Tune, APixelIsNotAGain) {
 // A caster of about 48 000 triangles over the room: its shadow pass costs triangles more than
 // texels, so the search tries stand-ins, whose saved time a larger map can use.
 TEST(Tune, TriesStandInsWhereCastersAreDense) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("tutorial-room");
     // 220 x 110 segments: about 48 000 triangles.
     s.meshes.push_back(mesh::sphere("dense ball", {0.0f, 2.0f, 0.0f}, 1.0f, 220, 110));
@@ -153,7 +150,6 @@ TEST(Tune, TriesStandInsWhereCastersAreDense) {
 // Two shadowed lights, one with a 64² map (its shadows a blur of blocks): the search sizes
 // each light's map on its own, grows the starved one and leaves the global map size alone.
 TEST(Tune, SizesEachLightsMapApart) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("tutorial-room");
     s.lights.push_back(builtinScene("tutorial-spot").lights.front());
     s.lights[0].shadowMapSize = 64;
@@ -183,7 +179,6 @@ TEST(Tune, SizesEachLightsMapApart) {
 // A search past its time limit stops after the trial under way and keeps what it found; it
 // is not an interruption. The starting settings' trial always finishes (it sets the budget).
 TEST(Tune, StopsAtItsTimeLimitWithWhatItFound) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("tutorial-room");
     const RenderOptions start = smallStart(s, 32);
     TuneOptions o = quickTune();
@@ -233,7 +228,6 @@ TEST(Tune, MapSizesApplyOnlyToTheSceneTheyCameFrom) {
 // Sixteen shadowed lights: sizing each apart would add three trials per light and sweep, so
 // one map size is searched for all (stopped after the first settings, map size among them).
 TEST(Tune, ManyLightsShareOneMapSize) {
-    GNOMON_NEEDS_SCORE();
     Scene s = builtinScene("mixed-lights");
     const RenderOptions start = smallStart(s, 32);
     const TuneOptions o = quickTune();

@@ -49,7 +49,6 @@ RenderOptions options(FitTo fit, int cascades) {
 }
 
 TEST(ViewDepthFit, WideGroundSeenCloseUpIsSharperAndStillRight) {
-    GNOMON_NEEDS_SCORE();
     const Scene s = postsOnAWideGround();
     const ScoreResult boxes = score(sharedRenderer(), s, options(FitTo::Boxes, 1));
     const ScoreResult sampled = score(sharedRenderer(), s, options(FitTo::ViewDepth, 1));
