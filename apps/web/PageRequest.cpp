@@ -55,9 +55,16 @@ void setKey(PageRequest& r, const std::string& key, const std::string& value) {
             refuse("ground: expected on or off, got '" + value + "'");
         r.ground = value != "off";
     } else if (key == "picture") {
-        if (value != "render" && value != "truth")
-            refuse("picture: expected render or truth, got '" + value + "'");
-        r.truth = value == "truth";
+        using Picture = PageRequest::Picture;
+        if (value == "render") {
+            r.picture = Picture::Render;
+        } else if (value == "truth") {
+            r.picture = Picture::Truth;
+        } else if (value == "score") {
+            r.picture = Picture::Score;
+        } else {
+            refuse("picture: expected render, truth or score, got '" + value + "'");
+        }
     } else if (findOption(key)) {
         r.options[key] = value;
     } else {

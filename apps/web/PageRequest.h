@@ -18,8 +18,9 @@ struct PageRequest {
     std::string scene = "book-triangle";  // a built-in scene, or a model in the page's bundle
     Preset preset = Preset::Default;      // where options start, as --preset
     bool ground = false;                  // as --ground: a floor under a model without one
-    // picture=truth: the ray-traced picture (TruthPicture.h) instead of the renderer's.
-    bool truth = false;
+    // picture=render (the renderer's frame), truth (the ray-traced picture, TruthPicture.h)
+    // or score (gnomon score's error map of the frame against the traced reference).
+    enum class Picture { Render, Truth, Score } picture = Picture::Render;
     std::map<std::string, std::string> options;  // schema name -> text as given
 };
 

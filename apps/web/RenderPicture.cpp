@@ -45,4 +45,10 @@ Image renderPicture(const Scene& scene, const RenderOptions& options) {
     return renderer().render(scene, options);
 }
 
+ScoreResult scorePicture(const Scene& scene, const RenderOptions& options) {
+    ScoreOptions so;
+    so.threads = 1;  // no threads without cross-origin isolation
+    return score(renderer(), scene, options, so);
+}
+
 }  // namespace gnomon::web

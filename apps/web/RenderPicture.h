@@ -5,11 +5,16 @@
 #include "gnomon/Image.h"
 #include "gnomon/Options.h"
 #include "gnomon/Scene.h"
+#include "gnomon/Score.h"
 
 namespace gnomon::web {
 
 // Throws gnomon::Error when the browser gives no WebGL2 context with float render targets,
 // or for what the renderer refuses (in the CLI's words).
 Image renderPicture(const Scene& scene, const RenderOptions& options);
+
+// gnomon score in the page: the frame scored against the reference traced on the project's
+// BVH on the page's one thread (the same ScoreResult as `gnomon score`).
+ScoreResult scorePicture(const Scene& scene, const RenderOptions& options);
 
 }  // namespace gnomon::web

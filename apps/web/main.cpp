@@ -37,6 +37,22 @@ std::string lightLabel(const gnomon::Scene& scene, int light) {
            (l.name.empty() ? "" : ", " + l.name) + ")";
 }
 
+// `image` as RGBA, which the canvas's ImageData takes (error maps are RGB).
+gnomon::Image rgba(const gnomon::Image& image) {
+    if (image.channels == 4) return image;
+    gnomon::Image out(image.width, image.height, 4);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* in = image.at(x, y);
+            std::uint8_t* to = out.at(x, y);
+            for (int c = 0; c < 3; ++c)
+                to[c] = in[std::min(c, image.channels - 1)];
+            to[3] = 255;
+        }
+    }
+    return out;
+}
+
 // Built-in scene names, then the bundled models' folders, for the page's menu.
 val scenes() {
     std::vector<std::string> names;
@@ -61,10 +77,18 @@ val show(const std::string& address) {
         const auto start = std::chrono::steady_clock::now();
         const gnomon::web::PageRequest request = gnomon::web::parseAddress(address);
         const gnomon::web::PageScene page = gnomon::web::loadRequest(request, kBundle);
-        const gnomon::Image image = request.truth
-                                        ? gnomon::web::truthPicture(page.scene, page.options,
-                                                                    gnomon::truth::TracerKind::Bvh)
-                                        : gnomon::web::renderPicture(page.scene, page.options);
+        using Picture = gnomon::web::PageRequest::Picture;
+        gnomon::Image image;
+        if (request.picture == Picture::Truth) {
+            image =
+                gnomon::web::truthPicture(page.scene, page.options, gnomon::truth::TracerKind::Bvh);
+        } else if (request.picture == Picture::Score) {
+            const gnomon::ScoreResult r = gnomon::web::scorePicture(page.scene, page.options);
+            image = rgba(r.errors);
+            result.set("misclassified", 100.0 * r.overall.misclassified);
+        } else {
+            image = gnomon::web::renderPicture(page.scene, page.options);
+        }
         const int light = gnomon::web::pictureLight(page.scene, page.options);
         const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
         result.set("ok", true);
@@ -75,7 +99,9 @@ val show(const std::string& address) {
                                                                      image.pixels.data())));
         result.set("scene", page.scene.name);
         result.set("light", lightLabel(page.scene, light));
-        result.set("truth", request.truth);
+        result.set("picture", std::string(request.picture == Picture::Truth   ? "truth"
+                                          : request.picture == Picture::Score ? "score"
+                                                                              : "render"));
         result.set("seconds", took.count());
         result.set("warnings", strings(page.warnings));
     } catch (const std::exception& e) {

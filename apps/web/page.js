@@ -93,10 +93,14 @@ function draw(result) {
         warnings.append(item);
     }
     const ms = Math.round(result.seconds * 1000);
-    element('caption').textContent = result.truth
-        ? `${result.scene} at ${result.width}×${result.height}, ${result.light}: traced on ` +
-              `the BVH in ${ms} ms`
-        : `${result.scene} at ${result.width}×${result.height}: rendered with WebGL2 in ${ms} ms`;
+    const size = `${result.scene} at ${result.width}×${result.height}`;
+    element('caption').textContent = result.picture === 'truth'
+        ? `${size}, ${result.light}: traced on the BVH in ${ms} ms`
+        : result.picture === 'score'
+        ? `${size}: ${result.misclassified.toFixed(3)} % of pixels misclassified against the ` +
+              `reference traced on the BVH (error map; ${ms} ms)`
+        : `${size}: rendered with WebGL2 in ${ms} ms`;
     element('status').textContent = 'ready';
-    document.title = `gnomon ready: ${result.scene} ${result.width}x${result.height}`;
+    document.title = `gnomon ready: ${result.scene} ${result.width}x${result.height}` +
+        (result.picture === 'score' ? ` misclassified ${result.misclassified.toFixed(4)}%` : '');
 }

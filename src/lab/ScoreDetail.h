@@ -29,8 +29,7 @@ private:
 // `tracer`: the rays' backend (truth/Tracer.h), a choice for tests and tools, not an option.
 truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
                                const ScoreOptions& scoreOptions, ScoreProgress* progress,
-                               double& seconds,
-                               truth::TracerKind tracer = truth::TracerKind::Embree);
+                               double& seconds, truth::TracerKind tracer = truth::defaultTracer());
 
 // `frame` scored against `reference` (traced for the same view and size); traceSeconds 0.
 // Its render moves into the result (its visibility stays).

@@ -7,6 +7,10 @@
 
 namespace gnomon::truth {
 
+TracerKind defaultTracer() {
+    return TracerKind::Bvh;
+}
+
 std::unique_ptr<Tracer> makeEmbreeTracer(const TracerInput&) {
     throw Error(ErrorKind::InvalidInput,
                 "this build of gnomon has no Embree: trace the reference on the project's own "

@@ -11,6 +11,10 @@
 
 namespace gnomon::truth {
 
+TracerKind defaultTracer() {
+    return TracerKind::Embree;
+}
+
 namespace {
 
 // Rays carry this context so the filter knows what they trace.

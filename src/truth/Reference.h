@@ -30,7 +30,7 @@ struct ReferenceOptions {
     int threads = 0;                            // 0: every core
     std::atomic<int>* rowsDone = nullptr;       // if set: counts rows traced (progress)
     const std::atomic<bool>* cancel = nullptr;  // if set and true: stop early, throw Error
-    TracerKind tracer = TracerKind::Embree;     // the rays' tracer (truth/Tracer.h)
+    TracerKind tracer = defaultTracer();        // the rays' tracer (truth/Tracer.h)
 };
 
 // Per pixel (rows top first, as images), and per pixel x light at [pixel * lights + light].

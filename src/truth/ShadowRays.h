@@ -22,8 +22,7 @@ class ShadowRays {
 public:
     // Throws gnomon::Error (InvalidInput) when the tracer cannot be made for the scene.
     // `kind`: the tracer behind the rays (truth/Tracer.h).
-    ShadowRays(const Scene& scene, const RenderOptions& options,
-               TracerKind kind = TracerKind::Embree);
+    ShadowRays(const Scene& scene, const RenderOptions& options, TracerKind kind = defaultTracer());
     ShadowRays(const ShadowRays&) = delete;
     ShadowRays& operator=(const ShadowRays&) = delete;
 

@@ -56,6 +56,8 @@ public:
 // choice, Embree unless a caller asks for the BVH.
 enum class TracerKind { Embree, Bvh };
 const char* toString(TracerKind kind);
+// Embree where the build has it, else the project's BVH (the web build).
+TracerKind defaultTracer();
 
 // Embree 3 (two BVHs: every object for view rays, the casters for shadow rays). Throws
 // gnomon::Error (InvalidInput) when Embree has no device or rejects the scene.

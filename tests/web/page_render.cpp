@@ -61,10 +61,11 @@ int run(int argc, char** argv) {
     }
     const double share = lit ? double(agree) / double(lit) : 1.0;
     const gnomon::ImageDiff d = gnomon::compareImages(native, shot, 2);
-    std::printf("page_render: %s: %ld lit pixels, %ld shadowed natively; the page agrees on "
-                "%.2f %% (bound %.0f %%); max channel difference %d, mean %.3f\n",
-                argv[1], lit, shadowed, 100.0 * share, 100.0 * kMinAgreement, d.maxChannelDiff,
-                d.meanAbsDiff);
+    std::printf(
+        "page_render: %s: %ld lit pixels, %ld shadowed natively; the page agrees on "
+        "%.2f %% (bound %.0f %%); max channel difference %d, mean %.3f\n",
+        argv[1], lit, shadowed, 100.0 * share, 100.0 * kMinAgreement, d.maxChannelDiff,
+        d.meanAbsDiff);
     if (lit > 0 && share >= kMinAgreement) return 0;
     const std::string diff = std::string(argv[4]) + ".diff.png";
     gnomon::writePng(diff, d.diff);

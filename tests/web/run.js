@@ -2,7 +2,8 @@
 // case per run, the page served from build/web on 127.0.0.1 (browser.js):
 //   node run.js picture --web DIR --address '#scene=...' --truth EXE --bundle DIR --out DIR
 //       the canvas #gnomon, screenshot, against the picture native computes for the same
-//       address (EXE: gnomon_page_truth, which compares and states its bounds);
+//       address (EXE: gnomon_page_truth, _render or _score, which compares and states its
+//       bounds; --bound B is handed to it);
 //   node run.js error --web DIR --address '#...' [--address ...] --gnomon EXE --out DIR
 //       a bad address shows the very line `gnomon render` prints for the same flags;
 //   node run.js upload --web DIR --address '#KEYS' --file F (--truth EXE --bundle DIR |
@@ -62,7 +63,8 @@ async function withPages(web, addresses, done, check) {
 // which prints the comparison and states its bounds); 0 when they agree.
 function compareNative(args, address, shot) {
     const native = path.join(args.out, 'native.png');
-    const r = spawnSync(args.truth, [address, args.bundle, native, shot], {encoding: 'utf8'});
+    const argv = [address, args.bundle, native, shot].concat(args.bound ? [args.bound] : []);
+    const r = spawnSync(args.truth, argv, {encoding: 'utf8'});
     process.stdout.write(r.stdout || '');
     process.stderr.write(r.stderr || '');
     if (r.error) throw new Setup(`${args.truth}: ${r.error.message}`);

@@ -47,10 +47,12 @@ TEST(PageAddress, GroundIsAFlagOrOnOrOff) {
     EXPECT_THROW(parseAddress("#ground=maybe"), Error);
 }
 
-TEST(PageAddress, PictureIsTheRenderUnlessTruthIsAsked) {
-    EXPECT_FALSE(parseAddress("#scene=book-triangle").truth);
-    EXPECT_FALSE(parseAddress("#picture=render").truth);
-    EXPECT_TRUE(parseAddress("#picture=truth").truth);
+TEST(PageAddress, PictureIsTheRenderUnlessTruthOrScoreIsAsked) {
+    using Picture = PageRequest::Picture;
+    EXPECT_EQ(parseAddress("#scene=book-triangle").picture, Picture::Render);
+    EXPECT_EQ(parseAddress("#picture=render").picture, Picture::Render);
+    EXPECT_EQ(parseAddress("#picture=truth").picture, Picture::Truth);
+    EXPECT_EQ(parseAddress("#picture=score").picture, Picture::Score);
     EXPECT_THROW(parseAddress("#picture=raytraced"), Error);
 }
 

@@ -1,0 +1,80 @@
+// The native side of the page's score tests (tests/web/run.js, mode picture with
+// picture=score): reads the same address with the page's own code, scores it natively
+// (OpenGL 4.5, the reference on Embree), writes native's error map and compares the page's
+// (its screenshot) with it:
+//   gnomon_page_score ADDRESS BUNDLE NATIVE.png [PAGE.png [BOUND]]
+// The error maps colour misclassified pixels (red false shadow, blue leak; truth/Metrics.h)
+// over the render in grey. The page's misclassified share, counted from its map as native's
+// is, must lie within BOUND points (default 0.05) of native's: the same geometric errors, a
+// pixel apart at most. Acne, whose rounding differs between rasterisers, gets a wider BOUND.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+
+#include "PageRequest.h"
+#include "gnomon/Image.h"
+#include "gnomon/Renderer.h"
+#include "gnomon/Score.h"
+
+namespace {
+
+// An error map's pixel is coloured (misclassified for some light), not the render's grey.
+bool marked(const gnomon::Image& map, int x, int y) {
+    const std::uint8_t* p = map.at(x, y);
+    return std::abs(int(p[0]) - int(p[1])) > 20 || std::abs(int(p[1]) - int(p[2])) > 20;
+}
+
+long markedPixels(const gnomon::Image& map) {
+    long n = 0;
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x)
+            n += marked(map, x, y);
+    return n;
+}
+
+int run(int argc, char** argv) {
+    if (argc < 4 || argc > 6) {
+        std::fprintf(stderr,
+                     "usage: gnomon_page_score ADDRESS BUNDLE NATIVE.png [PAGE.png [BOUND]]\n");
+        return 1;
+    }
+    const gnomon::web::PageScene page =
+        gnomon::web::loadRequest(gnomon::web::parseAddress(argv[1]), argv[2]);
+    gnomon::Renderer renderer;
+    const gnomon::ScoreResult native = gnomon::score(renderer, page.scene, page.options);
+    gnomon::writePng(argv[3], native.errors);
+    if (argc == 4) return 0;
+    const double bound = argc == 6 ? std::atof(argv[5]) : 0.05;
+
+    const gnomon::Image shot = gnomon::readPng(argv[4]);
+    if (shot.width != native.errors.width || shot.height != native.errors.height) {
+        std::fprintf(stderr, "page_score: the page's map is %dx%d, native's %dx%d\n", shot.width,
+                     shot.height, native.errors.width, native.errors.height);
+        return 1;
+    }
+    // Both maps counted the same way, scaled to native's share of pixel x light pairs.
+    const long nativeMarked = markedPixels(native.errors), pageMarked = markedPixels(shot);
+    const double pairs = double(std::max(native.overall.pixels, 1L));
+    const double nativePoints = 100.0 * native.overall.misclassified;
+    const double pagePoints = nativePoints + 100.0 * double(pageMarked - nativeMarked) / pairs;
+    std::printf(
+        "page_score: %s: native misclassifies %.3f %% (%ld pixels marked), the page "
+        "%.3f %% (%ld marked); bound %.2f points\n",
+        argv[1], nativePoints, nativeMarked, pagePoints, pageMarked, bound);
+    if (std::abs(pagePoints - nativePoints) <= bound) return 0;
+    std::fprintf(stderr, "page_score: the page's score differs from native's beyond the bound\n");
+    return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "page_score: %s\n", e.what());
+        return 1;
+    }
+}
