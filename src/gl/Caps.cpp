@@ -64,6 +64,14 @@ Caps queryCaps() {
     return c;
 }
 
+std::string currentGlInfo() {
+    auto str = [](GLenum e) {
+        const GLubyte* s = glGetString(e);
+        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+    };
+    return str(GL_VENDOR) + " / " + str(GL_RENDERER) + " / " + str(GL_VERSION);
+}
+
 const Caps& activeCaps() {
     return tActive ? *tActive : kGl45;
 }

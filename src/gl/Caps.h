@@ -5,6 +5,8 @@
 // of from #ifdefs. An ES 3.1/3.2 context is treated as WebGL2: only what WebGL2 offers counts.
 #pragma once
 
+#include <string>
+
 namespace gnomon::gl {
 
 enum class Api { Gl45, Gles3 };
@@ -41,6 +43,8 @@ struct Caps {
 
 // The capabilities of the context current on this thread.
 Caps queryCaps();
+// "vendor / renderer / version" of the current context.
+std::string currentGlInfo();
 
 // The capabilities the src/gl wrappers follow on this thread: those given to the last
 // activate() here, or OpenGL 4.5's when none was (nothing to ask, tests' own contexts).

@@ -195,14 +195,6 @@ bool hasCurrentContext() {
     return current;
 }
 
-std::string currentGlInfo() {
-    auto str = [](GLenum e) {
-        const GLubyte* s = glGetString(e);
-        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
-    };
-    return str(GL_VENDOR) + " / " + str(GL_RENDERER) + " / " + str(GL_VERSION);
-}
-
 void requireGl45() {
     const int version = epoxy_gl_version();
     GLint mask = 0;

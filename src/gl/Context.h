@@ -32,8 +32,6 @@ private:
 
 // True when this thread has a current EGL or GLX context (a GLFW window's, for example).
 bool hasCurrentContext();
-// "vendor / renderer / version" of the current context.
-std::string currentGlInfo();
 // Throws gnomon::Error unless the current context is OpenGL >= 4.5 core.
 void requireGl45();
 // Throws gnomon::Error unless the current context is OpenGL ES >= 3.0.

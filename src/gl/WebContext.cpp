@@ -32,14 +32,6 @@ bool hasCurrentContext() {
     return emscripten_webgl_get_current_context() != 0;
 }
 
-std::string currentGlInfo() {
-    auto str = [](GLenum e) {
-        const GLubyte* s = glGetString(e);
-        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
-    };
-    return str(GL_VENDOR) + " / " + str(GL_RENDERER) + " / " + str(GL_VERSION);
-}
-
 void requireGl45() {
     fail("a browser has WebGL2, not OpenGL 4.5 (" + currentGlInfo() + ")");
 }

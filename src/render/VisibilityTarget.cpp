@@ -101,23 +101,17 @@ void VisibilityTarget::read(int width, int height, int lights, bool drawn,
     out.object.assign(drawn ? std::size_t(out.width) * std::size_t(out.height) : 0, -1);
     out.tint.assign(mWithTint ? 3 * cells : 0, 1.0f);
     if (lights == 0 || !drawn) return;
-    if (!mObjects) {  // ES: the object in the visibility layers' third channel
-        readLayers(mVisibility, GL_RGBA, 4, out.width, out.height, lights,
-                   [&](std::size_t cell, const float* v) {
-                       out.visibility[cell] = v[0];
-                       out.texelWorld[cell] = v[1];
-                   });
-        readLayers(mVisibility, GL_RGBA, 4, out.width, out.height, 1,
-                   [&](std::size_t pixel, const float* v) { out.object[pixel] = int(v[2]) - 1; });
-    } else {
-        readLayers(mVisibility, GL_RG, 2, out.width, out.height, lights,
-                   [&](std::size_t cell, const float* v) {
-                       out.visibility[cell] = v[0];
-                       out.texelWorld[cell] = v[1];
-                   });
-        readLayers(mObjects, GL_RED, 1, out.width, out.height, 1,
-                   [&](std::size_t pixel, const float* v) { out.object[pixel] = int(v[0]) - 1; });
-    }
+    // ES (no object texture): RGBA visibility layers, the object in the first's third channel.
+    const bool es = !mObjects;
+    readLayers(mVisibility, es ? GL_RGBA : GL_RG, es ? 4 : 2, out.width, out.height, lights,
+               [&](std::size_t cell, const float* v) {
+                   out.visibility[cell] = v[0];
+                   out.texelWorld[cell] = v[1];
+               });
+    const int at = es ? 2 : 0;
+    readLayers(es ? mVisibility : mObjects, es ? GL_RGBA : GL_RED, es ? 4 : 1, out.width,
+               out.height, 1,
+               [&](std::size_t pixel, const float* v) { out.object[pixel] = int(v[at]) - 1; });
     if (!mWithTint) return;
     readLayers(mTint, GL_RGBA, 4, out.width, out.height, lights,
                [&](std::size_t cell, const float* v) { std::copy(v, v + 3, &out.tint[3 * cell]); });

@@ -11,6 +11,7 @@
 #include <exception>
 #include <string>
 
+#include "PageCheck.h"
 #include "PageRequest.h"
 #include "gnomon/Image.h"
 #include "gnomon/Renderer.h"
@@ -41,12 +42,9 @@ int run(int argc, char** argv) {
     gnomon::writePng(argv[3], native);
     if (argc == 4) return 0;
 
-    const gnomon::Image shot = gnomon::readPng(argv[4]);
-    if (shot.width != native.width || shot.height != native.height) {
-        std::fprintf(stderr, "page_render: the page's picture is %dx%d, native's %dx%d\n",
-                     shot.width, shot.height, native.width, native.height);
-        return 1;
-    }
+    const auto found = gnomon::web::check::pageShot("page_render", argv[4], native);
+    if (!found) return 1;
+    const gnomon::Image& shot = *found;
     long lit = 0, agree = 0, shadowed = 0;
     for (int y = 0; y < native.height; ++y) {
         for (int x = 0; x < native.width; ++x) {
@@ -67,20 +65,12 @@ int run(int argc, char** argv) {
         argv[1], lit, shadowed, 100.0 * share, 100.0 * kMinAgreement, d.maxChannelDiff,
         d.meanAbsDiff);
     if (lit > 0 && share >= kMinAgreement) return 0;
-    const std::string diff = std::string(argv[4]) + ".diff.png";
-    gnomon::writePng(diff, d.diff);
-    std::fprintf(stderr, "page_render: the page's shadows differ from native's; see %s\n",
-                 diff.c_str());
-    return 1;
+    return gnomon::web::check::failWithDiff("page_render", argv[4], native, shot,
+                                            "the page's shadows differ from native's");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "page_render: %s\n", e.what());
-        return 1;
-    }
+    return gnomon::web::check::guarded("page_render", [&] { return run(argc, argv); });
 }

@@ -13,6 +13,7 @@
 #include <exception>
 #include <string>
 
+#include "PageCheck.h"
 #include "PageRequest.h"
 #include "gnomon/Image.h"
 #include "gnomon/Renderer.h"
@@ -48,12 +49,9 @@ int run(int argc, char** argv) {
     if (argc == 4) return 0;
     const double bound = argc == 6 ? std::atof(argv[5]) : 0.05;
 
-    const gnomon::Image shot = gnomon::readPng(argv[4]);
-    if (shot.width != native.errors.width || shot.height != native.errors.height) {
-        std::fprintf(stderr, "page_score: the page's map is %dx%d, native's %dx%d\n", shot.width,
-                     shot.height, native.errors.width, native.errors.height);
-        return 1;
-    }
+    const auto found = gnomon::web::check::pageShot("page_score", argv[4], native.errors);
+    if (!found) return 1;
+    const gnomon::Image& shot = *found;
     // Both maps counted the same way, scaled to native's share of pixel x light pairs.
     const long nativeMarked = markedPixels(native.errors), pageMarked = markedPixels(shot);
     const double pairs = double(std::max(native.overall.pixels, 1L));
@@ -64,17 +62,12 @@ int run(int argc, char** argv) {
         "%.3f %% (%ld marked); bound %.2f points\n",
         argv[1], nativePoints, nativeMarked, pagePoints, pageMarked, bound);
     if (std::abs(pagePoints - nativePoints) <= bound) return 0;
-    std::fprintf(stderr, "page_score: the page's score differs from native's beyond the bound\n");
-    return 1;
+    return gnomon::web::check::failWithDiff("page_score", argv[4], native.errors, shot,
+                                            "the page's score differs from native's");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "page_score: %s\n", e.what());
-        return 1;
-    }
+    return gnomon::web::check::guarded("page_score", [&] { return run(argc, argv); });
 }

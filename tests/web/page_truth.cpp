@@ -9,6 +9,7 @@
 #include <exception>
 #include <string>
 
+#include "PageCheck.h"
 #include "PageRequest.h"
 #include "TruthPicture.h"
 #include "gnomon/Image.h"
@@ -37,33 +38,21 @@ int run(int argc, char** argv) {
     gnomon::writePng(argv[3], native);
     if (argc == 4) return 0;
 
-    const gnomon::Image shot = gnomon::readPng(argv[4]);
-    if (shot.width != native.width || shot.height != native.height) {
-        std::fprintf(stderr, "page_truth: the page's picture is %dx%d, native's %dx%d\n",
-                     shot.width, shot.height, native.width, native.height);
-        return 1;
-    }
-    const gnomon::ImageDiff d = gnomon::compareImages(native, shot, kThreshold);
+    const auto shot = gnomon::web::check::pageShot("page_truth", argv[4], native);
+    if (!shot) return 1;
+    const gnomon::ImageDiff d = gnomon::compareImages(native, *shot, kThreshold);
     std::printf(
         "page_truth: %s: max channel difference %d, %.3f %% of pixels beyond %d, mean "
         "%.3f (bounds: %.1f %%, mean %.2f)\n",
         argv[1], d.maxChannelDiff, 100.0 * d.failingFraction, kThreshold, d.meanAbsDiff,
         100.0 * kMaxFailing, kMaxMean);
     if (d.failingFraction <= kMaxFailing && d.meanAbsDiff <= kMaxMean) return 0;
-    const std::string diff = std::string(argv[4]) + ".diff.png";
-    gnomon::writePng(diff, d.diff);
-    std::fprintf(stderr, "page_truth: the page differs from native beyond the bounds; see %s\n",
-                 diff.c_str());
-    return 1;
+    return gnomon::web::check::failWithDiff("page_truth", argv[4], native, *shot,
+                                            "the page differs from native beyond the bounds");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "page_truth: %s\n", e.what());
-        return 1;
-    }
+    return gnomon::web::check::guarded("page_truth", [&] { return run(argc, argv); });
 }
