@@ -64,7 +64,6 @@ GLint glWrap(TextureWrap w) {
 // Mesh-local indices made global: OpenGL ES 3.0 (WebGL2) draws have no base vertex.
 void appendRebased(std::vector<std::uint32_t>& indices, const std::vector<std::uint32_t>& own,
                    std::uint32_t base) {
-    indices.reserve(indices.size() + own.size());
     for (std::uint32_t i : own)
         indices.push_back(i + base);
 }
