@@ -136,7 +136,8 @@ public:
               std::size_t bytes, void* out) const;
     // Every texel of level 0 (all layers) set to `value` given as `format`/GL_FLOAT.
     void clear(GLenum format, const float* value);
-    // The 6 faces of cube `cube` of a cube-map array set to `depth`.
+    // The 6 faces of cube `cube` of a cube-map array set to `depth` (OpenGL 4.5; ES clears
+    // through framebuffers).
     void clearCubeDepth(int cube, float depth);
     // GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP_ARRAY or GL_TEXTURE_BUFFER;
     // cube-map arrays are GL_TEXTURE_2D_ARRAY of 6 layers per cube where the API lacks them.

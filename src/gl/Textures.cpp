@@ -187,19 +187,9 @@ void Texture::clear(GLenum format, const float* value) {
 }
 
 void Texture::clearCubeDepth(int cube, float depth) {
-    if (activeCaps().clearTexture) {
-        glClearTexSubImage(id(), 0, 0, 0, 6 * cube, mWidth, mHeight, 6, GL_DEPTH_COMPONENT,
-                           GL_FLOAT, &depth);
-        return;
-    }
-    for (int face = 0; face < 6; ++face) {
-        clearThrough(
-            [&] {
-                glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, id(), 0,
-                                          6 * cube + face);
-            },
-            GL_DEPTH, &depth);
-    }
+    if (!activeCaps().clearTexture) notOnEs("clearing part of a texture");
+    glClearTexSubImage(id(), 0, 0, 0, 6 * cube, mWidth, mHeight, 6, GL_DEPTH_COMPONENT, GL_FLOAT,
+                       &depth);
 }
 
 Texture Texture::layersView(const std::string& label, const Texture& source) {

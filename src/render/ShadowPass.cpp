@@ -306,8 +306,14 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
         glDisable(GL_SCISSOR_TEST);
         drawCasters(scene, plan, light, options, variant, 1, [&] { gl::uniform(1, m[0]); });
     } else {
-        // Only this light's six faces are cleared; other cubes keep their maps.
-        mCubes.clearCubeDepth(light.layer, one);
+        // Only this light's six faces are cleared; other cubes keep their maps. Without
+        // texture clears (ES), through the faces' framebuffers, which that path always has.
+        if (gl::activeCaps().clearTexture) {
+            mCubes.clearCubeDepth(light.layer, one);
+        } else {
+            for (int face = 0; face < 6; ++face)
+                mCubeFaceFramebuffers[size_t(6 * light.layer + face)].clearDepth(one);
+        }
         // Faces the view does not look up are cleared and left empty.
         std::array<GLint, 6> faces{};
         GLsizei count = 0;
