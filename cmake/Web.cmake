@@ -20,7 +20,7 @@ endforeach()
 
 set(staging "${CMAKE_BINARY_DIR}/staging-include")
 file(MAKE_DIRECTORY "${staging}")
-foreach(header glm nlohmann stb tiny_gltf.h)
+foreach(header glm nlohmann stb tiny_gltf.h CLI)
     if(NOT EXISTS "/usr/include/${header}")
         message(FATAL_ERROR "/usr/include/${header} is missing: run scripts/web-deps.sh")
     endif()
@@ -32,6 +32,7 @@ add_library(gnomon_web_headers INTERFACE)
 target_include_directories(gnomon_web_headers SYSTEM INTERFACE "${staging}" "${staging}/stb")
 add_library(glm::glm ALIAS gnomon_web_headers)
 add_library(nlohmann_json::nlohmann_json ALIAS gnomon_web_headers)
+add_library(CLI11::CLI11 ALIAS gnomon_web_headers)
 
 # Third-party code is compiled as its authors wrote it: no warnings of ours.
 set(generated "${CMAKE_BINARY_DIR}/third-party")
@@ -62,3 +63,4 @@ add_library(gnomon_web_imgui STATIC
     "${imgui}/backends/imgui_impl_opengl3.cpp")
 target_include_directories(gnomon_web_imgui SYSTEM PUBLIC "${imgui}" "${imgui}/backends")
 target_link_options(gnomon_web_imgui INTERFACE -sUSE_GLFW=3 -sMAX_WEBGL_VERSION=2)
+add_library(PkgConfig::imgui ALIAS gnomon_web_imgui)

@@ -28,7 +28,7 @@ as_root() {
 
 # 1. Packages. npm only where the machine has none (Debian's emscripten brings a Node).
 packages=(emscripten chromium cmake make python3 dpkg-dev
-    libglm-dev libstb-dev libtinygltf-dev nlohmann-json3-dev)
+    libglm-dev libstb-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev fonts-dejavu-core)
 command -v npm >/dev/null 2>&1 || packages+=(npm)
 scripts/deps.sh --only "${packages[@]}"
 

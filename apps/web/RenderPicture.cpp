@@ -2,18 +2,15 @@
 
 #include <emscripten/html5_webgl.h>
 
+#include <chrono>
 #include <memory>
 
+#include "gl/Context.h"
 #include "gnomon/Error.h"
 #include "gnomon/Renderer.h"
 
 namespace gnomon::web {
 namespace {
-
-// The extensions the renderer's WebGL2 path uses where they exist (gl::Caps finds them):
-// WebGL hands an extension's features over only once it is enabled.
-constexpr const char* kExtensions[] = {"EXT_color_buffer_float", "OES_texture_float_linear",
-                                       "EXT_depth_clamp", "EXT_float_blend"};
 
 // The context and the renderer, made at the first picture and kept: programs, maps and the
 // scene's buffers stay on the GPU between pictures.
@@ -30,9 +27,7 @@ Renderer& renderer() {
         throw Error(ErrorKind::Gl, "this browser gives the page no WebGL2 context");
     }
     emscripten_webgl_make_context_current(context);
-    for (const char* name : kExtensions)
-        emscripten_webgl_enable_extension(context, name);
-    emscripten_webgl_enable_WEBGL_multi_draw(context);
+    gl::enableWebGlExtensions();
     ContextOptions options;
     options.currentContext = true;
     made = std::make_unique<Renderer>(options);
@@ -49,6 +44,21 @@ ScoreResult scorePicture(const Scene& scene, const RenderOptions& options) {
     ScoreOptions so;
     so.threads = 1;  // no threads without cross-origin isolation
     return score(renderer(), scene, options, so);
+}
+
+std::vector<double> benchPicture(const Scene& scene, const RenderOptions& options, int warmup,
+                                 int frames) {
+    Renderer& r = renderer();
+    std::vector<double> ms;
+    for (int i = 0; i < warmup + frames; ++i) {
+        r.invalidateShadowMaps();
+        const auto start = std::chrono::steady_clock::now();
+        r.render(scene, options);
+        const auto stop = std::chrono::steady_clock::now();
+        if (i >= warmup)
+            ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+    }
+    return ms;
 }
 
 }  // namespace gnomon::web

@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "PageRequest.h"
+#include "PageViewer.h"
 #include "RenderPicture.h"
 #include "TruthPicture.h"
 #include "gnomon/Error.h"
@@ -111,9 +112,47 @@ val show(const std::string& address) {
     return result;
 }
 
+// {x, y, width, height} of the viewer's camera view on the canvas (the browser tests drag
+// on it and compare it).
+val viewerRect() {
+    const std::array<float, 4> r = gnomon::web::viewerRect();
+    val out = val::object();
+    out.set("x", r[0]);
+    out.set("y", r[1]);
+    out.set("width", r[2]);
+    out.set("height", r[3]);
+    return out;
+}
+
+// {ok, ms: [each frame's wall time]} or {ok: false, error}: the address's picture rendered
+// as `gnomon bench` times a frame (scripts/web-bench.js compares the two).
+val bench(const std::string& address, int frames) {
+    val result = val::object();
+    try {
+        const gnomon::web::PageScene page =
+            gnomon::web::loadRequest(gnomon::web::parseAddress(address), kBundle);
+        const std::vector<double> ms =
+            gnomon::web::benchPicture(page.scene, page.options, 3, std::clamp(frames, 1, 10000));
+        val list = val::array();
+        for (double m : ms)
+            list.call<void>("push", m);
+        result.set("ok", true);
+        result.set("ms", list);
+    } catch (const std::exception& e) {
+        result.set("ok", false);
+        result.set("error", std::string("gnomon: error: ") + e.what());
+    }
+    return result;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(gnomon_page) {
     emscripten::function("scenes", &scenes);
     emscripten::function("show", &show);
+    emscripten::function("bench", &bench);
+    emscripten::function("startViewer", &gnomon::web::startViewer);
+    emscripten::function("resizeViewer", &gnomon::web::resizeViewer);
+    emscripten::function("viewerRect", &viewerRect);
+    emscripten::function("viewerDrawn", &gnomon::web::viewerDrawn);
 }

@@ -1,21 +1,59 @@
 // gnomon's page (apps/web): reads the address (#scene=NAME&OPTION=VALUE..., the command
-// line's option names), asks the wasm module (main.cpp) for the scene's picture (rendered with
-// WebGL2, or with picture=truth ray-traced),
-// draws it into the canvas #gnomon and says in the title when it is done: "gnomon ready: ..."
-// (what the browser tests wait for) or "gnomon error: ..." with the CLI's message.
+// line's option names) and shows either the viewer (PageViewer.cpp: gnomon view's app on the
+// canvas #gnomon, which keeps the address up to date as the user changes things) or, with
+// ui=off or a picture=, only the picture (main.cpp: rendered with WebGL2, ray-traced with
+// picture=truth, the error map with picture=score) drawn into the same canvas. The title says
+// when it is done: "gnomon ready: ..." (what the browser tests wait for) or "gnomon error:
+// ..." with the CLI's message.
 'use strict';
+
+// The picture alone, not the viewer: decided once, as the page loads (the canvas takes a 2D
+// context for a picture, WebGL2 for the viewer).
+const pictureOnly = (() => {
+    const params = addressParams();
+    return params.get('ui') === 'off' || params.has('picture');
+})();
 
 // Emscripten's module settings: gnomon.js, loaded after this file, fills in the rest.
 var Module = {
     print: (text) => console.log(text),
     printErr: (text) => console.warn(text),
+    canvas: pictureOnly ? element('gl') : element('gnomon'),
     onRuntimeInitialized: () => {
         fillMenu();
         element('file').addEventListener('change', (e) => loadFiles(e.target.files));
-        window.addEventListener('hashchange', show);
-        show();
+        document.body.classList.toggle('viewer', !pictureOnly);
+        window.addEventListener('hashchange', pictureOnly ? show : view);
+        if (pictureOnly) show();
+        else view();
     },
 };
+
+// The viewer, over the window below the header; a new address replaces its scene and options.
+function view() {
+    document.title = 'gnomon: working';
+    element('scene').value = addressParams().get('scene') || 'book-triangle';
+    const [width, height] = viewerSize();
+    const error = Module.startViewer(location.hash, width, height);
+    element('error').hidden = !error;
+    element('error').textContent = error;
+    element('status').textContent = error ? 'error' : '';
+    if (error) document.title = 'gnomon error: ' + error.replace(/^gnomon: error: /, '');
+}
+
+// The viewer's size in CSS pixels: the window below the header, at least 640x400.
+function viewerSize() {
+    const top = element('gnomon').getBoundingClientRect().top;
+    return [Math.max(640, window.innerWidth), Math.max(400, Math.floor(window.innerHeight - top))];
+}
+window.addEventListener('resize', () => {
+    if (!pictureOnly && Module.resizeViewer) Module.resizeViewer(...viewerSize());
+});
+
+// Keys the viewer uses that the browser would take (F5 reloads the page).
+window.addEventListener('keydown', (e) => {
+    if (!pictureOnly && e.key === 'F5') e.preventDefault();
+});
 
 function element(id) {
     return document.getElementById(id);

@@ -40,5 +40,11 @@ void requireGles3();
 void requireUsable();
 // Routes KHR_debug messages of the current context to stderr (errors and warnings).
 void installDebugOutput();
+#ifdef __EMSCRIPTEN__
+// Enables on the current WebGL2 context the extensions the renderer uses where the browser
+// has them (gl::Caps then finds them): WebGL hands an extension's features over only once
+// it is enabled.
+void enableWebGlExtensions();
+#endif
 
 }  // namespace gnomon::gl

@@ -52,4 +52,12 @@ void requireUsable() {
 
 void installDebugOutput() {}  // WebGL reports errors through the browser's console
 
+void enableWebGlExtensions() {
+    const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_get_current_context();
+    for (const char* name : {"EXT_color_buffer_float", "OES_texture_float_linear",
+                             "EXT_depth_clamp", "EXT_float_blend"})
+        emscripten_webgl_enable_extension(context, name);
+    emscripten_webgl_enable_WEBGL_multi_draw(context);
+}
+
 }  // namespace gnomon::gl

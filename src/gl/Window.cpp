@@ -1,6 +1,8 @@
+// Natively GLFW 3.3 with an OpenGL 4.5 core context; in the web build Emscripten's GLFW (the
+// 3.2 API) on the page's canvas (Module.canvas) with a WebGL2 context.
 #include "gl/Window.h"
 
-#include <epoxy/gl.h>  // before GLFW, which then includes no GL header of its own
+#include "gl/Gl.h"  // before GLFW, which then includes no GL header of its own
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -11,11 +13,17 @@
 
 namespace gnomon::gl {
 namespace {
+#ifdef __EMSCRIPTEN__
+std::string lastGlfwError() {
+    return "the browser gave no WebGL2 context on the page's canvas";
+}
+#else
 std::string lastGlfwError() {
     const char* description = nullptr;
     glfwGetError(&description);
     return description ? description : "unknown GLFW error";
 }
+#endif
 }  // namespace
 
 Window::Window(const WindowSettings& settings) {
@@ -23,23 +31,36 @@ Window::Window(const WindowSettings& settings) {
         throw Error(ErrorKind::Gl, "cannot open a window: " + lastGlfwError() +
                                        " (no display? run under xvfb-run -a)");
     }
+#ifdef __EMSCRIPTEN__
+    // WebGL2 (the build links for no other); the colour buffer needs no depth of its own.
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_DEPTH_BITS, 0);
+    glfwWindowHint(GLFW_STENCIL_BITS, 0);
+    const char* kind = "WebGL2";
+#else
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, settings.debug ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_VISIBLE, settings.visible ? GLFW_TRUE : GLFW_FALSE);
+    const char* kind = "OpenGL 4.5 core";
+#endif
     mWindow =
         glfwCreateWindow(settings.width, settings.height, settings.title.c_str(), nullptr, nullptr);
     if (!mWindow) {
         const std::string reason = lastGlfwError();
         glfwTerminate();
-        throw Error(ErrorKind::Gl, "cannot open an OpenGL 4.5 core window: " + reason);
+        throw Error(ErrorKind::Gl, std::string("cannot open an ") + kind + " window: " + reason);
     }
     glfwMakeContextCurrent(mWindow);
     try {
         glfwSwapInterval(settings.vsync ? 1 : 0);
-        requireGl45();
+        requireUsable();
+#ifdef __EMSCRIPTEN__
+        enableWebGlExtensions();
+#endif
         if (settings.debug) installDebugOutput();
     } catch (...) {
         glfwDestroyWindow(mWindow);
@@ -62,8 +83,13 @@ void Window::swapBuffers() {
 void Window::pollEvents() {
     glfwPollEvents();
 }
-void Window::waitEvents(double seconds) {
-    glfwWaitEventsTimeout(seconds);
+void Window::waitEvents([[maybe_unused]] double seconds) {
+#ifndef __EMSCRIPTEN__
+    glfwWaitEventsTimeout(seconds);  // a page cannot wait: the browser calls it each frame
+#endif
+}
+void Window::setSize(int width, int height) {
+    glfwSetWindowSize(mWindow, width, height);
 }
 void Window::framebufferSize(int& width, int& height) const {
     glfwGetFramebufferSize(mWindow, &width, &height);

@@ -35,6 +35,8 @@ public:
     void pollEvents();
     // Sleeps until an event arrives or `seconds` pass (an idle app's loop).
     void waitEvents(double seconds);
+    // Resizes the window (in the page: its canvas) to width x height screen units.
+    void setSize(int width, int height);
     // Size of the default framebuffer in pixels.
     void framebufferSize(int& width, int& height) const;
     // Binds the default framebuffer, sets the viewport to all of it and clears it to the

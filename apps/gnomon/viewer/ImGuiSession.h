@@ -9,6 +9,9 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#ifdef __EMSCRIPTEN__
+#include <emscripten/html5.h>
+#endif
 #include <imgui.h>
 
 #include <backends/imgui_impl_glfw.h>
@@ -23,13 +26,15 @@ public:
         ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;  // no imgui.ini left in the working folder
-        float xScale = 1.0f, yScale = 1.0f;
-        glfwGetWindowContentScale(window, &xScale, &yScale);
-        const float scale = std::clamp(std::max(xScale, yScale), 1.0f, 4.0f);
+        const float scale = std::clamp(contentScale(window), 1.0f, 4.0f);
         style(scale);
         loadFont(io, scale);
         ImGui_ImplGlfw_InitForOpenGL(window, true);
+#ifdef __EMSCRIPTEN__
+        ImGui_ImplOpenGL3_Init("#version 300 es");  // WebGL2
+#else
         ImGui_ImplOpenGL3_Init("#version 410 core");
+#endif
     }
     ~ImGuiSession() {
         ImGui_ImplOpenGL3_Shutdown();
@@ -40,6 +45,18 @@ public:
     ImGuiSession& operator=(const ImGuiSession&) = delete;
 
 private:
+    // Screen pixels per window unit: the desktop's scale, or the page's device pixel ratio
+    // (Emscripten's GLFW has the 3.2 API, without content scales).
+    static float contentScale([[maybe_unused]] GLFWwindow* window) {
+#ifdef __EMSCRIPTEN__
+        return float(emscripten_get_device_pixel_ratio());
+#else
+        float xScale = 1.0f, yScale = 1.0f;
+        glfwGetWindowContentScale(window, &xScale, &yScale);
+        return std::max(xScale, yScale);
+#endif
+    }
+
     // Dear ImGui's dark theme, less boxy: rounded frames, roomier rows, a tool's blue.
     static void style(float scale) {
         ImGui::StyleColorsDark();

@@ -38,27 +38,46 @@ Viewer::Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHe
 }
 
 int Viewer::run() {
-    auto last = Clock::now();
-    while (!mWindow.shouldClose() && !mQuit) {
-        const bool idle = !mScripted && !mState.playing && !mJob && !mTuneJob && !dirty();
-        if (idle) {
-            mWindow.waitEvents(0.25);
-        } else {
-            mWindow.pollEvents();
-        }
-        const auto now = Clock::now();
-        const double dt = std::chrono::duration<double>(now - last).count();
-        last = now;
-        if (mState.playing) {
-            mState.options.time += dt * mState.speed;
-            ++mState.revision;
-        }
-        frame();
-        if (mExitCode != 0) return mExitCode;
-        mFrameMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - now).count());
-        if (mFrameMs.size() > 600) mFrameMs.erase(mFrameMs.begin());
+    while (step()) {
     }
     return mExitCode;
+}
+
+bool Viewer::step() {
+    if (mWindow.shouldClose() || mQuit || mExitCode != 0) return false;
+    const bool idle = !mScripted && !mState.playing && !mJob && !mTuneJob && !dirty();
+    if (idle) {
+        mWindow.waitEvents(0.25);
+    } else {
+        mWindow.pollEvents();
+    }
+    const auto now = Clock::now();
+    const double dt = mLastStep == Clock::time_point{}
+                          ? 0.0
+                          : std::chrono::duration<double>(now - mLastStep).count();
+    mLastStep = now;
+    if (mState.playing) {
+        mState.options.time += dt * mState.speed;
+        ++mState.revision;
+    }
+    frame();
+    if (mExitCode != 0) return false;
+    mFrameMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - now).count());
+    if (mFrameMs.size() > 600) mFrameMs.erase(mFrameMs.begin());
+    return true;
+}
+
+void Viewer::replaceState(view::State state) {
+    const std::uint64_t revision = mState.revision, viewRevision = mState.viewRevision;
+    mJob.reset();
+    mTuneJob.reset();
+    mScore.reset();
+    mTune.reset();
+    mOverlayTexture = gl::Texture{};
+    mOverlay = false;
+    mState = std::move(state);
+    mState.revision = revision + 1;
+    mState.viewRevision = viewRevision + 1;
 }
 
 ContextOptions Viewer::contextOptions(bool verbose) {

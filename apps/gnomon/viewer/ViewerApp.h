@@ -3,7 +3,9 @@
 // and files (ViewerJobs.cpp) and the script runner (ViewerScript.cpp).
 #pragma once
 
+#include <array>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -82,7 +84,32 @@ public:
     Viewer(const ViewArgs& args, bool verbose, int windowWidth, int windowHeight, view::State state,
            std::vector<view::Command> script);
 
+    // The app loop until the window closes, a script quits or fails: the exit code.
     int run();
+    // One turn of it: events, the animation clock, a frame. False once the viewer is done
+    // (a page, whose browser runs the loop, calls this once a frame).
+    bool step();
+    int exitCode() const { return mExitCode; }
+    // What is shown: the web page writes it into its address.
+    const view::State& state() const { return mState; }
+    // A frame of the current state is drawn, with all its shadow maps and no error.
+    bool frameReady() const {
+        return mFrames > 0 && !dirty() && mFrameError.empty() && mDrawnWidth > 0;
+    }
+    const std::string& frameError() const { return mFrameError; }
+    // The camera's view as last drawn, in pixels.
+    int drawnWidth() const { return mDrawnWidth; }
+    int drawnHeight() const { return mDrawnHeight; }
+    // The file the viewer last wrote (a screenshot, a scene file): the page hands it to the
+    // browser's downloads.
+    const std::string& lastWritten() const { return mLastWritten; }
+    // Where the camera's view is in the window (screen units): x, y, width, height.
+    const std::array<float, 4>& viewRect() const { return mViewRect; }
+    // The window's new size in screen units (the page's canvas follows the browser's window).
+    void resize(int width, int height) { mWindow.setSize(width, height); }
+    // Shows another scene and options (the page's address changed): the score, tune and
+    // their overlay of the old view go.
+    void replaceState(view::State state);
 
 private:
     // The app loop's frame and the input (Viewer.cpp).
@@ -200,6 +227,8 @@ private:
     int mTab = 0, mSelectTab = -1;   // the controls' tab shown; one to show next frame
     float mControlsOverflow = 0.0f;  // how far the shown tab scrolls (0: it fits)
     long mFrames = 0;
+    std::array<float, 4> mViewRect{};
+    std::chrono::steady_clock::time_point mLastStep;
     int mExitCode = 0;
 };
 

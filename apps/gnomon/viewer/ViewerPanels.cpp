@@ -43,6 +43,7 @@ void Viewer::views(float x, float mainW, float viewW, float viewH) {
         const ImVec2 size(float(mDrawnWidth) / io.DisplayFramebufferScale.x,
                           float(mDrawnHeight) / io.DisplayFramebufferScale.y);
         ImGui::Image(imguiTexture(frame), size, {0, 1}, {1, 0});
+        mViewRect = {origin.x, origin.y, size.x, size.y};
         const bool hovered = ImGui::IsItemHovered();
         if (mOverlay && mOverlayTexture) {
             ImGui::GetWindowDrawList()->AddImage(

@@ -198,6 +198,10 @@ const PresetEntry* findPreset(const std::string& name) {
 void load(State& state, const std::string& source, bool ground, UpAxis up) {
     Scene scene = loadScene(source, up);
     if (ground) addGround(scene);
+    show(state, std::move(scene), source, ground, up);
+}
+
+void show(State& state, Scene scene, const std::string& source, bool ground, UpAxis up) {
     const int width = state.options.width, height = state.options.height;
     state.scene = std::move(scene);
     state.source = source;

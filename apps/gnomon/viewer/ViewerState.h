@@ -52,6 +52,8 @@ const PresetEntry* findPreset(const std::string& name);
 // stands up) with its authored options; keeps the view toggles and, unless fitView is off,
 // the size. Throws gnomon::Error.
 void load(State& state, const std::string& source, bool ground, UpAxis up = UpAxis::Y);
+// The same for a scene loaded elsewhere (the web page's loader) from `source`.
+void show(State& state, Scene scene, const std::string& source, bool ground, UpAxis up);
 // Applies flags spelled as `gnomon render` spells them ({"--map-size", "64", ...}) over the
 // state: --scene and --up (load first), --ground, --preset (options restart from it), then every
 // other flag; --size also turns fitView off. Throws gnomon::Error naming the bad flag.
