@@ -9,7 +9,10 @@
 //   node run.js upload --web DIR --address '#KEYS' --file F (--truth EXE --bundle DIR |
 //           --expect-error TEXT) --out DIR
 //       F chosen with the page's file button: its picture against native's for the same file
-//       and keys, or an error that holds TEXT (a format this build does not read).
+//       and keys, or an error that holds TEXT (a format this build does not read);
+//   node run.js drag --web DIR --address '#scene=...' --check EXE --out DIR
+//       the viewer: a light dragged moves its shadow, and the address the page then shows
+//       reopens the same view (viewer.js; EXE: gnomon_page_drag).
 // --needs-bundle: the address names a model of BUNDLE (../shared/scenes), which a clone
 // without that folder lacks: skipped then (exit 77). Exit 0 pass, 1 fail, saying why.
 'use strict';
@@ -18,6 +21,7 @@ const fs = require('fs');
 const path = require('path');
 const {spawnSync} = require('child_process');
 const {Setup, serve, launch, open, waitForTitle} = require('./browser.js');
+const {drag} = require('./viewer.js');
 
 const kTimeoutMs = 120000;  // page load, scene load and trace under a loaded CI machine
 const kSkip = 77;
@@ -152,7 +156,11 @@ async function main() {
         if (args.mode === 'picture') return await picture(args);
         if (args.mode === 'error') return await error(args);
         if (args.mode === 'upload') return await upload(args);
-        throw new Setup(`unknown mode '${args.mode}' (picture, error or upload)`);
+        if (args.mode === 'drag') {
+            fs.mkdirSync(args.out, {recursive: true});
+            return await drag(args);
+        }
+        throw new Setup(`unknown mode '${args.mode}' (picture, error, upload or drag)`);
     } catch (e) {
         console.error(`web test: ${e instanceof Setup ? e.message : e.stack}`);
         return 1;
