@@ -4,12 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <regex>
 #include <tuple>
 
+#include "core/FloatText.h"
 #include "gnomon/Error.h"
 
 namespace gnomon::web {
@@ -92,25 +91,16 @@ bool readChoice(const std::string& text, E& v, int count) {
     return false;
 }
 
-// What the tables below say of each key and field, as text and back. Captureless lambdas:
-// the tables hold plain function pointers.
+// Short names for the tables' lambdas, which capture nothing: the tables hold plain function
+// pointers.
 using L = const Light&;
 using S = const std::string&;
 
 }  // namespace
 
 std::string numberText(float v) {
-    char text[48];
-    if (v == std::floor(v) && std::abs(v) < 1e15f) {  // whole: all digits, no exponent
-        std::snprintf(text, sizeof text, "%.0f", double(v));
-        return text;
-    }
-    for (int precision = 1; precision <= 9; ++precision) {
-        std::snprintf(text, sizeof text, "%.*g", precision, double(v));
-        if (std::strtof(text, nullptr) == v) break;
-    }
-    std::string out = text;
-    const std::size_t plus = out.find("e+");  // "1e+20" reads back as "1e20"; '+' needs escaping
+    std::string out = shortestText(v);
+    const std::size_t plus = out.find("e+");  // "1e+06" reads back as "1e06"; '+' needs escaping
     if (plus != std::string::npos) out.erase(plus + 1, 1);
     return out;
 }

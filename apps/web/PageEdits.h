@@ -49,8 +49,8 @@ std::map<std::string, std::string> parseLightFields(const std::string& key,
 // "light5: the scene has 2 lights (light0..light1)" for a light it does not have.
 void applySceneEdits(const PageRequest& request, Scene& scene);
 
-// The shortest text that reads back as the same float ("0.1", "-2.5", "50", "1e-05"), whole
-// numbers without an exponent.
+// The shortest text that reads back as the same float (shortestText: "0.1", "50", "1e06"),
+// without the '+' of an exponent, which an address would have to escape.
 std::string numberText(float v);
 // `text` as the address carries it: %XX for every byte but letters, digits and -._~,:;/
 std::string encodedValue(const std::string& text);

@@ -321,7 +321,8 @@ TEST(PageAddressWrite, EscapesWhatTheAddressSplitsOn) {
     const std::string address = addressOf(v);
     EXPECT_EQ(address, "#scene=/upload/my%20model%20%231%262%3D50%25%2B.glb");
     EXPECT_EQ(parseAddress(address).scene, v.base.scene);
-    EXPECT_EQ(numberText(1e6f), "1000000");
+    EXPECT_EQ(numberText(1e6f), "1e06");
+    EXPECT_EQ(numberText(50.0f), "50");
     EXPECT_EQ(numberText(1e20f), "1e20");
     EXPECT_EQ(numberText(1e-5f), "1e-05");
     EXPECT_EQ(numberText(0.1f), "0.1");
