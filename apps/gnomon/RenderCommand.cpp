@@ -1,12 +1,8 @@
 // The render flags: made from the option schema, plus the scene edits (ground, camera, sun)
 // every command shares.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <optional>
-
-#include <glm/glm.hpp>
 
 #include "RenderOptionsCli.h"
 #include "gnomon/Error.h"
@@ -28,23 +24,6 @@ E parseEnum(const std::string& flag, const std::string& value,
     bad(flag, "expected one of " + std::string(choices) + ", got '" + value + "'");
 }
 
-// "X,Y,Z" (or "A,B" with n = 2) as numbers; none when malformed or not finite.
-std::optional<glm::vec3> numbers(const std::string& text, int n) {
-    glm::vec3 v(0.0f);
-    std::size_t at = 0;
-    for (int i = 0; i < n; ++i) {
-        const std::size_t end = i + 1 < n ? text.find(',', at) : text.size();
-        if (end == std::string::npos) return std::nullopt;
-        const std::string part = text.substr(at, end - at);
-        char* stop = nullptr;
-        v[i] = std::strtof(part.c_str(), &stop);
-        if (part.empty() || stop != part.c_str() + part.size() || !std::isfinite(v[i]))
-            return std::nullopt;
-        at = end + 1;
-    }
-    return v;
-}
-
 }  // namespace
 
 UpAxis RenderFlags::upAxis() const {
@@ -58,54 +37,12 @@ void RenderFlags::editScene(Scene& scene) const {
 
 void RenderFlags::placeCameraAndSun(Scene& scene) const {
     auto given = [&](const char* flag) { return app && app->count(flag) > 0; };
-    Camera& c = scene.camera;
-    if (given("--camera-eye")) {
-        const auto v = numbers(cameraEye, 3);
-        if (!v) bad("--camera-eye", "expected X,Y,Z such as 4,3,6, got '" + cameraEye + "'");
-        c.eye = *v;
-    }
-    if (given("--camera-target")) {
-        const auto v = numbers(cameraTarget, 3);
-        if (!v) bad("--camera-target", "expected X,Y,Z such as 0,1,0, got '" + cameraTarget + "'");
-        c.centre = *v;
-    }
-    if (given("--camera-fov")) {
-        if (!(cameraFov >= 1.0f && cameraFov <= 179.0f)) {
-            char typed[32];  // as typed, not std::to_string's six decimals
-            std::snprintf(typed, sizeof typed, "%g", double(cameraFov));
-            bad("--camera-fov", std::string("must be in 1..179 degrees, got ") + typed);
-        }
-        c.fovyDegrees = cameraFov;
-    }
-    if (given("--camera-eye") || given("--camera-target")) {
-        if (!(glm::length(c.centre - c.eye) > 0.0f))
-            bad("--camera-eye", "the eye and the target are the same point");
-        // A camera placed by flags keeps no near and far planes from the one it replaced (a
-        // framing camera's, sized for a view from outside, would cut away a model seen from
-        // within).
-        fitCameraDepth(scene, c);
-    }
-    // Eye and target given, the framing camera a loader added is replaced: its warning would
-    // only mislead.
-    if (given("--camera-eye") && given("--camera-target")) {
-        std::erase_if(scene.warnings, [](const std::string& w) {
-            return w.ends_with("no camera: one framing the scene was added");
-        });
-    }
-    if (given("--sun")) {
-        const auto v = numbers(sun, 2);
-        if (!v || !(v->y > 0.0f && v->y <= 90.0f))
-            bad("--sun",
-                "expected AZIMUTH,ELEVATION in degrees, elevation in (0, 90], got '" + sun + "'");
-        Light l;
-        l.name = "sun (--sun)";
-        l.type = LightType::Directional;
-        l.direction = sunDirection(v->x, v->y);
-        scene.lights = {l};
-        // The model's added sun is gone with the rest: its warning would only mislead.
-        std::erase_if(scene.warnings,
-                      [](const std::string& w) { return w.ends_with(kDefaultSunWarning); });
-    }
+    CameraAndSun edits;  // the library applies them, as it does the web page's address
+    if (given("--camera-eye")) edits.eye = cameraEye;
+    if (given("--camera-target")) edits.target = cameraTarget;
+    if (given("--camera-fov")) edits.fovDegrees = cameraFov;
+    if (given("--sun")) edits.sun = sun;
+    gnomon::placeCameraAndSun(scene, edits);
     // No revision bump: the camera and the lights are read every frame.
 }
 

@@ -1,11 +1,12 @@
 // The page's address read as the CLI reads its flags: the same option schema, the same
-// parser and checks (applyOptionTexts), the same loaders.
+// parser and checks (applyOptionTexts), the same loaders and scene edits (PageEdits.h).
 #include "PageRequest.h"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 
+#include "PageEdits.h"
 #include "gnomon/Error.h"
 #include "gnomon/OptionSchema.h"
 
@@ -34,12 +35,24 @@ std::string decoded(const std::string& text) {
     return out;
 }
 
+// The CLI's scene edits that the address takes by their flags' names.
+const std::vector<std::string> kCliEdits = {"camera-eye", "camera-target", "camera-fov", "sun"};
+
 // Every key the address takes, for the nearest-name hint.
 std::vector<std::string> knownKeys() {
-    std::vector<std::string> keys = {"scene", "preset", "ground", "picture"};
+    std::vector<std::string> keys = {"scene", "preset", "ground", "picture", "ui", "light0"};
+    keys.insert(keys.end(), kCliEdits.begin(), kCliEdits.end());
+    for (const SceneKey& k : sceneKeys())
+        keys.push_back(k.name);
     for (const OptionSpec& spec : optionSchema())
         keys.push_back(spec.name);
     return keys;
+}
+
+bool isSceneKey(const std::string& key) {
+    const auto& keys = sceneKeys();
+    return std::find(kCliEdits.begin(), kCliEdits.end(), key) != kCliEdits.end() ||
+           std::any_of(keys.begin(), keys.end(), [&](const SceneKey& k) { return key == k.name; });
 }
 
 void setKey(PageRequest& r, const std::string& key, const std::string& value) {
@@ -65,6 +78,14 @@ void setKey(PageRequest& r, const std::string& key, const std::string& value) {
         } else {
             refuse("picture: expected render, truth or score, got '" + value + "'");
         }
+    } else if (key == "ui") {
+        if (value != "" && value != "on" && value != "off")
+            refuse("ui: expected on or off, got '" + value + "'");
+        r.ui = value != "off";
+    } else if (isSceneKey(key)) {
+        r.edits[key] = value;
+    } else if (const int light = lightKeyIndex(key); light >= 0) {
+        r.lights[light] = parseLightFields(key, value);
     } else if (findOption(key)) {
         r.options[key] = value;
     } else {
@@ -131,6 +152,7 @@ PageScene loadRequest(const PageRequest& request, const std::string& bundle) {
     PageScene out;
     out.scene = loadNamed(request.scene, bundle);
     if (request.ground) addGround(out.scene);
+    applySceneEdits(request, out.scene);  // after the ground, as the CLI's editScene
     out.warnings = out.scene.warnings;
     out.options = presetOptions(out.scene, request.preset);
     for (const std::string& w : applyOptionTexts(request.options, out.options))

@@ -177,6 +177,11 @@ struct Light {
 // from +x along the horizon.
 glm::vec3 sunDirection(float azimuthDegrees, float elevationDegrees);
 
+// `text` as `count` numbers separated by commas ("4,3,6", as --camera-eye X,Y,Z and --sun
+// AZ,EL take them); none when a part is empty, not wholly a number or not finite, or when
+// there are more or fewer parts.
+std::optional<std::vector<float>> parseNumberList(const std::string& text, std::size_t count);
+
 // The map size of a light that names none: 2048 texels per side for a light drawn into one
 // map (directional, area and spot lights, point lights drawn as one frustum), and 1024 per
 // face for a point light drawn as a cube (six faces).
@@ -277,6 +282,20 @@ void fitCameraDepth(const Scene& scene, Camera& camera);
 // near / far. For scene files whose shadow-camera leaves the planes out: the defaults 1 and
 // 100 would store no depth of a model in millimetres and cut one in kilometres.
 void fitShadowCameraDepth(const Scene& scene, const Light& light, ShadowCamera& camera);
+
+// The view edits `gnomon render` takes as --camera-eye X,Y,Z, --camera-target X,Y,Z,
+// --camera-fov DEG and --sun AZ,EL, which the web page's address takes as keys of the same
+// names: the texts as given, the field of view as the number its flag holds; none: not given.
+struct CameraAndSun {
+    std::optional<std::string> eye, target, sun;
+    std::optional<float> fovDegrees;
+};
+// Applies them to `scene` as the CLI does: eye, target and field of view replace the camera's;
+// a camera moved gets its near and far planes from the scene (fitCameraDepth); eye and target
+// given drop a loader's added-camera warning. A sun replaces every light by one directional
+// light (sunDirection) and drops the added-sun warning. Throws gnomon::Error (InvalidInput)
+// naming the flag: "--camera-eye: expected X,Y,Z such as 4,3,6, got '1,2'".
+void placeCameraAndSun(Scene& scene, const CameraAndSun& edits);
 
 // Can the scene's camera see any of its objects in a `width` x `height` image? False when
 // their world bounds lie wholly beyond one side of the camera's view volume (behind it, past
