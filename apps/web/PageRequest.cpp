@@ -110,7 +110,9 @@ std::string modelIn(const std::filesystem::path& folder) {
     return models.front().string();
 }
 
-Scene loadNamed(const std::string& name, const std::string& bundle) {
+}  // namespace
+
+std::string sceneSource(const std::string& name, const std::string& bundle) {
     namespace fs = std::filesystem;
     const auto builtins = builtinScenes();
     const bool builtin = std::any_of(builtins.begin(), builtins.end(),
@@ -119,12 +121,10 @@ Scene loadNamed(const std::string& name, const std::string& bundle) {
     const fs::path inBundle = fs::path(bundle) / name;
     if (!builtin && !bundle.empty() && name.find("..") == std::string::npos &&
         fs::exists(inBundle, ec)) {
-        return loadScene(fs::is_directory(inBundle, ec) ? modelIn(inBundle) : inBundle.string());
+        return fs::is_directory(inBundle, ec) ? modelIn(inBundle) : inBundle.string();
     }
-    return loadScene(name);  // a built-in scene, or the CLI's words for an unknown name
+    return name;  // a built-in scene, or a path; loadScene says what is wrong with it
 }
-
-}  // namespace
 
 PageRequest parseAddress(const std::string& address) {
     PageRequest r;
@@ -150,7 +150,7 @@ PageRequest parseAddress(const std::string& address) {
 
 PageScene loadRequest(const PageRequest& request, const std::string& bundle) {
     PageScene out;
-    out.scene = loadNamed(request.scene, bundle);
+    out.scene = loadScene(sceneSource(request.scene, bundle));
     if (request.ground) addGround(out.scene);
     applySceneEdits(request, out.scene);  // after the ground, as the CLI's editScene
     out.warnings = out.scene.warnings;

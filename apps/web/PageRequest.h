@@ -54,6 +54,9 @@ struct PageScene {
 // integer, got 'abc'"; "unknown scene ..., did you mean"), or naming the page's key
 // ("light2: pos: expected X,Y,Z such as 1,4,2, got '1,4'").
 PageScene loadRequest(const PageRequest& request, const std::string& bundle);
+// What loadRequest loads for the address's scene `name`: a model's path in `bundle`, else
+// `name` itself (a built-in scene, or a file the page was given).
+std::string sceneSource(const std::string& name, const std::string& bundle);
 
 // The address of a view: `base` is the request the view was loaded from (its scene as the
 // address named it, preset, ground, picture, ui and edits), `loaded` the scene loadRequest

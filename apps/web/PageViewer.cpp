@@ -2,6 +2,7 @@
 
 #include <emscripten.h>
 
+#include <cstdio>
 #include <memory>
 
 #include "PageRequest.h"
@@ -16,9 +17,14 @@ constexpr const char* kBundle = "/scenes";  // the page's packaged models (main.
 struct Page {
     cli::ViewArgs args;  // the viewer's command-line settings: defaults, F12 into /tmp
     std::unique_ptr<cli::viewer::Viewer> viewer;
-    std::string scene;       // the address's scene, for the title
     bool announced = false;  // the title says ready (or the error) for the current view
     std::string downloaded;  // the last file the viewer wrote, handed to the browser
+    // What the address is written against (writeAddress): the request the shown scene was
+    // loaded from, the scene as loaded, its source, and the state last written.
+    PageRequest base;
+    Scene loaded;
+    std::string source;
+    std::uint64_t written = ~std::uint64_t(0), writtenView = ~std::uint64_t(0);
 };
 
 Page& page() {
@@ -47,8 +53,41 @@ void download(const std::string& path) {
         path.c_str());
 }
 
-// The browser's frame: one turn of the viewer's loop, the files it wrote, then the title
-// once the view is drawn.
+// The viewer loaded another scene itself (its scene menu, a preset): addresses are written
+// against that scene from now on.
+void rebase(Page& p, const view::State& state) {
+    p.base = PageRequest{};
+    p.base.scene = state.source;
+    p.base.ground = state.ground;
+    p.loaded = loadRequest(p.base, kBundle).scene;
+    p.source = state.source;
+}
+
+// The address of what the viewer shows, in the browser's address bar (replacing the entry:
+// the Back button leaves the page, not each drag). A view the address cannot hold (lights
+// added or removed) keeps the last address and says why in the console, once.
+void writeAddressBar(Page& p) {
+    const view::State& state = p.viewer->state();
+    if (state.revision == p.written && state.viewRevision == p.writtenView) return;
+    p.written = state.revision;
+    p.writtenView = state.viewRevision;
+    try {
+        if (state.source != p.source) rebase(p, state);
+        const std::string address =
+            writeAddress(p.base, p.loaded, state.scene, state.options, !state.fitView);
+        EM_ASM(
+            {
+                const address = UTF8ToString($0);
+                if (location.hash != address) history.replaceState(null, "", address);
+            },
+            address.c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "gnomon: the address keeps the last view: %s\n", e.what());
+    }
+}
+
+// The browser's frame: one turn of the viewer's loop, the files it wrote, the address, then
+// the title once the view is drawn.
 void frame(void*) {
     Page& p = page();
     if (!p.viewer->step()) {
@@ -59,22 +98,28 @@ void frame(void*) {
         p.downloaded = p.viewer->lastWritten();
         download(p.downloaded);
     }
+    writeAddressBar(p);
     if (p.announced) return;
     if (!p.viewer->frameError().empty()) {
         setTitle("gnomon error: " + p.viewer->frameError());
         p.announced = true;
     } else if (p.viewer->frameReady()) {
-        setTitle("gnomon ready: " + p.scene + " " + std::to_string(p.viewer->drawnWidth()) + "x" +
+        setTitle("gnomon ready: " + p.viewer->state().scene.name + " " +
+                 std::to_string(p.viewer->drawnWidth()) + "x" +
                  std::to_string(p.viewer->drawnHeight()));
         p.announced = true;
     }
 }
 
-// The viewer's state for the page's request: its scene, options and size.
-view::State stateOf(const PageRequest& request) {
+// The viewer's state for the page's request (its scene, options and size), and the request
+// as the base of the addresses written from now on.
+view::State stateOf(Page& p, const PageRequest& request) {
     PageScene loaded = loadRequest(request, kBundle);
+    p.base = request;
+    p.loaded = loaded.scene;
+    p.source = sceneSource(request.scene, kBundle);
     view::State state;
-    view::show(state, std::move(loaded.scene), request.scene, request.ground, UpAxis::Y);
+    view::show(state, std::move(loaded.scene), p.source, request.ground, UpAxis::Y);
     state.options = loaded.options;
     state.fitView = request.options.count("size") == 0;
     return state;
@@ -86,8 +131,7 @@ std::string startViewer(const std::string& address, int width, int height) {
     try {
         Page& p = page();
         const PageRequest request = parseAddress(address);
-        view::State state = stateOf(request);
-        p.scene = state.scene.name;
+        view::State state = stateOf(p, request);
         p.announced = false;
         if (p.viewer) {
             p.viewer->replaceState(std::move(state));

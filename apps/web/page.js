@@ -22,6 +22,12 @@ var Module = {
     onRuntimeInitialized: () => {
         fillMenu();
         element('file').addEventListener('change', (e) => loadFiles(e.target.files));
+        // Files dropped anywhere on the page load as the file button's do.
+        window.addEventListener('dragover', (e) => e.preventDefault());
+        window.addEventListener('drop', (e) => {
+            e.preventDefault();
+            loadFiles(e.dataTransfer.files);
+        });
         document.body.classList.toggle('viewer', !pictureOnly);
         window.addEventListener('hashchange', pictureOnly ? show : view);
         if (pictureOnly) show();
