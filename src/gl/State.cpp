@@ -41,4 +41,26 @@ void imageStoresDone() {
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
+#ifdef __EMSCRIPTEN__
+Finisher::Finisher()
+    : mTexel(Texture::plain2D("finisher texel", GL_RGBA8, 1, 1)), mTarget("finisher target") {
+    mTarget.attach(GL_COLOR_ATTACHMENT0, mTexel);
+}
+
+void Finisher::wait() {
+    GLint read = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, mTarget.id());
+    std::uint8_t texel[4];
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read));
+}
+#else
+Finisher::Finisher() = default;
+
+void Finisher::wait() {
+    glFinish();
+}
+#endif
+
 }  // namespace gnomon::gl

@@ -19,4 +19,17 @@ void unbindImage(int unit, GLenum format);
 // Image stores made so far are seen by texture reads and readbacks that follow.
 void imageStoresDone();
 
+// Waits until the GPU has done every command given so far (pass timing). glFinish natively; a
+// browser's WebGL finish() does not wait, so in the page a one-texel read of a target of its
+// own, which the browser answers only once the commands before it are done.
+class Finisher {
+public:
+    Finisher();
+    void wait();
+
+private:
+    Texture mTexel;
+    Framebuffer mTarget;
+};
+
 }  // namespace gnomon::gl

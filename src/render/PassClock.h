@@ -1,7 +1,7 @@
-// Times one pass at a time for Renderer::setPassTiming: glFinish() before and after, wall
-// time in between (on Mesa 22.3, llvmpipe's timer queries read about 0 for fragment-heavy
-// passes), and fragment shader invocations from a pipeline statistics query where the
-// driver offers GL_ARB_pipeline_statistics_query.
+// Times one pass at a time for Renderer::setPassTiming: the GPU's work finished before and
+// after (gl::Finisher), wall time in between (on Mesa 22.3, llvmpipe's timer queries read
+// about 0 for fragment-heavy passes), and fragment shader invocations from a pipeline statistics
+// query where the driver offers GL_ARB_pipeline_statistics_query.
 #pragma once
 
 #include <chrono>
@@ -9,6 +9,7 @@
 
 #include "gl/Caps.h"
 #include "gl/Objects.h"
+#include "gl/State.h"
 #include "gnomon/Renderer.h"
 
 namespace gnomon::render {
@@ -21,12 +22,12 @@ public:
         }
     }
     void start() {
-        glFinish();
+        mFinisher.wait();
         if (mQuery) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mQuery.id());
         mStart = std::chrono::steady_clock::now();
     }
     PassTiming stop(std::string name, int light, std::uint64_t triangles) {
-        glFinish();
+        mFinisher.wait();
         PassTiming t;
         t.milliseconds =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mStart)
@@ -42,6 +43,7 @@ public:
     }
 
 private:
+    gl::Finisher mFinisher;
     gl::Query mQuery;
     std::chrono::steady_clock::time_point mStart;
 };
