@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,44 @@ ScoreFrame renderForScore(Renderer& renderer, const Scene& scene, const RenderOp
                           const ScoreOptions& scoreOptions = {});
 ScoreResult scoreFrame(ScoreFrame frame, const Scene& scene, const RenderOptions& options,
                        const ScoreOptions& scoreOptions = {}, ScoreProgress* progress = nullptr);
+
+// scoreFrame in slices, for a caller that must return between them: a web page has no
+// threads, so its viewer traces a few rows between frames and shows the progress; natively
+// the viewer's job thread steps one until done (scoreFrame itself is such a loop). The
+// result is scoreFrame's, number for number, however the rows are sliced.
+class ScoreTask {
+public:
+    // Takes what renderForScore read back, and copies the scene: the task may outlive the
+    // caller's edits. Throws gnomon::Error for bad score options, as scoreFrame does.
+    ScoreTask(ScoreFrame frame, const Scene& scene, const RenderOptions& options,
+              const ScoreOptions& scoreOptions = {});
+    ~ScoreTask();
+    ScoreTask(ScoreTask&&) noexcept;
+    ScoreTask& operator=(ScoreTask&&) noexcept;
+
+    // Traces reference rows for about `seconds` (at least one row, on scoreOptions.threads
+    // threads, 0 = every core; the first step also puts the scene in the tracer), and
+    // compares once every row is traced: in the step that traced the last row if its time
+    // is not up, else in the next. Returns whether the result is ready. Throws gnomon::Error
+    // as scoreFrame does, and once cancelled. Not thread-safe: one thread steps.
+    bool step(double seconds);
+    // Progress, readable from any thread while another steps: rows traced of rows().
+    int rowsDone() const;
+    int rows() const;
+    // From any thread: the step under way stops taking rows, and it and every later step
+    // throw gnomon::Error ("cancelled"), as scoreFrame does when ScoreProgress::cancel is set.
+    void cancel();
+    // The result, once step has returned true (it is moved out: ask once). traceSeconds is
+    // the tracing time summed over the steps. Throws gnomon::Error before then.
+    ScoreResult result();
+
+private:
+    struct State;
+    explicit ScoreTask(std::unique_ptr<State> state);
+    friend ScoreResult scoreFrame(ScoreFrame, const Scene&, const RenderOptions&,
+                                  const ScoreOptions&, ScoreProgress*);
+    std::unique_ptr<State> mState;
+};
 
 // Scores `options` on `scene`. Throws gnomon::Error like Renderer::render.
 ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& options,

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,8 @@ struct TuneOptions {
     int timedFrames = 5;
     int maxSweeps = 3;
     // Wall-clock seconds the search may take, from the call (tracing the references and the
-    // starting settings' trial included; those always finish); 0: no limit. At the limit the
+    // starting settings' trial included; those always finish; a TuneTask counts the time in
+    // its steps); 0: no limit. At the limit the
     // trial under way finishes and the search stops with what it found (TuneResult::timedOut).
     // The check on shifted views (checkShifted) comes within it: the search stops that much
     // sooner, as long as four tracings and eight scorings of the first trial took.
@@ -97,7 +99,7 @@ struct TuneResult {
     int trades = 0;            // pairs of changes that trade time the search moved to
     bool interrupted = false;  // progress->cancel stopped it: what was found so far
     bool timedOut = false;     // TuneOptions::timeLimitSeconds stopped it: the same
-    double seconds = 0.0;      // the search's wall-clock time
+    double seconds = 0.0;      // the search's wall-clock time (a TuneTask's: in its steps)
     double traceSeconds = 0.0;
 };
 
@@ -108,9 +110,59 @@ struct TuneProgress {
 
 // Searches from `start` on `scene` (its camera is moved to each view and put back).
 // `onTrial` (optional) is called after each trial. Throws gnomon::Error as score does.
+// A TuneTask stepped until done: the same search, the same result.
 TuneResult tune(Renderer& renderer, Scene& scene, const RenderOptions& start,
                 const TuneOptions& options, TuneProgress* progress = nullptr,
                 const std::function<void(const TuneTrial&)>& onTrial = {});
+
+namespace detail {
+struct TuneTaskState;
+}
+
+// tune() in steps, for a caller that must return between them: a web page has no threads, so
+// its viewer runs a step between frames and shows the progress; natively the viewer's job
+// thread steps one until done. A step does one piece of the search: a slice of a view's
+// reference trace (the bulk of the time), or one trial's renders, scores and timings, or one
+// scoring of the check on shifted views. The trials, best and choice are tune()'s for the
+// same renders, scores and frame times, however the steps are sliced.
+class TuneTask {
+public:
+    // The same inputs as tune(). The renderer, the scene and the callback are used by step
+    // (on the renderer's thread) and must outlive the task; the scene must not change while
+    // the task lives (make it a copy the caller keeps), though between steps its camera and
+    // lights are as given. Throws gnomon::Error for bad options, as tune() does.
+    TuneTask(Renderer& renderer, Scene& scene, const RenderOptions& start,
+             const TuneOptions& options, std::function<void(const TuneTrial&)> onTrial = {});
+    explicit TuneTask(std::unique_ptr<detail::TuneTaskState> state);  // tune()'s, the tests'
+    ~TuneTask();
+    TuneTask(TuneTask&&) noexcept;
+    TuneTask& operator=(TuneTask&&) noexcept;
+
+    // Works for about `seconds`: slices of reference rows until then (at least one row), and
+    // at most one trial or shifted-view scoring, after which it returns (a trial cannot be
+    // cut: it may run past the time). Returns whether the result is ready. Throws
+    // gnomon::Error as tune() does; the task is then of no further use.
+    // TuneOptions::timeLimitSeconds counts the time spent in steps (and making the task),
+    // not the time between them.
+    bool step(double seconds);
+    // Progress, readable from any thread while another steps: trials done (TuneResult::trials
+    // so far), scorings of the check on shifted views done (8 when checked: four shifts, the
+    // start's and the best's), and reference rows traced over every view so far.
+    int trialsDone() const;
+    int checksDone() const;
+    int rowsTraced() const;
+    // From any thread: the search stops with what it found (TuneResult::interrupted), as
+    // TuneProgress::cancel stops tune(). A trial whose references are being traced is given
+    // up (the starting settings' always finishes: it sets the budget), and so is the check
+    // on shifted views. The next steps finish at once.
+    void cancel();
+    // The result, once step has returned true (it is moved out: ask once). Throws
+    // gnomon::Error before then.
+    TuneResult result();
+
+private:
+    std::unique_ptr<detail::TuneTaskState> mState;
+};
 
 // Gives each light of `scene` its map size in `mapSizes` (one per light, as
 // TuneTrial::mapSizes holds them); sizes for another light count change nothing (a scene

@@ -61,15 +61,22 @@ ScoreFrame renderForScore(Renderer& renderer, const Scene& scene, const RenderOp
 
 namespace detail {
 
-truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
-                               const ScoreOptions& scoreOptions, ScoreProgress* progress,
-                               double& seconds, truth::TracerKind tracer) {
+truth::ReferenceOptions referenceOptions(const RenderOptions& options,
+                                         const ScoreOptions& scoreOptions,
+                                         truth::TracerKind tracer) {
     checkScoreOptions(options, scoreOptions);
     truth::ReferenceOptions ro;
     ro.tracer = tracer;
     ro.softSamples = options.shadow.filter == ShadowFilter::Pcss ? scoreOptions.softSamples : 0;
     ro.threads = scoreOptions.threads;
     ro.contactRange = contactRange(options, scoreOptions);
+    return ro;
+}
+
+truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
+                               const ScoreOptions& scoreOptions, ScoreProgress* progress,
+                               double& seconds, truth::TracerKind tracer) {
+    truth::ReferenceOptions ro = referenceOptions(options, scoreOptions, tracer);
     if (progress) {
         progress->rowsDone = 0;
         progress->rows = options.height;
@@ -78,7 +85,7 @@ truth::Reference traceForScore(const Scene& scene, const RenderOptions& options,
     }
     const auto start = std::chrono::steady_clock::now();
     truth::Reference reference = truth::traceReference(scene, options, ro);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    seconds = secondsSince(start);
     return reference;
 }
 
@@ -131,17 +138,6 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
 }
 
 }  // namespace detail
-
-ScoreResult scoreFrame(ScoreFrame frame, const Scene& scene, const RenderOptions& options,
-                       const ScoreOptions& scoreOptions, ScoreProgress* progress) {
-    double seconds = 0.0;
-    const truth::Reference reference =
-        detail::traceForScore(scene, options, scoreOptions, progress, seconds);
-    ScoreResult result =
-        detail::compareWithReference(frame, reference, scene, options, scoreOptions);
-    result.traceSeconds = seconds;
-    return result;
-}
 
 ScoreResult score(Renderer& renderer, const Scene& scene, const RenderOptions& options,
                   const ScoreOptions& scoreOptions) {

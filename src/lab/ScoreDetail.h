@@ -2,6 +2,9 @@
 // across frames (score over a path: flicker between frames; tune: many settings, one view).
 #pragma once
 
+#include <algorithm>
+#include <chrono>
+
 #include "gnomon/Score.h"
 #include "truth/Reference.h"
 
@@ -24,6 +27,24 @@ private:
     Camera mCamera;
     std::vector<Light> mLights;
 };
+
+// What the score asks of the reference for `options` (soft with filter pcss, the contacts'
+// range, the score's threads), once the score's options are checked (throws gnomon::Error).
+truth::ReferenceOptions referenceOptions(const RenderOptions& options,
+                                         const ScoreOptions& scoreOptions,
+                                         truth::TracerKind tracer = truth::defaultTracer());
+
+// The end of a slice of `seconds` from now (steps of ScoreTask and TuneTask); none for a slice
+// too long to count.
+inline std::chrono::steady_clock::time_point deadlineAfter(double seconds) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!(seconds < 1e9)) return std::chrono::steady_clock::time_point::max();
+    return now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                     std::chrono::duration<double>(std::max(seconds, 0.0)));
+}
+inline double secondsSince(std::chrono::steady_clock::time_point begin) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
 
 // The reference of the view `options` renders (soft with filter pcss); `seconds`: wall time.
 // `tracer`: the rays' backend (truth/Tracer.h), a choice for tests and tools, not an option.

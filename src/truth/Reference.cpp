@@ -41,28 +41,6 @@ float pixelTurn(int x, int y) {
     return float(h & 0xffffu) / 65536.0f * 6.2831853f;
 }
 
-// Runs `row(y)` for rows 0..height-1 on the threads `o` asks for (0: every core), each
-// taking the next row; stops taking rows once `o.cancel` is set, counts rows in `o.rowsDone`.
-template <typename Row>
-void forEachRow(int height, const ReferenceOptions& o, const Row& row) {
-    const int threads =
-        o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency()));
-    std::atomic<int> nextRow{0};
-    auto worker = [&] {
-        for (int y = nextRow++; y < height; y = nextRow++) {
-            if (o.cancel && o.cancel->load()) return;
-            row(y);
-            if (o.rowsDone) ++*o.rowsDone;
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int i = 1; i < threads; ++i)
-        pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool)
-        t.join();
-}
-
 // A reference with nothing hit yet: every cell lit.
 Reference emptyReference(int width, int height, int lights, int samples, bool coloured,
                          bool contacts) {
@@ -157,23 +135,53 @@ struct LightTracer {
 
 }  // namespace
 
-Reference traceReference(const Scene& scene, const RenderOptions& options,
-                         const ReferenceOptions& referenceOptions) {
+// The view's setup, made once, and the rows traced so far.
+struct ReferenceTrace::State {
+    State(const Scene& scene, const RenderOptions& options, const ReferenceOptions& ro);
+    void tracePixel(int x, int y);
+
+    const Scene& scene;
+    const ReferenceOptions ro;
+    const int width, height;
+    const std::shared_ptr<const ShadowRays> rays;
+    Reference ref;
+    const LightTracer lightTracer;  // writes into `ref`, traces through `rays`
+    // View rays in the rays' coordinates (ShadowRays::origin), from the camera moved there as
+    // the renderer moves it (render/RelativeScene.h): the same view to the last bit.
+    Camera camera;
+    glm::vec3 right{0.0f}, up{0.0f}, ahead{0.0f};
+    float viewAspect = 1.0f, tanHalf = 1.0f, pixelAtUnit = 0.0f;
+    bool ortho = false;
+    std::atomic<int> nextRow{0}, rowsDone{0};
+};
+
+namespace {
+const Scene& validated(const Scene& scene) {
     if (auto problems = scene.validate(); !problems.empty()) {
         throw Error(ErrorKind::InvalidInput, "ground truth: " + problems.front());
     }
-    const auto rays = std::make_shared<const ShadowRays>(scene, options, referenceOptions.tracer);
-    const BlendShadows blend = options.shadow.blendShadows;
+    return scene;
+}
+}  // namespace
 
-    const int samples = std::max(referenceOptions.softSamples, 0);
-    const float contactRange = std::max(referenceOptions.contactRange, 0.0f);
-    Reference ref = emptyReference(options.width, options.height, int(scene.lights.size()), samples,
-                                   blend == BlendShadows::Coloured, contactRange > 0.0f);
-
-    const float aspect = float(options.width) / float(options.height);
-    // View rays in the rays' coordinates (ShadowRays::origin), from the camera moved there as
-    // the renderer moves it (render/RelativeScene.h): the same view to the last bit.
-    Camera camera = scene.camera;
+ReferenceTrace::State::State(const Scene& s, const RenderOptions& options,
+                             const ReferenceOptions& o)
+    : scene(validated(s)),
+      ro(o),
+      width(options.width),
+      height(options.height),
+      rays(std::make_shared<const ShadowRays>(scene, options, o.tracer)),
+      ref(emptyReference(
+          options.width, options.height, int(scene.lights.size()), std::max(o.softSamples, 0),
+          options.shadow.blendShadows == BlendShadows::Coloured, o.contactRange > 0.0f)),
+      lightTracer{scene,
+                  ref,
+                  *rays,
+                  std::max(o.softSamples, 0),
+                  std::max(o.contactRange, 0.0f),
+                  std::tan(glm::radians(options.shadow.lightAngle)),
+                  options.shadow.lightRadius},
+      camera(scene.camera) {
     makeRelative(camera, rays->origin());
     // Each pixel's ray from the view's own axes (the rows of the renderer's viewFromWorld) and
     // its projection's terms, not by inverting the projection: with a glTF camera's near and
@@ -181,90 +189,141 @@ Reference traceReference(const Scene& scene, const RenderOptions& options,
     // digits, its rays land a little off the pixels the raster samples, and thin parts meeting
     // their shadows score wrong.
     const glm::mat4 view = gnomon::viewFromWorld(camera);
-    const glm::vec3 right(view[0][0], view[1][0], view[2][0]),
-        up(view[0][1], view[1][1], view[2][1]);
-    const glm::vec3 ahead = -glm::vec3(view[0][2], view[1][2], view[2][2]);
-    const float viewAspect = camera.aspect > 0.0f ? camera.aspect : aspect;
-    const float tanHalf = std::tan(0.5f * glm::radians(camera.fovyDegrees));
-    const glm::vec3 eye = camera.eye;
-    const bool ortho = scene.camera.projection == Projection::Orthographic;
-    const float pixelAtUnit = ortho
-                                  ? (scene.camera.top - scene.camera.bottom) / float(options.height)
-                                  : 2.0f * std::tan(0.5f * glm::radians(scene.camera.fovyDegrees)) /
-                                        float(options.height);
-    const float tanAngle = std::tan(glm::radians(options.shadow.lightAngle));
-    const float radius = options.shadow.lightRadius;
+    right = glm::vec3(view[0][0], view[1][0], view[2][0]);
+    up = glm::vec3(view[0][1], view[1][1], view[2][1]);
+    ahead = -glm::vec3(view[0][2], view[1][2], view[2][2]);
+    const float aspect = float(width) / float(height);
+    viewAspect = camera.aspect > 0.0f ? camera.aspect : aspect;
+    tanHalf = std::tan(0.5f * glm::radians(camera.fovyDegrees));
+    ortho = scene.camera.projection == Projection::Orthographic;
+    pixelAtUnit =
+        ortho ? (scene.camera.top - scene.camera.bottom) / float(height)
+              : 2.0f * std::tan(0.5f * glm::radians(scene.camera.fovyDegrees)) / float(height);
+}
 
-    const LightTracer lightTracer{scene, ref, *rays, samples, contactRange, tanAngle, radius};
-    auto tracePixel = [&](int x, int y) {
-        const float nx = (float(x) + 0.5f) / float(options.width) * 2.0f - 1.0f;
-        const float ny = 1.0f - (float(y) + 0.5f) / float(options.height) * 2.0f;
-        // Between the near and far planes, as the raster clips.
-        glm::vec3 from = eye, dir = ahead;
-        float tnear = camera.near, tfar = camera.far;
-        if (ortho) {
-            from +=
-                right * (0.5f * (nx * (camera.right - camera.left) + camera.right + camera.left)) +
+void ReferenceTrace::State::tracePixel(int x, int y) {
+    const float nx = (float(x) + 0.5f) / float(width) * 2.0f - 1.0f;
+    const float ny = 1.0f - (float(y) + 0.5f) / float(height) * 2.0f;
+    const glm::vec3 eye = camera.eye;
+    // Between the near and far planes, as the raster clips.
+    glm::vec3 from = eye, dir = ahead;
+    float tnear = camera.near, tfar = camera.far;
+    if (ortho) {
+        from += right * (0.5f * (nx * (camera.right - camera.left) + camera.right + camera.left)) +
                 up * (0.5f * (ny * (camera.top - camera.bottom) + camera.top + camera.bottom));
-        } else {
-            const glm::vec3 d = ahead + right * (nx * tanHalf * viewAspect) + up * (ny * tanHalf);
-            const float length = glm::length(d);
-            dir = d / length;
-            tnear *= length;  // the planes lie at view depths near and far: t = depth x length
-            tfar *= length;
+    } else {
+        const glm::vec3 d = ahead + right * (nx * tanHalf * viewAspect) + up * (ny * tanHalf);
+        const float length = glm::length(d);
+        dir = d / length;
+        tnear *= length;  // the planes lie at view depths near and far: t = depth x length
+        tfar *= length;
+    }
+    const Tracer& tracer = rays->tracer();
+    // Single-sided surfaces seen from behind are culled by the main pass: look past them.
+    for (int attempt = 0; attempt < 64; ++attempt) {
+        const TraceHit hit = tracer.nearest(from, dir, tnear, tfar);
+        if (!hit.hit()) return;
+        const int o = hit.object;
+        const Object& obj = scene.objects[std::size_t(o)];
+        const Mesh& mesh = scene.meshes[obj.mesh];
+        const std::vector<glm::vec3>& p = rays->positions(std::size_t(o));
+        const std::uint32_t* t = &mesh.indices[3 * std::size_t(hit.triangle)];
+        glm::vec3 n = glm::cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);  // CCW = front
+        const float nl = glm::length(n);
+        if (!(nl > 0.0f)) {
+            tnear = hit.t * (1.0f + 1e-6f) + 1e-7f * rays->scale();
+            continue;
         }
-        const Tracer& tracer = rays->tracer();
-        // Single-sided surfaces seen from behind are culled by the main pass: look past them.
-        for (int attempt = 0; attempt < 64; ++attempt) {
-            const TraceHit hit = tracer.nearest(from, dir, tnear, tfar);
-            if (!hit.hit()) return;
-            const int o = hit.object;
-            const Object& obj = scene.objects[std::size_t(o)];
-            const Mesh& mesh = scene.meshes[obj.mesh];
-            const std::vector<glm::vec3>& p = rays->positions(std::size_t(o));
-            const std::uint32_t* t = &mesh.indices[3 * std::size_t(hit.triangle)];
-            glm::vec3 n = glm::cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);  // CCW = front
-            const float nl = glm::length(n);
-            if (!(nl > 0.0f)) {
+        n /= nl;
+        const Material& mat = scene.materials[obj.material];
+        if (glm::dot(n, dir) > 0.0f) {
+            if (!mat.doubleSided) {
                 tnear = hit.t * (1.0f + 1e-6f) + 1e-7f * rays->scale();
                 continue;
             }
-            n /= nl;
-            const Material& mat = scene.materials[obj.material];
-            if (glm::dot(n, dir) > 0.0f) {
-                if (!mat.doubleSided) {
-                    tnear = hit.t * (1.0f + 1e-6f) + 1e-7f * rays->scale();
-                    continue;
-                }
-                n = -n;  // the side the camera sees
-            }
-            // The point from its triangle's corners rather than from + dir * t: its rounding
-            // is then that of the scene's coordinates, not of the camera's distance, so the
-            // shadow rays' margin (ShadowRays::lead) can stay small however far the camera.
-            const float u = hit.u, v = hit.v;
-            const glm::vec3 point = (1.0f - u - v) * p[t[0]] + u * p[t[1]] + v * p[t[2]];
-            const std::size_t pixel = std::size_t(y) * std::size_t(options.width) + std::size_t(x);
-            ref.object[pixel] = o;
-            ref.pixelWorld[pixel] =
-                pixelAtUnit * (ortho ? 1.0f : std::max(glm::dot(point - eye, ahead), 0.0f));
-            if (!obj.receivesShadows) return;
-            ref.surfacePoint[pixel] = point;
-            ref.surfaceNormal[pixel] = n;
-            lightTracer.trace(pixel, mat, point, n, pixelTurn(x, y));
-            return;
+            n = -n;  // the side the camera sees
+        }
+        // The point from its triangle's corners rather than from + dir * t: its rounding
+        // is then that of the scene's coordinates, not of the camera's distance, so the
+        // shadow rays' margin (ShadowRays::lead) can stay small however far the camera.
+        const float u = hit.u, v = hit.v;
+        const glm::vec3 point = (1.0f - u - v) * p[t[0]] + u * p[t[1]] + v * p[t[2]];
+        const std::size_t pixel = std::size_t(y) * std::size_t(width) + std::size_t(x);
+        ref.object[pixel] = o;
+        ref.pixelWorld[pixel] =
+            pixelAtUnit * (ortho ? 1.0f : std::max(glm::dot(point - eye, ahead), 0.0f));
+        if (!obj.receivesShadows) return;
+        ref.surfacePoint[pixel] = point;
+        ref.surfaceNormal[pixel] = n;
+        lightTracer.trace(pixel, mat, point, n, pixelTurn(x, y));
+        return;
+    }
+}
+
+ReferenceTrace::ReferenceTrace(const Scene& scene, const RenderOptions& options,
+                               const ReferenceOptions& referenceOptions)
+    : mState(std::make_unique<State>(scene, options, referenceOptions)) {}
+ReferenceTrace::~ReferenceTrace() = default;
+ReferenceTrace::ReferenceTrace(ReferenceTrace&&) noexcept = default;
+ReferenceTrace& ReferenceTrace::operator=(ReferenceTrace&&) noexcept = default;
+
+int ReferenceTrace::rowsDone() const {
+    return mState->rowsDone.load();
+}
+int ReferenceTrace::rows() const {
+    return mState->height;
+}
+
+// Each thread takes the next row until none is left, the deadline has passed (once a row
+// was taken) or the trace is cancelled; rows taken are always finished.
+bool ReferenceTrace::traceRows(std::chrono::steady_clock::time_point deadline) {
+    State& s = *mState;
+    const ReferenceOptions& o = s.ro;
+    std::atomic<bool> taken{false};
+    auto worker = [&] {
+        for (;;) {
+            if (o.cancel && o.cancel->load()) return;
+            if (taken.load() && std::chrono::steady_clock::now() >= deadline) return;
+            const int y = s.nextRow++;
+            if (y >= s.height) return;
+            taken = true;
+            for (int x = 0; x < s.width; ++x)
+                s.tracePixel(x, y);
+            ++s.rowsDone;
+            if (o.rowsDone) ++*o.rowsDone;
         }
     };
-
-    forEachRow(options.height, referenceOptions, [&](int y) {
-        for (int x = 0; x < options.width; ++x)
-            tracePixel(x, y);
-    });
-    rays->check("trace rays");
-    if (referenceOptions.cancel && referenceOptions.cancel->load()) {
+    const int left = s.height - std::min(s.nextRow.load(), s.height);
+    const int threads = std::min(
+        o.threads > 0 ? o.threads : std::max(1, int(std::thread::hardware_concurrency())), left);
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i)
+        pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool)
+        t.join();
+    s.nextRow = std::min(s.nextRow.load(), s.height);  // workers overshoot by one each
+    s.rays->check("trace rays");
+    if (o.cancel && o.cancel->load()) {
         throw Error(ErrorKind::InvalidInput, "ray-traced reference cancelled");
     }
-    ref.rays = rays;
-    return ref;
+    return s.rowsDone.load() == s.height;
+}
+
+Reference ReferenceTrace::finish() {
+    State& s = *mState;
+    if (s.rowsDone.load() != s.height) {
+        throw Error(ErrorKind::InvalidInput, "ground truth: the reference is not traced yet");
+    }
+    s.ref.rays = s.rays;
+    return std::move(s.ref);
+}
+
+Reference traceReference(const Scene& scene, const RenderOptions& options,
+                         const ReferenceOptions& referenceOptions) {
+    ReferenceTrace trace(scene, options, referenceOptions);
+    trace.traceRows(std::chrono::steady_clock::time_point::max());
+    return trace.finish();
 }
 
 }  // namespace gnomon::truth

@@ -4,10 +4,11 @@
 // and a shadow ray per light gives the exact hard-shadow answer. Soft references: the
 // fraction of N rays to points on the light's surface (a disc of lightRadius for spot, point
 // and area lights, a cone of lightAngle for directional ones: the emitters PCSS models). Rows
-// are split over all cores.
+// are split over all cores, in one go (traceReference) or a few at a time (ReferenceTrace).
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -74,5 +75,35 @@ struct Reference {
 // Throws gnomon::Error (Gl kind is never used; InvalidInput for a scene the tracer rejects).
 Reference traceReference(const Scene& scene, const RenderOptions& options,
                          const ReferenceOptions& referenceOptions);
+
+// traceReference a few rows at a time, for callers that must return between slices (a web
+// page has no threads: its score and tune trace between frames). The view's setup (the scene
+// in the tracer, the camera's axes) is made once; each pixel writes only its own cells, so
+// the reference is the same bit for bit however its rows are split into slices or shared
+// among threads.
+class ReferenceTrace {
+public:
+    // Validates the scene and puts it in the tracer, the slow part for a large scene. The
+    // trace points into `scene`, which must outlive it unchanged (Reference::rays as well).
+    // Throws gnomon::Error as traceReference does.
+    ReferenceTrace(const Scene& scene, const RenderOptions& options,
+                   const ReferenceOptions& referenceOptions);
+    ~ReferenceTrace();
+    ReferenceTrace(ReferenceTrace&&) noexcept;
+    ReferenceTrace& operator=(ReferenceTrace&&) noexcept;
+
+    // Traces rows not traced yet, at least one, taking no new row once `deadline` has passed
+    // (on referenceOptions.threads threads), and says whether every row is now traced. Throws
+    // gnomon::Error when the tracer fails or referenceOptions.cancel is set.
+    bool traceRows(std::chrono::steady_clock::time_point deadline);
+    int rowsDone() const;  // any thread may ask while another traces
+    int rows() const;
+    // The reference, once traceRows has returned true; the trace is spent.
+    Reference finish();
+
+private:
+    struct State;
+    std::unique_ptr<State> mState;
+};
 
 }  // namespace gnomon::truth
