@@ -25,6 +25,7 @@ struct Page {
     Scene loaded;
     std::string source;
     std::uint64_t written = ~std::uint64_t(0), writtenView = ~std::uint64_t(0);
+    int scoresShown = 0;  // the viewer's scores the title has reported
 };
 
 Page& page() {
@@ -99,6 +100,16 @@ void frame(void*) {
         download(p.downloaded);
     }
     writeAddressBar(p);
+    if (p.viewer->scoresDone() != p.scoresShown && p.viewer->lastScore()) {
+        // Each score's share in the title, after the view it scored.
+        p.scoresShown = p.viewer->scoresDone();
+        char share[48];
+        std::snprintf(share, sizeof share, " misclassified %.4f%%",
+                      100.0 * p.viewer->lastScore()->overall.misclassified);
+        setTitle("gnomon ready: " + p.viewer->state().scene.name + " " +
+                 std::to_string(p.viewer->drawnWidth()) + "x" +
+                 std::to_string(p.viewer->drawnHeight()) + share);
+    }
     if (p.announced) return;
     if (!p.viewer->frameError().empty()) {
         setTitle("gnomon error: " + p.viewer->frameError());

@@ -3,6 +3,8 @@
 // (OpenGL 4.5, the reference on Embree), writes native's error map and compares the page's
 // (its screenshot) with it:
 //   gnomon_page_score ADDRESS BUNDLE NATIVE.png [PAGE.png [BOUND]]
+//   gnomon_page_score ADDRESS BUNDLE NATIVE.png misclassified=POINTS [BOUND]
+// (the second: the share the page's viewer reported, compared with native's as a number)
 // The error maps colour misclassified pixels (red false shadow, blue leak; truth/Metrics.h)
 // over the render in grey. The page's misclassified share, counted from its map as native's
 // is, must lie within BOUND points (default 0.05) of native's: the same geometric errors, a
@@ -38,16 +40,32 @@ long markedPixels(const gnomon::Image& map) {
 int run(int argc, char** argv) {
     if (argc < 4 || argc > 6) {
         std::fprintf(stderr,
-                     "usage: gnomon_page_score ADDRESS BUNDLE NATIVE.png [PAGE.png [BOUND]]\n");
+                     "usage: gnomon_page_score ADDRESS BUNDLE NATIVE.png "
+                     "[PAGE.png|misclassified=POINTS [BOUND]]\n");
         return 1;
     }
     const gnomon::web::PageScene page =
         gnomon::web::loadRequest(gnomon::web::parseAddress(argv[1]), argv[2]);
+    const std::string page4 = argc > 4 ? argv[4] : "";
+    const bool viewer = page4.rfind("misclassified=", 0) == 0;
     gnomon::Renderer renderer;
+    // The viewer scores the frame it shows: maps that follow the view (Renderer::
+    // setFollowing), fitted at its first frame, as `gnomon view` draws them.
+    renderer.setFollowing(viewer);
+    if (viewer) renderer.draw(page.scene, page.options);
     const gnomon::ScoreResult native = gnomon::score(renderer, page.scene, page.options);
     gnomon::writePng(argv[3], native.errors);
     if (argc == 4) return 0;
     const double bound = argc == 6 ? std::atof(argv[5]) : 0.05;
+    if (viewer) {  // the viewer's own number (its title)
+        const double pagePoints = std::atof(page4.c_str() + 14);
+        const double nativePoints = 100.0 * native.overall.misclassified;
+        std::printf(
+            "page_score: %s: native misclassifies %.4f %%, the page's viewer %.4f %%; "
+            "bound %.2f points\n",
+            argv[1], nativePoints, pagePoints, bound);
+        return std::abs(pagePoints - nativePoints) <= bound ? 0 : 1;
+    }
 
     const auto found = gnomon::web::check::pageShot("page_score", argv[4], native.errors);
     if (!found) return 1;

@@ -12,7 +12,10 @@
 //       and keys, or an error that holds TEXT (a format this build does not read);
 //   node run.js drag --web DIR --address '#scene=...' --check EXE --out DIR
 //       the viewer: a light dragged moves its shadow, and the address the page then shows
-//       reopens the same view (viewer.js; EXE: gnomon_page_drag).
+//       reopens the same view (viewer.js; EXE: gnomon_page_drag);
+//   node run.js score --web DIR --address '#...' --check EXE --bundle DIR --out DIR
+//       the viewer's F5 score of the address's view against native's (EXE:
+//       gnomon_page_score; --bound B).
 // --needs-bundle: the address names a model of BUNDLE (../shared/scenes), which a clone
 // without that folder lacks: skipped then (exit 77). Exit 0 pass, 1 fail, saying why.
 'use strict';
@@ -21,7 +24,7 @@ const fs = require('fs');
 const path = require('path');
 const {spawnSync} = require('child_process');
 const {Setup, serve, launch, open, waitForTitle} = require('./browser.js');
-const {drag} = require('./viewer.js');
+const {drag, score} = require('./viewer.js');
 
 const kTimeoutMs = 120000;  // page load, scene load and trace under a loaded CI machine
 const kSkip = 77;
@@ -156,11 +159,11 @@ async function main() {
         if (args.mode === 'picture') return await picture(args);
         if (args.mode === 'error') return await error(args);
         if (args.mode === 'upload') return await upload(args);
-        if (args.mode === 'drag') {
+        if (args.mode === 'drag' || args.mode === 'score') {
             fs.mkdirSync(args.out, {recursive: true});
-            return await drag(args);
+            return await (args.mode === 'drag' ? drag : score)(args);
         }
-        throw new Setup(`unknown mode '${args.mode}' (picture, error, upload or drag)`);
+        throw new Setup(`unknown mode '${args.mode}' (picture, error, upload, drag or score)`);
     } catch (e) {
         console.error(`web test: ${e instanceof Setup ? e.message : e.stack}`);
         return 1;

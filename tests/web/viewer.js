@@ -77,4 +77,41 @@ async function drag(args) {
     return r.status === 0 ? 0 : 1;
 }
 
-module.exports = {drag};
+// The viewer's score (F5) of the address's view, traced in slices between frames, against
+// `gnomon score` of the same address natively (gnomon_page_score, within --bound points).
+async function score(args) {
+    const address = args.address[0];
+    const server = await serve(args.web);
+    const browser = await launch();
+    let title;
+    try {
+        const opened = await open(browser, `${server.origin}/index.html${address}`, kDone, kTimeoutMs);
+        ready(address, opened);
+        await drawn(opened.page);
+        // Held over two frames: the viewer reads keys once a frame (Dear ImGui 1.86 keeps
+        // key states, not a queue of presses), as a person's keypress lasts.
+        await opened.page.keyboard.down('F5');
+        await opened.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+        await opened.page.keyboard.up('F5');
+        await opened.page.waitForFunction(() => /misclassified|gnomon error/.test(document.title),
+                                          {timeout: kTimeoutMs, polling: 100});
+        title = await opened.page.title();
+        if (opened.errors.length)
+            throw new Setup(`the page logged:\n  ${opened.errors.join('\n  ')}`);
+    } finally {
+        await browser.close();
+        await server.close();
+    }
+    const m = /misclassified ([0-9.]+)%/.exec(title);
+    if (!m) throw new Setup(`${address}: after F5 the page says '${title}'`);
+    console.log(`${address}: '${title}'`);
+    const argv = [address, args.bundle, path.join(args.out, 'native.png'), `misclassified=${m[1]}`]
+        .concat(args.bound ? [args.bound] : []);
+    const r = spawnSync(args.check, argv, {encoding: 'utf8'});
+    process.stdout.write(r.stdout || '');
+    process.stderr.write(r.stderr || '');
+    if (r.error) throw new Setup(`${args.check}: ${r.error.message}`);
+    return r.status === 0 ? 0 : 1;
+}
+
+module.exports = {drag, score};

@@ -24,26 +24,43 @@
 
 namespace gnomon::cli::viewer {
 
-// ---- Ground truth off the UI thread --------------------------------------------------------
+// ---- Jobs: a score, a tune -----------------------------------------------------------------
 
+// Natively a job steps its task to the end on a thread of its own, so the window stays live;
+// a web page has no threads, so there the app loop steps it a slice a frame (pollScore,
+// pollTune), and the page never freezes.
+#ifdef __EMSCRIPTEN__
+inline constexpr bool kJobThreads = false;
+#else
+inline constexpr bool kJobThreads = true;
+#endif
+// The time a frame gives a job's slice when it runs on the app loop.
+inline constexpr double kJobSliceSeconds = 0.03;
+
+// The ground-truth score of a frame (ScoreTask).
 struct ScoreJob {
-    ScoreProgress progress;
+    std::unique_ptr<ScoreTask> task;
     std::atomic<bool> done{false};
     std::optional<ScoreResult> result;
     std::string error;
     std::uint64_t revision = 0;  // the state's revision it scored
-    std::thread thread;
+    std::thread thread;          // kJobThreads only
 
     ~ScoreJob() {
-        progress.cancel = true;
+        if (task) task->cancel();
         if (thread.joinable()) thread.join();
     }
 };
 
-// gnomon tune for the current view, on its own thread with its own headless renderer (the
-// window's context stays with the app loop): many renders, so never on the loop itself.
+// gnomon tune for the current view (TuneTask): many renders and scores. Natively on its own
+// thread with its own headless renderer (the window's context stays with the app loop); in
+// the page on the viewer's renderer between frames. It works on a copy of the scene.
 struct TuneJob {
-    TuneProgress progress;
+    std::unique_ptr<Renderer> renderer;  // kJobThreads only: the thread's own
+    std::shared_ptr<Scene> scene;
+    std::unique_ptr<TuneTask> task;      // made and stepped on the job's thread natively
+    std::atomic<bool> cancelled{false};  // the user stopped it: the search ends with what it has
+    std::atomic<int> trials{0};          // trials done
     std::atomic<bool> done{false};
     std::optional<TuneResult> result;
     std::string error;
@@ -52,8 +69,13 @@ struct TuneJob {
     std::uint64_t revision = 0;
     std::thread thread;
 
+    // One step of the task, cancelled first if the user asked.
+    bool step(double seconds) {
+        if (cancelled) task->cancel();
+        return task->step(seconds);
+    }
     ~TuneJob() {
-        progress.cancel = true;
+        cancelled = true;
         if (thread.joinable()) thread.join();
     }
 };
@@ -103,6 +125,9 @@ public:
     // The file the viewer last wrote (a screenshot, a scene file): the page hands it to the
     // browser's downloads.
     const std::string& lastWritten() const { return mLastWritten; }
+    // The last score and how many have finished (the page's title reports each).
+    const std::optional<ScoreResult>& lastScore() const { return mScore; }
+    int scoresDone() const { return mScoresDone; }
     // Where the camera's view is in the window (screen units): x, y, width, height.
     const std::array<float, 4>& viewRect() const { return mViewRect; }
     // The window's new size in screen units (the page's canvas follows the browser's window).
@@ -159,8 +184,10 @@ private:
 
     void startScore();
     void pollScore();
+    void stepScore();
     void startTune();
     void pollTune();
+    void stepTune();
     void applyTune();
     std::string nextScreenshotPath();
     void screenshot(const std::string& path);
@@ -206,6 +233,7 @@ private:
 
     std::unique_ptr<ScoreJob> mJob;
     std::optional<ScoreResult> mScore;
+    int mScoresDone = 0;
     std::uint64_t mScoredRevision = 0;
     std::string mScoreError;
     gl::Texture mOverlayTexture;

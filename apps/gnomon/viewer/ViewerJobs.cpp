@@ -1,5 +1,6 @@
-// The viewer's work beyond drawing: the ground-truth score and gnomon tune on their own
-// threads, and the files it writes (screenshots equal to `gnomon render`'s, scene files).
+// The viewer's work beyond drawing: the ground-truth score and gnomon tune (on threads of
+// their own natively, a slice a frame in the page), and the files it writes (screenshots equal to
+// `gnomon render`'s, scene files).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,27 +19,48 @@ void Viewer::startScore() {
     mRedraw = true;  // the renderer's last frame is now the scored one
     auto job = std::make_unique<ScoreJob>();
     job->revision = mState.revision;
-    ScoreJob* raw = job.get();
-    auto scene = std::make_shared<Scene>(mState.scene);
-    job->thread = std::thread([raw, scene, options, frame = std::move(frame)]() mutable {
-        try {
-            ScoreOptions explain;
-            explain.explain = true;  // the causes line of the score panel
-            raw->result = scoreFrame(std::move(frame), *scene, options, explain, &raw->progress);
-        } catch (const std::exception& e) {
-            raw->error = e.what();
-        }
-        raw->done = true;
-    });
+    ScoreOptions scoreOptions;
+    scoreOptions.explain = true;                 // the causes line of the score panel
+    if (!kJobThreads) scoreOptions.threads = 1;  // the page's one thread
+    job->task = std::make_unique<ScoreTask>(std::move(frame), mState.scene, options, scoreOptions);
+    if (kJobThreads) {
+        ScoreJob* raw = job.get();
+        job->thread = std::thread([raw] {
+            try {
+                while (!raw->task->step(1.0)) {
+                }
+                raw->result = raw->task->result();
+            } catch (const std::exception& e) {
+                raw->error = e.what();
+            }
+            raw->done = true;
+        });
+    }
     mJob = std::move(job);
 }
 
+// A slice of the score on the app loop (no job threads).
+void Viewer::stepScore() {
+    try {
+        if (mJob->task->step(kJobSliceSeconds)) {
+            mJob->result = mJob->task->result();
+            mJob->done = true;
+        }
+    } catch (const std::exception& e) {
+        mJob->error = e.what();
+        mJob->done = true;
+    }
+}
+
 void Viewer::pollScore() {
-    if (!mJob || !mJob->done) return;
-    mJob->thread.join();
+    if (!mJob) return;
+    if (!kJobThreads && !mJob->done) stepScore();
+    if (!mJob->done) return;
+    if (mJob->thread.joinable()) mJob->thread.join();
     if (mJob->result) {
         mScore = std::move(mJob->result);
         mScoredRevision = mJob->revision;
+        ++mScoresDone;
         mOverlayTexture = gl::Texture::display2D("score error map", mScore->errors);
         mOverlay = true;
         std::printf(
@@ -54,8 +76,7 @@ void Viewer::pollScore() {
 }
 
 // The search runs at most 384 pixels on the long side (each trial renders, scores and times
-// the view; at the window's size a tune would take many minutes), in a headless renderer of
-// its own on the job's thread, over a copy of the scene.
+// the view; at the window's size a tune would take many minutes), over a copy of the scene.
 void Viewer::startTune() {
     RenderOptions options = mMainOptions;
     options.debugView = DebugView::None;
@@ -65,37 +86,69 @@ void Viewer::startTune() {
     mTuneError.clear();
     auto job = std::make_unique<TuneJob>();
     job->revision = mState.revision;
+    job->scene = std::make_shared<Scene>(mState.scene);
     TuneJob* raw = job.get();
-    auto scene = std::make_shared<Scene>(mState.scene);
-    job->thread = std::thread([raw, scene, options]() {
-        try {
-            Renderer renderer;
-            TuneOptions tuneOptions;
-            tuneOptions.maxSweeps = 2;
-            raw->result = tune(
-                renderer, *scene, options, tuneOptions, &raw->progress, [raw](const TuneTrial& t) {
-                    char line[200];
-                    if (!t.failure.empty()) {
-                        std::snprintf(line, sizeof line, "failed: %s", t.flags.c_str());
-                    } else {
-                        std::snprintf(line, sizeof line, "%.3f%% in %.1f ms: %s",
-                                      100.0 * t.misclassified, t.frameMs,
-                                      t.flags.empty() ? "(current settings)" : t.flags.c_str());
-                    }
-                    const std::lock_guard<std::mutex> lock(raw->mutex);
-                    raw->latest = line;
-                });
-        } catch (const std::exception& e) {
-            raw->error = e.what();
+    TuneOptions tuneOptions;
+    tuneOptions.maxSweeps = 2;
+    auto onTrial = [raw](const TuneTrial& t) {
+        char line[200];
+        if (!t.failure.empty()) {
+            std::snprintf(line, sizeof line, "failed: %s", t.flags.c_str());
+        } else {
+            std::snprintf(line, sizeof line, "%.3f%% in %.1f ms: %s", 100.0 * t.misclassified,
+                          t.frameMs, t.flags.empty() ? "(current settings)" : t.flags.c_str());
         }
-        raw->done = true;
-    });
+        ++raw->trials;
+        const std::lock_guard<std::mutex> lock(raw->mutex);
+        raw->latest = line;
+    };
+    if (kJobThreads) {
+        job->thread = std::thread([raw, options, tuneOptions, onTrial] {
+            try {
+                raw->renderer = std::make_unique<Renderer>();
+                raw->task = std::make_unique<TuneTask>(*raw->renderer, *raw->scene, options,
+                                                       tuneOptions, onTrial);
+                while (!raw->step(0.25)) {
+                }
+                raw->result = raw->task->result();
+            } catch (const std::exception& e) {
+                raw->error = e.what();
+            }
+            raw->task.reset();  // before the renderer it draws with, on its thread
+            raw->renderer.reset();
+            raw->done = true;
+        });
+    } else {
+        job->task =
+            std::make_unique<TuneTask>(mRenderer, *job->scene, options, tuneOptions, onTrial);
+    }
     mTuneJob = std::move(job);
 }
 
+// A slice of the tune on the app loop, drawn with the viewer's renderer as a render or a
+// bench would (fresh maps, no pass timing); the view is drawn again afterwards.
+void Viewer::stepTune() {
+    mRenderer.setFollowing(false);
+    mRenderer.setPassTiming(false);
+    try {
+        if (mTuneJob->step(kJobSliceSeconds)) {
+            mTuneJob->result = mTuneJob->task->result();
+            mTuneJob->done = true;
+        }
+    } catch (const std::exception& e) {
+        mTuneJob->error = e.what();
+        mTuneJob->done = true;
+    }
+    mRenderer.setPassTiming(mMeasure);
+    mRenderer.setFollowing(true);
+    mRedraw = true;
+}
+
 void Viewer::pollTune() {
-    if (!mTuneJob || !mTuneJob->done) return;
-    mTuneJob->thread.join();
+    if (!mTuneJob) return;
+    if (!kJobThreads && !mTuneJob->done) stepTune();
+    if (!mTuneJob->done) return;
+    if (mTuneJob->thread.joinable()) mTuneJob->thread.join();
     if (mTuneJob->result) {
         mTune = std::move(mTuneJob->result);
         mTunedRevision = mTuneJob->revision;

@@ -262,8 +262,8 @@ void Viewer::passTimes() {
 
 void Viewer::scorePanel() {
     if (mJob) {
-        const int rows = std::max(1, mJob->progress.rows.load());
-        ImGui::ProgressBar(float(mJob->progress.rowsDone.load()) / float(rows), {-1, 0},
+        const int rows = std::max(1, mJob->task->rows());
+        ImGui::ProgressBar(float(mJob->task->rowsDone()) / float(rows), {-1, 0},
                            "tracing the reference...");
         if (ImGui::Button("Cancel")) mJob.reset();
         return;
@@ -335,9 +335,9 @@ void Viewer::tunePanel() {
             const std::lock_guard<std::mutex> lock(mTuneJob->mutex);
             latest = mTuneJob->latest;
         }
-        ImGui::Text("tuning: trial %d", mTuneJob->progress.trialsDone.load() + 1);
+        ImGui::Text("tuning: trial %d", mTuneJob->trials.load() + 1);
         ImGui::TextWrapped("last: %s", latest.c_str());
-        if (ImGui::Button("Stop tuning")) mTuneJob->progress.cancel = true;
+        if (ImGui::Button("Stop tuning")) mTuneJob->cancelled = true;
         tooltip("keeps the best found so far");
         return;
     }
