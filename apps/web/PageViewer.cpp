@@ -54,11 +54,14 @@ void download(const std::string& path) {
         path.c_str());
 }
 
-// The viewer loaded another scene itself (its scene menu, a preset): addresses are written
-// against that scene from now on.
+// The viewer loaded another scene itself (its scene menu, a preset, the ground switch):
+// addresses are written against that scene from now on.
 void rebase(Page& p, const view::State& state) {
     p.base = PageRequest{};
-    p.base.scene = state.source;
+    // A bundled model by its path in the bundle ("Duck/Duck.glb"), as addresses name them.
+    const std::string bundled = std::string(kBundle) + "/";
+    p.base.scene =
+        state.source.rfind(bundled, 0) == 0 ? state.source.substr(bundled.size()) : state.source;
     p.base.ground = state.ground;
     p.loaded = loadRequest(p.base, kBundle).scene;
     p.source = state.source;
@@ -66,14 +69,14 @@ void rebase(Page& p, const view::State& state) {
 
 // The address of what the viewer shows, in the browser's address bar (replacing the entry:
 // the Back button leaves the page, not each drag). A view the address cannot hold (lights
-// added or removed) keeps the last address and says why in the console, once.
+// added or removed) keeps the last address and says why in the console.
 void writeAddressBar(Page& p) {
     const view::State& state = p.viewer->state();
     if (state.revision == p.written && state.viewRevision == p.writtenView) return;
     p.written = state.revision;
     p.writtenView = state.viewRevision;
     try {
-        if (state.source != p.source) rebase(p, state);
+        if (state.source != p.source || state.ground != p.base.ground) rebase(p, state);
         const std::string address =
             writeAddress(p.base, p.loaded, state.scene, state.options, !state.fitView);
         EM_ASM(
