@@ -75,9 +75,9 @@ async function main() {
         {name: 'mixed-lights', native: 'mixed-lights', page: 'mixed-lights', flags: [], keys: ''},
     ];
     if (fs.existsSync(bundle)) {
-        scenes.push({name: 'Duck on ground', native: path.join(bundle, 'Duck'), page: 'Duck',
-            flags: ['--ground'], keys: '&ground=on'});
-        scenes.push({name: 'DabrovicSponza', native: path.join(bundle, 'DabrovicSponza'),
+        scenes.push({name: 'Duck on ground', native: path.join(bundle, 'Duck/Duck.glb'),
+            page: 'Duck', flags: ['--ground'], keys: '&ground=on'});
+        scenes.push({name: 'DabrovicSponza', native: path.join(bundle, 'DabrovicSponza/dabrovic_sponza.glb'),
             page: 'DabrovicSponza', flags: [], keys: ''});
     }
     const tmp = fs.mkdtempSync('/tmp/gnomon-web-bench-');
