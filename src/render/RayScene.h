@@ -25,8 +25,9 @@ public:
     void update(const Scene& scene, double seconds, std::uint64_t revision, std::uint64_t geometry,
                 const ShadowOptions& options);
     // Updated from `gpuScene` and returned when `options` trace shadow rays; else null.
+    // `built`: 1 when the hierarchy was built for it, else 0.
     const RayScene* forFrame(const Scene& scene, const RenderOptions& options,
-                             const GpuScene& gpuScene);
+                             const GpuScene& gpuScene, int& built);
     const gl::Texture& nodes() const { return mNodes; }
     const gl::Texture& triangles() const { return mTriangles; }
     // How many times the hierarchy was built (what tests check the caching by).

@@ -297,7 +297,7 @@ struct Renderer::Impl {
         in.shadowMoments = any2D && moments ? &momentPass.moments() : nullptr;
         in.viewDepth = contact ? &viewDepth.depth() : nullptr;
         in.transmittance = tinted ? &transmittancePass : nullptr;
-        in.rays = rays.forFrame(s, options, scene);
+        in.rays = rays.forFrame(s, options, scene, stats.shadowRayBuilds);
         if (timer) timer->start();
         drawMain(s, options, in, visibility != nullptr);
         if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));

@@ -119,5 +119,25 @@ TEST(ShadowRays, BuiltOnlyWhenCastersChange) {
     EXPECT_EQ(rays.builds(), before + 2);
 }
 
+// Through the renderer: an unchanged scene builds nothing after its first frame; the book's
+// triangle, a caster, turning with time does.
+TEST(ShadowRays, RendererBuildsOnlyForNewCasters) {
+    const Scene s = builtinScene("book-triangle");
+    RenderOptions o = traced(s, 32);
+    Renderer& r = sharedRenderer();
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 1);
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 0);
+    o.time = 0.5;
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 1);
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 0);
+    o.shadow.shadowRays = ShadowRayMode::Off;
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 0);
+}
+
 }  // namespace
 }  // namespace gnomon::test
