@@ -16,13 +16,13 @@
 #include <thread>
 #include <vector>
 
+#include "bvh/Bvh.h"
 #include "gl/Caps.h"
 #include "gl/Context.h"
 #include "gl/Objects.h"
 #include "gl/Program.h"
 #include "gnomon/Error.h"
 #include "gnomon/Scene.h"
-#include "truth/Bvh.h"
 #include "truth/Tracer.h"
 
 namespace {
@@ -61,17 +61,17 @@ World load(const std::string& path) {
     return w;
 }
 
-truth::Bvh buildBvh(const World& w) {
-    std::vector<truth::BvhTriangle> tris;
+bvh::Bvh buildBvh(const World& w) {
+    std::vector<bvh::BvhTriangle> tris;
     for (std::size_t o = 0; o < w.scene.objects.size(); ++o) {
         const std::vector<std::uint32_t>& idx = w.scene.meshes[w.scene.objects[o].mesh].indices;
         const std::vector<glm::vec3>& p = w.positions[o];
         for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
             tris.push_back({p[idx[t]], float(o), p[idx[t + 1]], float(t / 3), p[idx[t + 2]],
-                            float(truth::BvhTriangle::kCaster)});
+                            float(bvh::BvhTriangle::kCaster)});
         }
     }
-    return truth::Bvh(std::move(tris));
+    return bvh::Bvh(std::move(tris));
 }
 
 // A view from inside the scene's box (as bench/trace_bench.cpp), width x height rays.
@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
         gnomon::gl::ContextCaps caps;
         const World world = load(path);
         auto t0 = Clock::now();
-        const truth::Bvh bvh = buildBvh(world);
+        const bvh::Bvh bvh = buildBvh(world);
         const double buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
         const auto embree = truth::makeEmbreeTracer(world.input());
         const auto own = truth::makeBvhTracer(world.input());

@@ -1,5 +1,5 @@
 // The reference's two tracers side by side (truth/Tracer.h): Embree 3 and the project's own
-// BVH (truth/Bvh.h), on one thread, on a real scene (DabrovicSponza from the shared scenes,
+// BVH (bvh/Bvh.h), on one thread, on a real scene (DabrovicSponza from the shared scenes,
 // or --scene=PATH). Build time, then rays per second: coherent primary rays (a 60 degree
 // view from inside the scene's box through a 640x480 grid), incoherent view rays (random
 // origins in the scene's box, random directions) and incoherent shadow rays (the same, to

@@ -1,4 +1,4 @@
-// Rays through the project's own BVH (src/truth/Bvh.h), read from two RGBA32F textures with
+// Rays through the project's own BVH (src/bvh/Bvh.h), read from two RGBA32F textures with
 // texelFetch so it runs on WebGL2 as on OpenGL 4.5: node i is texels 2i, 2i+1 of uBvhNodes,
 // triangle j texels 3j..3j+2 of uBvhTriangles, texel k of a texture at (k mod width,
 // k / width). The same traversal as the C++ (front to back, a stack of deferred siblings,

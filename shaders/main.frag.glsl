@@ -17,7 +17,8 @@
 // (transmittance_lookup.glsl). DITHER_LINEAR / DITHER_SRGB: ordered dithering of the output.
 // STAND_IN_LIFT: shadow passes draw stand-in casters; their objects' lookups start off the
 // surface by the stand-in's error (shadow_lookup.glsl). UNROLLED_LIGHTS: the light loops
-// written out per light (below).
+// written out per light (below). SHADOW_RAYS: every shadowed light's lookup is a ray through
+// the casters' BVH instead (shadow_rays.glsl).
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
@@ -47,6 +48,13 @@ layout(binding = 4) uniform sampler2D uBaseColourTexture;  // 1x1 white when unt
 layout(location = 3) uniform vec3 uAmbient;
 layout(location = 4) uniform float uShadowFactor;
 layout(location = 5) uniform vec3 uEye;  // the camera's world position
+
+#ifdef SHADOW_RAYS
+#include "shadow_rays.glsl"
+#define LOOKUP_OF(mapLookup) rayVisibility
+#else
+#define LOOKUP_OF(mapLookup) mapLookup
+#endif
 
 layout(location = 0) out vec4 fragColour;
 
@@ -282,29 +290,34 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 #define SHADOWED_KINDS(LOOP)
 #else
 #define UNSHADOWED_END uLightRanges.x
+// (SHADOW_RAYS: each kind's lookup is the ray's, LOOKUP_OF.)
 #if defined(POINT_FACES)
-#define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, faceVisibility, kPoint)
+#define CUBE_KIND(LOOP) \
+    LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, LOOKUP_OF(faceVisibility), kPoint)
 #elif defined(HAS_CUBES)
-#define CUBE_KIND(LOOP) LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, cubeVisibility, kPoint)
+#define CUBE_KIND(LOOP) \
+    LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, LOOKUP_OF(cubeVisibility), kPoint)
 #else
 #define CUBE_KIND(LOOP)
 #endif
 #ifdef HAS_CASCADES
-#define CASCADE_KIND(LOOP) \
-    LOOP(CASCADED_LIGHTS, uLightRanges.z, uLightRanges.w, cascadeVisibility, kDirectional)
+#define CASCADE_KIND(LOOP)                                                               \
+    LOOP(CASCADED_LIGHTS, uLightRanges.z, uLightRanges.w, LOOKUP_OF(cascadeVisibility), \
+         kDirectional)
 #else
 #define CASCADE_KIND(LOOP)
 #endif
-#define SHADOWED_KINDS(LOOP)                                                         \
-    LOOP(MAP_LIGHTS, uLightRanges.x, uLightRanges.y, mapVisibility, kSingleMapKind) \
+#define SHADOWED_KINDS(LOOP)                                                                    \
+    LOOP(MAP_LIGHTS, uLightRanges.x, uLightRanges.y, LOOKUP_OF(mapVisibility), kSingleMapKind) \
     CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
 #endif
 
-// The receiver's plane for the lookups (Receiver.planeNormal). Before any discard: derivatives
+// The receiver's plane for the lookups (Receiver.planeNormal; the rays' geometric normal).
+// Before any discard: derivatives
 // need the whole 2x2 quad. Helper invocations interpolate the same triangle, so the
 // differences span its plane exactly.
 vec3 receiverPlaneNormal() {
-#if defined(RECEIVER_PLANE) && !defined(SHADOWS_OFF)
+#if (defined(RECEIVER_PLANE) || defined(SHADOW_RAYS)) && !defined(SHADOWS_OFF)
     vec3 dx = dFdx(vIn.wsPosition), dy = dFdy(vIn.wsPosition);
     vec3 n = cross(dx, dy);
     // Degenerate where the sine of the angle between dx and dy is under 1e-6: compared

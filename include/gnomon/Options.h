@@ -60,6 +60,14 @@ enum class DepthFormat {
 // colour format, and --filter none on native depth (the LINEAR lookups of W. Brown's course text).
 enum class MapFilter { Nearest, Linear };
 
+// Shadow rays: whether a shadowed light's answer comes from its map or from a ray through a
+// BVH of the casters (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015, traces where the map is
+// unsure; this first step traces everywhere).
+enum class ShadowRayMode {
+    Off,  // the maps answer every lookup
+    All,  // every hard lookup of a shadowed light is one ray from the fragment to the light
+};
+
 // What shadow a blended (AlphaMode::Blend) material casts.
 enum class BlendShadows {
     Opaque,    // as if opaque: full shadow whatever its alpha (three.js's default)
@@ -148,6 +156,9 @@ struct ShadowOptions {
     // Screen-space contact shadows: each pixel marches this far (world units) towards each
     // shadowed light through the view's depth, for the contacts a map misses; 0 = off.
     float contactLength = 0.0f;
+    // Off: the maps decide; All: a shadow ray per lookup decides (exact hard shadows, the
+    // error and timing reference; maps are still drawn).
+    ShadowRayMode shadowRays = ShadowRayMode::Off;
 
     bool operator==(const ShadowOptions&) const = default;
 };
@@ -209,6 +220,7 @@ const char* toString(MapFilter v);
 const char* toString(Preset v);
 const char* toString(DebugView v);
 const char* toString(BlendShadows v);
+const char* toString(ShadowRayMode v);
 const char* toString(FitTo v);
 const char* toString(PointMaps v);
 const char* toString(OutputEncoding v);
@@ -221,6 +233,7 @@ std::optional<MapFilter> parseMapFilter(const std::string& s);
 std::optional<Preset> parsePreset(const std::string& s);
 std::optional<DebugView> parseDebugView(const std::string& s);
 std::optional<BlendShadows> parseBlendShadows(const std::string& s);
+std::optional<ShadowRayMode> parseShadowRayMode(const std::string& s);
 std::optional<FitTo> parseFitTo(const std::string& s);
 std::optional<PointMaps> parsePointMaps(const std::string& s);
 std::optional<OutputEncoding> parseOutputEncoding(const std::string& s);

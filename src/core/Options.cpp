@@ -59,6 +59,9 @@ const std::pair<const char*, BlendShadows> kBlendShadows[] = {{"opaque", BlendSh
                                                               {"dithered", BlendShadows::Dithered},
                                                               {"coloured", BlendShadows::Coloured}};
 
+const std::pair<const char*, ShadowRayMode> kShadowRays[] = {{"off", ShadowRayMode::Off},
+                                                             {"all", ShadowRayMode::All}};
+
 const std::pair<const char*, FitTo> kFitTo[] = {{"view-depth", FitTo::ViewDepth},
                                                 {"boxes", FitTo::Boxes}};
 
@@ -123,6 +126,12 @@ const char* toString(BlendShadows v) {
 }
 std::optional<BlendShadows> parseBlendShadows(const std::string& s) {
     return lookup(s, kBlendShadows);
+}
+const char* toString(ShadowRayMode v) {
+    return nameOf(v, kShadowRays);
+}
+std::optional<ShadowRayMode> parseShadowRayMode(const std::string& s) {
+    return lookup(s, kShadowRays);
 }
 const char* toString(FitTo v) {
     return nameOf(v, kFitTo);

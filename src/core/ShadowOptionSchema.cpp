@@ -103,6 +103,17 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          .kind = K::Choice,
          .choices = namesOf<BlendShadows>(),
          ENUM(shadow.blendShadows, BlendShadows)});
+    add({.name = "shadow-rays",
+         .group = G::ShadowMaps,
+         .doc = "all: each shadowed light's hard lookup is one ray through a BVH of the casters "
+                "instead of the map (directional and area lights along their direction, area "
+                "lights up to their plane as they light; spot and point lights to their "
+                "position), started a little off the surface along its geometric normal; soft "
+                "filters (pcss, moments) trace that hard ray too; masked and blended casters "
+                "block it as opaque ones",
+         .kind = K::Choice,
+         .choices = namesOf<ShadowRayMode>(),
+         ENUM(shadow.shadowRays, ShadowRayMode)});
 }
 
 // What keeps lit surfaces from shadowing themselves.

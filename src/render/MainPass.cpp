@@ -7,6 +7,7 @@
 #include "gl/Program.h"
 #include "gl/State.h"
 #include "render/MainPassVariants.h"
+#include "render/RayScene.h"
 #include "render/TiledLights.h"
 #include "render/TransmittancePass.h"
 #include "render/VisibilityTarget.h"
@@ -123,6 +124,11 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         gl::bindTexture(8, in.transmittance->cubes());
         glBindSampler(7, mTintSampler.id());
         glBindSampler(8, mRawSampler.id());
+    }
+    // The casters' BVH for shadow rays: units 12 and 13, read with texelFetch only.
+    if (in.rays) {
+        gl::bindTexture(12, in.rays->nodes());
+        gl::bindTexture(13, in.rays->triangles());
     }
     // The view's depth for contact shadows: unit 5, read raw.
     if (in.viewDepth) {

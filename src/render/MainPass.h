@@ -16,6 +16,7 @@
 
 namespace gnomon::render {
 
+class RayScene;
 class TiledLights;
 class TransmittancePass;
 class VisibilityTarget;
@@ -48,6 +49,8 @@ struct MainPassInputs {
     const gl::Texture* viewDepth = nullptr;
     // Coloured shadows' transmittance maps, when a blended caster tints a shadowed light.
     const TransmittancePass* transmittance = nullptr;
+    // The casters' BVH when shadow rays replace the lookups (--shadow-rays all); else null.
+    const RayScene* rays = nullptr;
     // The target's depth holds the view's opaque depth already (ViewDepthPass, copied): the
     // pass tests LEQUAL, which only the surface kept there passes (nothing lies nearer), and
     // writes none, so each pixel is shaded once.

@@ -84,6 +84,7 @@ std::vector<std::string> choiceDefines(const MainVariant& v) {
     if (v.noSpecular) d.push_back("NO_SPECULAR");
     if (v.singleMapKind > 0) d.push_back("SINGLE_MAP_KIND " + std::to_string(v.singleMapKind - 1));
     if (v.shadowedFactor) d.push_back("SHADOWED_FACTOR");
+    if (v.shadowRays) d.push_back("SHADOW_RAYS");
     return d;
 }
 
@@ -143,6 +144,7 @@ MainVariant variantOf(const RenderOptions& options, bool floor, bool receiverOnl
     if (options.shading.dither && !floor)
         v.dither = options.shading.output == OutputEncoding::Srgb ? 2 : 1;
     v.shadowedFactor = options.shading.shadowedRule == ShadowedRule::Factor;
+    v.shadowRays = s.enabled && s.shadowRays == ShadowRayMode::All;
     v.floor = floor;
     return v;
 }

@@ -47,7 +47,8 @@ struct MainVariant {
     Bits mapCount : 4 = 0;
     Bits cubeCount : 4 = 0;
     Bits cascadedCount : 4 = 0;
-    Bits unused : 8 = 0;
+    Bits shadowRays : 1 = 0;  // --shadow-rays all: rays through the casters' BVH decide
+    Bits unused : 7 = 0;
 
     // The bits as one number (memcpy: libc++ 14, the web build's, has no std::bit_cast).
     std::uint64_t key() const {

@@ -18,6 +18,7 @@
 #include "render/MainPass.h"
 #include "render/MomentPass.h"
 #include "render/PassClock.h"
+#include "render/RayScene.h"
 #include "render/RelativeScene.h"
 #include "render/ShadowPass.h"
 #include "render/TiledLights.h"
@@ -65,6 +66,7 @@ struct Renderer::Impl {
     render::ViewDepthPass viewDepth;
     shadow::FramePlan plan;
     render::RelativeScene relative;  // the scene near the origin (RelativeScene.h)
+    render::RayScene rays;           // the casters' BVH for --shadow-rays all
     Camera relativeFit;              // the fit camera moved as the scene is
     Camera lastCamera;               // the last frame's view and size, for mapUsage()
     int lastWidth = 1, lastHeight = 1;
@@ -166,8 +168,7 @@ struct Renderer::Impl {
         }
     }
 
-    // The frame in `target`, not read back.
-    // `fitCamera` (null: the scene's): the camera the shadow maps follow (Renderer.h).
+    // The frame in `target`, not read back; `fitCamera`: the maps' camera (null: the scene's).
     void draw(const Scene& world, const RenderOptions& options, ShadowVisibility* visibility,
               const Camera* fitCamera = nullptr) {
         check(world, options);
@@ -296,6 +297,7 @@ struct Renderer::Impl {
         in.shadowMoments = any2D && moments ? &momentPass.moments() : nullptr;
         in.viewDepth = contact ? &viewDepth.depth() : nullptr;
         in.transmittance = tinted ? &transmittancePass : nullptr;
+        in.rays = rays.forFrame(s, options, scene, stats.shadowRayBuilds);
         if (timer) timer->start();
         drawMain(s, options, in, visibility != nullptr);
         if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));

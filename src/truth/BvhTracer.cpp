@@ -1,4 +1,4 @@
-// The reference's tracer on the project's own BVH (truth/Bvh.h): no Embree, so it goes
+// The reference's tracer on the project's own BVH (bvh/Bvh.h): no Embree, so it goes
 // where Embree cannot. One hierarchy holds every object, each triangle flagged as a caster
 // or not: view rays see them all, shadow rays only casters, and a node with no caster under
 // it is skipped whole. (Embree's backend keeps two BVHs instead; one here halves the memory
@@ -7,11 +7,16 @@
 // alphaStops, as Embree's filter functions send them.
 #include <string>
 
+#include "bvh/Bvh.h"
 #include "gnomon/Error.h"
-#include "truth/Bvh.h"
 #include "truth/Tracer.h"
 
 namespace gnomon::truth {
+
+using bvh::Bvh;
+using bvh::BvhHit;
+using bvh::BvhTriangle;
+using bvh::kBvhMaxTriangles;
 
 namespace {
 

@@ -1,6 +1,6 @@
 // The ray tracer the reference stands on, as a small interface: the nearest surface along a
 // view ray, and the light a shadow ray lets through. Embree 3 is behind it natively
-// (makeEmbreeTracer); the project's own BVH (makeBvhTracer, truth/Bvh.h) stands in where
+// (makeEmbreeTracer); the project's own BVH (makeBvhTracer, bvh/Bvh.h) stands in where
 // Embree cannot go.
 // Every backend answers masked and blended surfaces by the same rules (truth/AlphaRays.h).
 #pragma once
@@ -63,7 +63,7 @@ TracerKind defaultTracer();
 // gnomon::Error (InvalidInput) when Embree has no device or rejects the scene.
 std::unique_ptr<Tracer> makeEmbreeTracer(const TracerInput& input);
 
-// The project's own BVH (truth/Bvh.h; no Embree): one hierarchy, casters flagged. Throws
+// The project's own BVH (bvh/Bvh.h; no Embree): one hierarchy, casters flagged. Throws
 // gnomon::Error (InvalidInput) for a scene of more than 2^23 triangles (kBvhMaxTriangles).
 std::unique_ptr<Tracer> makeBvhTracer(const TracerInput& input);
 

@@ -286,6 +286,28 @@ TEST(GlesPrograms, MainPassChoices) {
     checkMain(unrolled);
 }
 
+// Shadow rays in place of every kind's lookup (a soft filter's and a moment filter's too),
+// with the frame's extras, for a receiver-only object and the floor.
+TEST(GlesPrograms, MainPassShadowRays) {
+    for (ShadowFilter filter : {ShadowFilter::Pcf, ShadowFilter::Pcss, ShadowFilter::Msm}) {
+        for (bool faces : {false, true}) {
+            RenderOptions o;
+            o.shadow.filter = filter;
+            o.shadow.shadowRays = ShadowRayMode::All;
+            o.shadow.receiverPlane = !faces;
+            checkMain(frameVariant(o, faces, faces));
+        }
+    }
+    RenderOptions o;
+    o.shadow.shadowRays = ShadowRayMode::All;
+    render::MainVariant receiverOnly = render::variantOf(o, false, true);
+    receiverOnly.hasCubes = receiverOnly.hasCascades = 1;
+    checkMain(receiverOnly);
+    render::MainVariant floor = render::variantOf(o, true, false);
+    floor.hasCascades = 1;
+    checkMain(floor);
+}
+
 // The line of `file` that starts with `start` (1-based; 0: none).
 int lineStarting(const std::string& file, const std::string& start) {
     std::istringstream in{std::string(gl::embeddedShader(file))};

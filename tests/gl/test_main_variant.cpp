@@ -75,6 +75,10 @@ TEST(MainVariant, DistinctVariantsHaveDistinctDefines) {
     o.shading.shadowedRule = ShadowedRule::Factor;
     add([](MainVariant&) {});
     o = {};
+    o.shadow.shadowRays = ShadowRayMode::All;
+    add([](MainVariant&) {});
+    add([](MainVariant& v) { v.hasCubes = v.hasCascades = v.visibilityPass = 1; });
+    o = {};
     add([](MainVariant& v) { v.visibilityPass = 1; });
     add([](MainVariant& v) { v.material = 1; });
     add([](MainVariant& v) { v.contactShadows = 1; });

@@ -1,4 +1,4 @@
-// The project's own BVH (truth/Bvh.h): hits on hand-made triangles land where they should,
+// The project's own BVH (bvh/Bvh.h): hits on hand-made triangles land where they should,
 // within (tnear, tfar]; rays through edges and corners that triangles share meet one or more
 // of them, never none (inside a closed mesh every ray hits); the build puts every triangle in
 // exactly one leaf, children inside their parents, casters flagged up the tree; and
@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "truth/Bvh.h"
+#include "bvh/Bvh.h"
 
-namespace gnomon::truth {
+namespace gnomon::bvh {
 namespace {
 
 constexpr std::uint32_t kCaster = BvhTriangle::kCaster;
@@ -403,4 +403,4 @@ TEST(Bvh, FilterDecidesFilteredHits) {
 }
 
 }  // namespace
-}  // namespace gnomon::truth
+}  // namespace gnomon::bvh

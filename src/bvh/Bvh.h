@@ -1,6 +1,6 @@
 // A bounding volume hierarchy over triangles, of the project's own: no Embree, no GL, so the
-// reference can trace where Embree cannot go (wasm), and the same arrays can later be read by
-// a fragment shader. Built top-down with the surface area heuristic over binned centroids
+// reference can trace where Embree cannot go (wasm), and the renderer's shadow rays read the
+// same arrays in a fragment shader (render/RayScene.h, shaders/bvh_trace.glsl). Built top-down with the surface area heuristic over binned centroids
 // (Wald 2007, "On fast Construction of SAH-based Bounding Volume Hierarchies"); traversed
 // with the watertight ray/triangle test of Woop, Benthin and Wald 2013 ("Watertight
 // Ray/Triangle Intersection") and box tests widened as Ize 2013 ("Robust BVH Ray Traversal")
@@ -29,7 +29,7 @@
 
 #include <glm/glm.hpp>
 
-namespace gnomon::truth {
+namespace gnomon::bvh {
 
 struct BvhNode {
     glm::vec3 lo{0.0f};
@@ -120,4 +120,4 @@ private:
     std::vector<BvhTriangle> mTriangles;
 };
 
-}  // namespace gnomon::truth
+}  // namespace gnomon::bvh

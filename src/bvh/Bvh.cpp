@@ -1,4 +1,4 @@
-#include "truth/Bvh.h"
+#include "bvh/Bvh.h"
 
 #include <algorithm>
 #include <cassert>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace gnomon::truth {
+namespace gnomon::bvh {
 
 namespace {
 
@@ -406,4 +406,4 @@ bool Bvh::occluded(const BvhRay& ray, BvhFilter filter, void* context) const {
     return stopped;
 }
 
-}  // namespace gnomon::truth
+}  // namespace gnomon::bvh

@@ -1,0 +1,97 @@
+#include "render/RayScene.h"
+
+#include <algorithm>
+#include <string>
+
+#include "bvh/Bvh.h"
+#include "gl/Caps.h"
+#include "gnomon/Error.h"
+
+namespace gnomon::render {
+
+namespace {
+// Texels a row: wide rows keep the rows few (a driver's texture height is its limit too).
+constexpr int kRowTexels = 4096;
+}  // namespace
+
+void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision,
+                      std::uint64_t geometry, const ShadowOptions& options) {
+    const bool blendedCast = options.blendShadows != BlendShadows::None;
+    if (mValid && revision == mRevision && blendedCast == mBlendedCast) return;
+    mRevision = revision;
+    mBlendedCast = blendedCast;
+    // The casters as the shadow maps have them (shadow::castsDepth), and what they are now.
+    mScratch.clear();
+    mCasters.clear();
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const Object& obj = scene.objects[o];
+        const bool blended = scene.materials[obj.material].alphaMode == AlphaMode::Blend;
+        if (!obj.castsShadows || scene.meshes[obj.mesh].indices.empty()) continue;
+        if (blended && !blendedCast) continue;
+        const glm::mat4 m = obj.worldFromModelAt(seconds);
+        mScratch.push_back(float(o));
+        mScratch.push_back(float(obj.mesh));
+        mScratch.insert(mScratch.end(), &m[0][0], &m[0][0] + 16);
+        mCasters.push_back(std::uint32_t(o));
+    }
+    if (mValid && geometry == mGeometry && mScratch == mKey) return;
+    mValid = true;
+    mGeometry = geometry;
+    std::swap(mKey, mScratch);
+    build(scene, seconds, mCasters);
+}
+
+const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& options,
+                                   const GpuScene& gpuScene, int& built) {
+    built = 0;
+    if (!options.shadow.enabled || options.shadow.shadowRays != ShadowRayMode::All) return nullptr;
+    const std::uint64_t before = mBuilds;
+    update(scene, options.time, gpuScene.revision(), gpuScene.geometryHash(), options.shadow);
+    built = int(mBuilds - before);
+    return this;
+}
+
+void RayScene::build(const Scene& scene, double seconds,
+                     const std::vector<std::uint32_t>& casters) {
+    std::vector<bvh::BvhTriangle> triangles;
+    for (std::uint32_t o : casters) {
+        const Object& obj = scene.objects[o];
+        const Mesh& mesh = scene.meshes[obj.mesh];
+        const glm::mat4 m = obj.worldFromModelAt(seconds);
+        std::vector<glm::vec3> p(mesh.positions.size());
+        for (std::size_t i = 0; i < p.size(); ++i)
+            p[i] = glm::vec3(m * glm::vec4(mesh.positions[i], 1.0f));
+        const std::vector<std::uint32_t>& idx = mesh.indices;
+        for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
+            triangles.push_back({p[idx[t]], float(o), p[idx[t + 1]], float(t / 3), p[idx[t + 2]],
+                                 float(bvh::BvhTriangle::kCaster)});
+        }
+    }
+    // Rows of kRowTexels (or the driver's widest) texels: three a triangle, two a node (under
+    // twice as many nodes as triangles).
+    const int maxSize = gl::activeCaps().maxTextureSize;
+    const int row = std::min(kRowTexels, maxSize);
+    const std::size_t limit = std::size_t(row) * std::size_t(maxSize) / 4;
+    if (triangles.size() > std::min(limit, bvh::kBvhMaxTriangles)) {
+        throw Error(ErrorKind::InvalidInput,
+                    "shadow-rays: the scene's casters have " + std::to_string(triangles.size()) +
+                        " triangles; this OpenGL driver's textures hold at most " +
+                        std::to_string(std::min(limit, bvh::kBvhMaxTriangles)));
+    }
+    const bvh::Bvh hierarchy(std::move(triangles));
+    const std::vector<bvh::BvhNode>& nodes = hierarchy.nodes();
+    const std::vector<bvh::BvhTriangle>& tris = hierarchy.triangles();
+    mTriangleCount = tris.size();
+    if (nodes.empty()) {  // one texel: bvh_trace.glsl reads a row under 2 wide as no hierarchy
+        const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        mNodes = gl::Texture::texelRows("shadow-ray nodes", none, 1, 1);
+        mTriangles = gl::Texture::texelRows("shadow-ray triangles", none, 1, 1);
+    } else {
+        mNodes = gl::Texture::texelRows("shadow-ray nodes", &nodes[0].lo.x, nodes.size() * 2, row);
+        mTriangles =
+            gl::Texture::texelRows("shadow-ray triangles", &tris[0].p0.x, tris.size() * 3, row);
+    }
+    ++mBuilds;
+}
+
+}  // namespace gnomon::render

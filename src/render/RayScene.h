@@ -1,0 +1,53 @@
+// The scene's shadow casters as a BVH (bvh/Bvh.h) in two RGBA32F textures that the main pass
+// reads with texelFetch (shaders/bvh_trace.glsl), for --shadow-rays: no storage buffers, so
+// WebGL2 runs it too. Positions are the renderer's own (the scene as RelativeScene moved
+// it). Built once per set of casters: a frame whose GPU scene kept its revision reads
+// nothing, and a new revision that moved no caster (a receiver's animation, a material)
+// only compares each caster's mesh and transform.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gl/Objects.h"
+#include "gnomon/Options.h"
+#include "gnomon/Scene.h"
+#include "render/GpuScene.h"
+
+namespace gnomon::render {
+
+class RayScene {
+public:
+    // Makes the textures hold `scene`'s casters at `seconds`. `revision` and `geometry`: the
+    // GPU scene's revision and geometry hash (GpuScene), which change with any caster.
+    // Blended materials cast unless `options` says they cast nothing. Throws gnomon::Error
+    // when the casters do not fit the driver's textures.
+    void update(const Scene& scene, double seconds, std::uint64_t revision, std::uint64_t geometry,
+                const ShadowOptions& options);
+    // Updated from `gpuScene` and returned when `options` trace shadow rays; else null.
+    // `built`: 1 when the hierarchy was built for it, else 0.
+    const RayScene* forFrame(const Scene& scene, const RenderOptions& options,
+                             const GpuScene& gpuScene, int& built);
+    const gl::Texture& nodes() const { return mNodes; }
+    const gl::Texture& triangles() const { return mTriangles; }
+    // How many times the hierarchy was built (what tests check the caching by).
+    std::uint64_t builds() const { return mBuilds; }
+    std::size_t triangleCount() const { return mTriangleCount; }
+
+private:
+    void build(const Scene& scene, double seconds, const std::vector<std::uint32_t>& casters);
+
+    bool mValid = false;
+    std::uint64_t mRevision = 0;
+    bool mBlendedCast = false;
+    // What the textures were built from: the geometry hash, and per caster its object and
+    // mesh index and its transform's 16 floats.
+    std::uint64_t mGeometry = 0;
+    std::vector<float> mKey, mScratch;
+    std::vector<std::uint32_t> mCasters;
+    gl::Texture mNodes, mTriangles;
+    std::uint64_t mBuilds = 0;
+    std::size_t mTriangleCount = 0;
+};
+
+}  // namespace gnomon::render

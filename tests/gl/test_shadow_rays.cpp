@@ -1,0 +1,143 @@
+// --shadow-rays all: every shadowed light's lookup is a ray through the casters' BVH in the
+// main pass's fragment shader. Scored against the ray-traced reference, it must misclassify
+// next to nothing on the built-in scenes, do better than a coarse map where the map errs, put
+// shadows where the geometry says, and rebuild its hierarchy only when casters change.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "GlTest.h"
+#include "ShadowCheck.h"
+#include "render/RayScene.h"
+
+namespace gnomon::test {
+namespace {
+
+RenderOptions traced(const Scene& s, int size) {
+    RenderOptions o = s.options;
+    o.width = o.height = size;
+    o.shadow.shadowRays = ShadowRayMode::All;
+    return o;
+}
+
+// Pixel x light pairs wrong, out of the pairs scored.
+double wrongPairs(const ScoreResult& r) {
+    return r.overall.misclassified * double(r.overall.pixels);
+}
+
+// At most 0.005 % of the pixel x light pairs, plus kAllowance pairs, and none away from the
+// reference's shadow boundaries. The allowance: a pixel whose centre lands within a float
+// rounding of a shadow's edge falls either side, as the fragment's interpolated position and
+// the reference's hit on its triangle differ by that rounding (tutorial-point at 128² has one
+// such pixel, 1 of 13 262 pairs, 0.0075 %: over the share alone).
+constexpr double kShare = 0.00005;
+constexpr double kAllowance = 2.0;
+
+void expectNearlyExact(const ScoreResult& r) {
+    EXPECT_LE(wrongPairs(r), kShare * double(r.overall.pixels) + kAllowance);
+    EXPECT_EQ(r.overall.falseShadowOutsideBand, 0.0);
+    EXPECT_EQ(r.overall.leakOutsideBand, 0.0);
+}
+
+TEST(ShadowRays, AllAgreesWithTheReference) {
+    for (const char* name :
+         {"book-triangle", "tutorial-room", "tutorial-spot", "tutorial-point", "mixed-lights"}) {
+        SCOPED_TRACE(name);
+        const Scene s = builtinScene(name);
+        const ScoreResult r = score(sharedRenderer(), s, traced(s, 128));
+        std::printf("%-16s pixels %ld, misclassified %.6f %% (%.0f pairs)\n", name,
+                    r.overall.pixels, 100.0 * r.overall.misclassified, wrongPairs(r));
+        ASSERT_GT(r.overall.pixels, 1000);
+        expectNearlyExact(r);
+    }
+}
+
+// A 64-texel map with no filter misses much of tutorial-room's shadows' edges; the rays do
+// not depend on it.
+TEST(ShadowRays, BeatACoarseMap) {
+    const Scene s = builtinScene("tutorial-room");
+    RenderOptions map = s.options;
+    map.width = map.height = 128;
+    map.shadow.mapSize = 64;
+    map.shadow.filter = ShadowFilter::None;
+    RenderOptions rays = map;
+    rays.shadow.shadowRays = ShadowRayMode::All;
+    const ScoreResult m = score(sharedRenderer(), s, map);
+    const ScoreResult r = score(sharedRenderer(), s, rays);
+    std::printf("map %.5f %%, rays %.5f %%\n", 100.0 * m.overall.misclassified,
+                100.0 * r.overall.misclassified);
+    EXPECT_GT(m.overall.misclassified, 0.001);
+    EXPECT_LT(r.overall.misclassified, m.overall.misclassified);
+    expectNearlyExact(r);
+}
+
+// Dark where the geometry shadows (a CPU ray cast), lit elsewhere, even under a map too
+// coarse to say so itself.
+TEST(ShadowRays, ShadowsWhereTheGeometrySays) {
+    for (const char* name : {"tutorial-room", "tutorial-spot", "tutorial-point"}) {
+        SCOPED_TRACE(name);
+        const Scene s = builtinScene(name);
+        RenderOptions o = traced(s, 256);
+        o.shadow.mapSize = 64;
+        o.shadow.filter = ShadowFilter::None;
+        expectShadowsMatchGeometry(s, o);
+    }
+}
+
+// The hierarchy is built once per set of casters: not again for the same revision, nor for a
+// new one that moved nothing that casts; again when a caster moves.
+TEST(ShadowRays, BuiltOnlyWhenCastersChange) {
+    Scene s = builtinScene("tutorial-room");
+    RenderOptions small = s.options;
+    small.width = small.height = 16;
+    sharedRenderer().render(s, small);  // its context (and its limits) current
+    ShadowOptions so;
+    render::RayScene rays;
+    rays.update(s, 0.0, 1, 7, so);
+    EXPECT_EQ(rays.builds(), 1u);
+    EXPECT_GT(rays.triangleCount(), 0u);
+    rays.update(s, 0.0, 1, 7, so);
+    EXPECT_EQ(rays.builds(), 1u);
+    std::size_t receiver = s.objects.size(), caster = s.objects.size();
+    for (std::size_t i = 0; i < s.objects.size(); ++i)
+        (s.objects[i].castsShadows ? caster : receiver) = i;
+    ASSERT_LT(caster, s.objects.size());
+    if (receiver == s.objects.size()) {  // make one: a receiver's motion rebuilds nothing
+        receiver = caster == 0 ? 1 : 0;
+        s.objects[receiver].castsShadows = false;
+        rays.update(s, 0.0, 2, 7, so);
+        EXPECT_EQ(rays.builds(), 2u);
+    }
+    const std::uint64_t before = rays.builds();
+    s.objects[receiver].worldFromModel[3].x += 1.0f;
+    rays.update(s, 0.0, 3, 7, so);
+    EXPECT_EQ(rays.builds(), before);
+    s.objects[caster].worldFromModel[3].x += 1.0f;
+    rays.update(s, 0.0, 4, 7, so);
+    EXPECT_EQ(rays.builds(), before + 1);
+    rays.update(s, 0.0, 5, 8, so);  // new geometry
+    EXPECT_EQ(rays.builds(), before + 2);
+}
+
+// Through the renderer: an unchanged scene builds nothing after its first frame; the book's
+// triangle, a caster, turning with time does.
+TEST(ShadowRays, RendererBuildsOnlyForNewCasters) {
+    const Scene s = builtinScene("book-triangle");
+    RenderOptions o = traced(s, 32);
+    Renderer& r = sharedRenderer();
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 1);
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 0);
+    o.time = 0.5;
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 1);
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 0);
+    o.shadow.shadowRays = ShadowRayMode::Off;
+    r.render(s, o);
+    EXPECT_EQ(r.lastFrameStats().shadowRayBuilds, 0);
+}
+
+}  // namespace
+}  // namespace gnomon::test
