@@ -29,6 +29,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 namespace truth = gnomon::truth;
+namespace bvh = gnomon::bvh;
 
 struct Rays {
     std::string name;
@@ -172,7 +173,7 @@ int main(int argc, char** argv) {
         gnomon::gl::ContextCaps caps;
         const World world = load(path);
         auto t0 = Clock::now();
-        const bvh::Bvh bvh = buildBvh(world);
+        const bvh::Bvh tree = buildBvh(world);
         const double buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
         const auto embree = truth::makeEmbreeTracer(world.input());
         const auto own = truth::makeBvhTracer(world.input());
@@ -180,14 +181,14 @@ int main(int argc, char** argv) {
         const std::vector<Rays> sets = {sunRays(view, *embree, glm::length(world.hi - world.lo)),
                                         randomRays(world, view.origins.size()), view};
         std::printf("%s: %zu triangles, %zu nodes (built in %.2f s); %d x %d rays a set\n",
-                    path.c_str(), bvh.triangles().size(), bvh.nodes().size(), buildSeconds, width,
+                    path.c_str(), tree.triangles().size(), tree.nodes().size(), buildSeconds, width,
                     height);
         namespace gl = gnomon::gl;
         const int rowTexels = 4096;
-        gl::Texture nodes = gl::Texture::texelRows("bvh nodes", &bvh.nodes()[0].lo.x,
-                                                   bvh.nodes().size() * 2, rowTexels);
-        gl::Texture triangles = gl::Texture::texelRows("bvh triangles", &bvh.triangles()[0].p0.x,
-                                                       bvh.triangles().size() * 3, rowTexels);
+        gl::Texture nodes = gl::Texture::texelRows("bvh nodes", &tree.nodes()[0].lo.x,
+                                                   tree.nodes().size() * 2, rowTexels);
+        gl::Texture triangles = gl::Texture::texelRows("bvh triangles", &tree.triangles()[0].p0.x,
+                                                       tree.triangles().size() * 3, rowTexels);
         gl::Program program =
             gl::buildProgram("bvh rays", {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                           {GL_FRAGMENT_SHADER, "bvh_rays.frag.glsl"}});
