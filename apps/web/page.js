@@ -70,17 +70,26 @@ function addressParams() {
     return new URLSearchParams(location.hash.replace(/^#/, ''));
 }
 
-// The scene menu: the built-in scenes and the bundled models; choosing one keeps the other
-// keys of the address.
+// The scene menu: the built-in scenes and the bundled models; choosing one keeps the
+// address's options but not what belongs to the scene left (its camera, sun, ambient and
+// lights), as a file loaded the same way does.
 function fillMenu() {
     const menu = element('scene');
     for (const name of Module.scenes()) menu.add(new Option(name, name));
     menu.value = addressParams().get('scene') || 'book-triangle';
     menu.addEventListener('change', () => {
-        const params = addressParams();
-        params.set('scene', menu.value);
-        location.hash = params.toString();
+        location.hash = sceneAddress(menu.value).toString();
     });
+}
+
+// The address's keys for another scene: the options kept, the scene's own edits dropped.
+function sceneAddress(scene) {
+    const params = addressParams();
+    for (const key of [...params.keys()]) {
+        if (/^(camera-|light\d|sun$|ambient$)/.test(key)) params.delete(key);
+    }
+    params.set('scene', scene);
+    return params;
 }
 
 // Files chosen with the button go into the page's memory file system under /upload (a .gltf
@@ -95,10 +104,10 @@ function loadFiles(files) {
     Promise.all(written).then(() => {
         const names = [...files].map((file) => file.name);
         const model = names.find((name) => /\.(gltf|glb)$/i.test(name)) || names[0];
-        const params = addressParams();
-        params.set('scene', '/upload/' + model);
+        const params = sceneAddress('/upload/' + model);
         const address = '#' + params.toString();
-        if (location.hash === address) show();  // the same files again: no hashchange
+        // The same files again: no hashchange, so shown here.
+        if (location.hash === address) (pictureOnly ? show : view)();
         else location.hash = address;
     });
 }
