@@ -1,10 +1,11 @@
 // A bounding volume hierarchy over triangles, of the project's own: no Embree, no GL, so the
 // reference can trace where Embree cannot go (wasm), and the renderer's shadow rays read the
-// same arrays in a fragment shader (render/RayScene.h, shaders/bvh_trace.glsl). Built top-down with the surface area heuristic over binned centroids
-// (Wald 2007, "On fast Construction of SAH-based Bounding Volume Hierarchies"); traversed
-// with the watertight ray/triangle test of Woop, Benthin and Wald 2013 ("Watertight
-// Ray/Triangle Intersection") and box tests widened as Ize 2013 ("Robust BVH Ray Traversal")
-// shows, so that a ray through an edge or a vertex two triangles share meets at least one.
+// same arrays in a fragment shader (render/RayScene.h, shaders/bvh_trace.glsl). Built top-down with
+// the surface area heuristic over binned centroids (Wald 2007, "On fast Construction of SAH-based
+// Bounding Volume Hierarchies"); traversed with the watertight ray/triangle test of Woop, Benthin
+// and Wald 2013 ("Watertight Ray/Triangle Intersection") and box tests widened as Ize 2013 ("Robust
+// BVH Ray Traversal") shows, so that a ray through an edge or a vertex two triangles share meets at
+// least one.
 //
 // Layout: two flat arrays whose elements are whole RGBA32F texels, to be uploaded as they are
 // and read with texelFetch (texel k of an array at (k mod width, k / width)). Every field is a
