@@ -51,9 +51,14 @@ layout(location = 5) uniform vec3 uEye;  // the camera's world position
 
 #ifdef SHADOW_RAYS
 #include "shadow_rays.glsl"
+#endif
+#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN)
 #define LOOKUP_OF(mapLookup) rayVisibility
 #else
 #define LOOKUP_OF(mapLookup) mapLookup
+#endif
+#ifndef SHADOW_RAYS_UNCERTAIN
+#define RAYS_WHERE_UNSURE(sample, light, r, toLight) sample
 #endif
 
 layout(location = 0) out vec4 fragColour;
@@ -81,7 +86,7 @@ layout(location = 2) out vec4 fTint;
 #endif
 #elif defined(VISIBILITY_PASS)
 layout(early_fragment_tests) in;
-layout(rg32f, binding = 0) uniform writeonly image2DArray uVisibility;
+layout(rgba32f, binding = 0) uniform writeonly image2DArray uVisibility;
 // Per pixel: 1 + the scene object whose shadows are recorded here (0: none), so that the
 // score compares them with the reference's on the same surface only.
 layout(r32f, binding = 2) uniform writeonly image2D uObjectRecord;
@@ -179,7 +184,7 @@ void shade(LightRecord light, Surface s, vec3 toLight, float falloff, vec3 visib
 #ifdef VISIBILITY_OUTPUTS
 void recordVisibility(LightRecord light, ShadowSample shadow) {
     if (light.sceneLight != uRecordLight) return;
-    fVisibility.xy = vec2(shadow.visibility, shadow.texelWorld);
+    fVisibility.xyw = vec3(shadow.visibility, shadow.texelWorld, shadow.traced ? 1.0 : 0.0);
 #ifdef COLOURED_SHADOWS
     fTint = vec4(shadow.tint, 1.0);
 #endif
@@ -187,7 +192,7 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 #elif defined(VISIBILITY_PASS)
 void recordVisibility(LightRecord light, ShadowSample shadow) {
     imageStore(uVisibility, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight),
-               vec4(shadow.visibility, shadow.texelWorld, 0.0, 0.0));
+               vec4(shadow.visibility, shadow.texelWorld, 0.0, shadow.traced ? 1.0 : 0.0));
 #ifdef COLOURED_SHADOWS
     imageStore(uTintRecord, ivec3(ivec2(gl_FragCoord.xy), light.sceneLight),
                vec4(shadow.tint, 1.0));
@@ -237,10 +242,12 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
         LIGHT_AT(k, KIND)                                                           \
         ShadowSample shadow = kLitSample;                                           \
         if (s.receives) {                                                           \
-            shadow = LOOKUP(light, receiver, toLight);                              \
+            shadow = RAYS_WHERE_UNSURE(LOOKUP(light, receiver, toLight), light,     \
+                                       receiver, toLight);                          \
             CONTACT(light, shadow.visibility, toLight);                             \
             RECORD(light, shadow);                                                  \
             NOTE_CASCADE(shadow);                                                   \
+            NOTE_TRACED(shadow);                                                    \
         }                                                                           \
         shade(light, s, toLight, falloff, LIGHT_THROUGH(shadow), lit, factor);      \
     }
@@ -280,6 +287,12 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
     if (shadow.cascade >= 0) cascade = shadow.cascade
 #else
 #define NOTE_CASCADE(shadow)
+#endif
+#ifdef DEBUG_RAYS
+// main()'s `traced`: whether a ray decided some light's visibility, for the debug tint.
+#define NOTE_TRACED(shadow) traced = traced || shadow.traced
+#else
+#define NOTE_TRACED(shadow)
 #endif
 
 // The records each main() loops over: the unshadowed ones (every light when shadows are off),
@@ -359,7 +372,9 @@ vec3 floorDiffuse(LightRecord light, int kind, vec3 n, out vec3 toLight) {
         vec3 toLight;                                                                     \
         LightRecord light = lights[lightRecord(k)];                                       \
         vec3 diffuse = floorDiffuse(light, KIND, n, toLight);                             \
-        lit += diffuse * LOOKUP(light, receiver, toLight).visibility;                     \
+        lit += diffuse *                                                                  \
+               RAYS_WHERE_UNSURE(LOOKUP(light, receiver, toLight), light, receiver, toLight) \
+                   .visibility;                                                           \
     }
 #define FLOOR_LOOP(NAME, first, last, LOOKUP, KIND) \
     EACH_LIGHT(NAME, first, last, FLOOR_LIGHT, LOOKUP, KIND)
@@ -437,7 +452,7 @@ void main() {
     s.blended = vIn.alpha.y == 2.0;
 #endif
 #ifdef VISIBILITY_OUTPUTS
-    fVisibility = vec4(1.0, 0.0, s.receives ? vIn.object + 1.0 : 0.0, 1.0);
+    fVisibility = vec4(1.0, 0.0, s.receives ? vIn.object + 1.0 : 0.0, 0.0);
 #ifdef COLOURED_SHADOWS
     fTint = vec4(1.0);
 #endif
@@ -447,6 +462,7 @@ void main() {
     s.toEye = normalize(uEye - vIn.wsPosition);
     Receiver receiver = receiverOf(s.n, planeNormal);
     int cascade = -1;  // DEBUG_CASCADES: the last cascade a lookup read
+    bool traced = false;  // DEBUG_RAYS: a ray decided some light's visibility
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
     vec3 factor = vec3(1.0);
@@ -457,6 +473,9 @@ void main() {
     const vec3 kTints[4] = vec3[](vec3(1, 0.3, 0.3), vec3(0.3, 1, 0.3), vec3(0.3, 0.5, 1),
                                   vec3(1, 1, 0.3));
     if (cascade >= 0) colour = mix(colour, kTints[cascade], 0.35);
+#endif
+#ifdef DEBUG_RAYS
+    if (traced) colour = mix(colour, vec3(1.0, 0.0, 1.0), 0.6);
 #endif
     fragColour = vec4(dither(colour), alpha);
 }

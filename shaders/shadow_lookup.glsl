@@ -80,8 +80,9 @@ struct ShadowSample {
     float texelWorld;  // world size of the map texel read (gnomon score's aliasing band); 0: none
     vec3 tint;         // COLOURED_SHADOWS: the share of the light blended casters let through
     int cascade;       // the cascade read (--debug-view cascades); -1: none
+    bool traced;       // SHADOW_RAYS: a ray decided the visibility, not the map
 };
-const ShadowSample kLitSample = ShadowSample(1.0, 0.0, vec3(1.0), -1);
+const ShadowSample kLitSample = ShadowSample(1.0, 0.0, vec3(1.0), -1, false);
 
 // Interleaved gradient noise (Jimenez 2014): a value in [0, 1) per pixel, fixed in screen
 // space, that neighbouring pixels spread evenly. Poisson taps turn by it, cascades hand over

@@ -1,20 +1,31 @@
-// Shadow rays (--shadow-rays all): a shadowed light's visibility from one ray through a BVH
-// of the scene's casters (bvh_trace.glsl, built by render::RayScene) instead of its map. The
-// hard answer of the light's centre, as the reference traces it (truth::ShadowRays): soft
-// filters get it too, and masked or blended casters block the ray whole. Included by
+// Shadow rays: a shadowed light's visibility from one ray through a BVH of the scene's casters
+// (bvh_trace.glsl, built by render::RayScene) instead of its map. The hard answer of the
+// light's centre, as the reference traces it (truth::ShadowRays); masked or blended casters
+// block the ray whole. --shadow-rays all: every lookup is a ray (LOOKUP_OF in main.frag.glsl),
+// soft filters get the hard answer too. SHADOW_RAYS_UNCERTAIN (--shadow-rays uncertain): the
+// map's answer where it is sure, a ray's where it is not (raysWhereUnsure). Included by
 // main.frag.glsl after uEye.
 #include "bvh_trace.glsl"
 
 // Below this cosine between the surface's plane and the way to the light, the surface faces
 // away from the light: in its own shadow (the reference's edge-on bound).
 const float kRayEdgeOn = 1e-3;
+// Shading and plane normals closer than this (sine of their angle): a flat face.
+const float kFlatFaceSine = 3e-4;
+// The margin of rayLead, as shares of the casters' extent and of the position's size.
+const float kRayMarginOfExtent = 2e-6;
+const float kRayMarginOfPosition = 1e-6;
 
-// How far a ray starts off its surface along the geometric normal: a share of the casters'
-// extent (the root's box) for the rounding of the interpolated position on its plane, plus a
-// share of the position's own size for the rounding of its coordinates.
-float rayLift(vec3 p) {
+// How far along the ray its start is skipped: the stretch within a margin of the surface's
+// plane, for the rounding of the interpolated position (it grows with the casters' extent, the
+// root's box, and with the position's own size). The ray keeps to the line through the point,
+// as the reference's does (truth::ShadowRays::lead): a start pushed off along the normal would
+// move the whole ray sideways, past the edges of the casters near it (leaks along every
+// shadow's edge under a low light).
+float rayLead(vec3 p, vec3 n, vec3 dir) {
     vec3 lo = bvhTexel(uBvhNodes, 0).xyz, hi = bvhTexel(uBvhNodes, 1).xyz;
-    return 2e-5 * length(hi - lo) + 4e-6 * length(p);
+    float margin = kRayMarginOfExtent * length(hi - lo) + kRayMarginOfPosition * length(p);
+    return margin / max(dot(n, dir), kRayEdgeOn);
 }
 
 // The light's visibility at `r` along `wsToLight` (lightAt's direction): 0 when a caster lies
@@ -22,13 +33,18 @@ float rayLift(vec3 p) {
 // from their plane; spot and point lights from their position.
 ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     ShadowSample result = kLitSample;
+    result.traced = true;
+    // The plane's normal from the position's derivatives rounds by about 1e-4 radians; a flat
+    // face's shading normal is its own exactly, which keeps a face all but edge-on to the
+    // light (a wall under a sun at a right angle to it) on one side of kRayEdgeOn throughout.
     vec3 n = r.planeNormal;
+    if (length(cross(n, r.normal)) < kFlatFaceSine) n = r.normal;
     if (dot(n, uEye - r.position) < 0.0) n = -n;  // the side the camera sees
     if (dot(n, wsToLight) <= kRayEdgeOn) {
         result.visibility = 0.0;
         return result;
     }
-    vec3 origin = r.position + n * rayLift(r.position);
+    vec3 origin = r.position;
     vec3 dir = wsToLight;
     float reach = 1e30;
     if (light.type == kArea) {
@@ -38,7 +54,27 @@ ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
         reach = length(d);
         dir = d / reach;
     }
-    if (!(reach > 0.0)) return result;  // behind an area light's plane: nothing to cross
-    result.visibility = bvhTrace(origin, dir, 0.0, reach, true) >= 0.0 ? 0.0 : 1.0;
+    float lead = rayLead(origin, n, dir);
+    if (!(reach > lead)) return result;  // the light lies within the margin: nothing to cross
+    result.visibility = bvhTrace(origin, dir, lead, reach, true) >= 0.0 ? 0.0 : 1.0;
     return result;
 }
+
+#ifdef SHADOW_RAYS_UNCERTAIN
+// Hybrid shadows (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015): the map is unsure where its
+// filter's footprint holds both lit and shadowed texels (a shadow's edge, a caster thinner than
+// the footprint) and where the receiver's plane lies within kUnsureCosine of edge-on to the
+// light, where a caster under a fraction of a texel above the receiver (the tolerance band)
+// hides in the receiver's own depth and the silhouette rule guesses. There one ray decides.
+const float kUnsureCosine = 0.1;
+ShadowSample raysWhereUnsure(ShadowSample s, LightRecord light, Receiver r, vec3 wsToLight) {
+    bool partial = s.visibility > 0.0 && s.visibility < 1.0;
+    bool grazing = abs(dot(r.planeNormal, wsToLight)) < kUnsureCosine;
+    if (partial || grazing) {
+        s.visibility = rayVisibility(light, r, wsToLight).visibility;
+        s.traced = true;
+    }
+    return s;
+}
+#define RAYS_WHERE_UNSURE(sample, light, r, toLight) raysWhereUnsure(sample, light, r, toLight)
+#endif

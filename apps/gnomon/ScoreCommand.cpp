@@ -149,6 +149,10 @@ void printScore(const ScoreResult& r, const Scene& scene, const RenderOptions& o
                    double(r.contactRange), r.overall.contactPixels, 100.0 * r.overall.contactLeak));
     }
     printCauses(r);
+    if (tracesShadowRays(options.shadow)) {
+        printWrapped(format("shadow rays (%s): a ray decided %.3f%% of the pixel x light pairs",
+                            toString(options.shadow.shadowRays), 100.0 * r.overall.traced));
+    }
     if (r.otherSurfacePixels > 0) {
         printWrapped(
             format("not scored: %ld pixels where the render drew another surface than the "

@@ -42,6 +42,11 @@ enum class ShadowFilter {
 constexpr bool isMomentFilter(ShadowFilter f) {
     return f == ShadowFilter::Evsm2 || f == ShadowFilter::Evsm4 || f == ShadowFilter::Msm;
 }
+// Whether `f`'s look is a penumbra wider than a texel (PCSS's, the moments' blur), which a hard
+// ray would replace rather than sharpen.
+constexpr bool isPenumbraFilter(ShadowFilter f) {
+    return f == ShadowFilter::Pcss || isMomentFilter(f);
+}
 
 // How a shadow map stores depth. Colour formats write gl_FragCoord.z from the
 // fragment shader into an 8-bit RGBA target and compare by hand in the main pass; native
@@ -61,11 +66,13 @@ enum class DepthFormat {
 enum class MapFilter { Nearest, Linear };
 
 // Shadow rays: whether a shadowed light's answer comes from its map or from a ray through a
-// BVH of the casters (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015, traces where the map is
-// unsure; this first step traces everywhere).
+// BVH of the casters (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015: trace where the map is
+// unsure).
 enum class ShadowRayMode {
-    Off,  // the maps answer every lookup
-    All,  // every hard lookup of a shadowed light is one ray from the fragment to the light
+    Off,        // the maps answer every lookup
+    All,        // every hard lookup of a shadowed light is one ray from the fragment to the light
+    Uncertain,  // the map answers where it is sure, a ray where it is not (penumbra filters:
+                // the map everywhere, see tracesShadowRays)
 };
 
 // What shadow a blended (AlphaMode::Blend) material casts.
@@ -157,11 +164,19 @@ struct ShadowOptions {
     // shadowed light through the view's depth, for the contacts a map misses; 0 = off.
     float contactLength = 0.0f;
     // Off: the maps decide; All: a shadow ray per lookup decides (exact hard shadows, the
-    // error and timing reference; maps are still drawn).
+    // error and timing reference; maps are still drawn); Uncertain: a ray where the map is
+    // unsure.
     ShadowRayMode shadowRays = ShadowRayMode::Off;
 
     bool operator==(const ShadowOptions&) const = default;
 };
+
+// Whether the main pass traces shadow rays under `s`: with shadows on, under All, and under
+// Uncertain unless the filter's look is a penumbra (where the map keeps every answer).
+constexpr bool tracesShadowRays(const ShadowOptions& s) {
+    return s.enabled && (s.shadowRays == ShadowRayMode::All ||
+                         (s.shadowRays == ShadowRayMode::Uncertain && !isPenumbraFilter(s.filter)));
+}
 
 // Diagnostic renderings: the shadow machinery itself drawn, an option like any other.
 enum class DebugView {
@@ -171,6 +186,7 @@ enum class DebugView {
                   // shadowed light's): cascades side by side, a cube's faces in two rows
     LightFrusta,  // the scene with every shadow camera's volume drawn as lines, one colour per
                   // light
+    Rays,         // tint the pixels where a shadow ray decided (--shadow-rays) in magenta
 };
 
 // How computed colours are stored in the output image.

@@ -83,8 +83,9 @@ struct MapUsage {
 // (off, not shadowed, a non-receiver, nothing drawn) read visibility 1 and texel size 0.
 struct ShadowVisibility {
     int width = 0, height = 0, lights = 0;
-    std::vector<float> visibility;  // 0 shadowed .. 1 lit
-    std::vector<float> texelWorld;  // world size of the map texel the lookup used
+    std::vector<float> visibility;     // 0 shadowed .. 1 lit
+    std::vector<float> texelWorld;     // world size of the map texel the lookup used
+    std::vector<std::uint8_t> traced;  // 1 where a shadow ray decided (--shadow-rays), else 0
     // Per pixel (top-down rows, not per light): the scene object whose shadows were recorded
     // there, -1 where the main pass drew none that receives them.
     std::vector<int> object;

@@ -48,6 +48,7 @@ struct ShadowScore {
     // that distance (contacts), and the share of them rendered lit (the leak at contacts).
     long contactPixels = 0;
     double contactLeak = 0.0;
+    double traced = 0.0;  // the share of the pairs a shadow ray decided (--shadow-rays)
 };
 
 // --blend-shadows coloured: the light the renderer lets through (visibility x transmittance,

@@ -14,8 +14,9 @@ using namespace schema;
 bool shadowsOn(const RenderOptions& o) {
     return o.shadow.enabled;
 }
-// Every debug view but the cascades tint, which needs cascades to tint.
+// Every debug view but the tints, which need cascades or shadow rays to tint.
 bool debugViewShows(const RenderOptions& o) {
+    if (o.debugView == DebugView::Rays) return tracesShadowRays(o.shadow);
     return o.debugView != DebugView::Cascades || o.shadow.cascades != 1;
 }
 bool factorRule(const RenderOptions& o) {
@@ -68,12 +69,13 @@ void addOutput(std::vector<OptionSpec>& s) {
     add({.name = "debug-view",
          .group = G::Output,
          .doc = "tint by cascade, show one light's maps (--light-only's, else the first shadowed "
-                "light's), or draw the shadow cameras' volumes",
+                "light's), draw the shadow cameras' volumes, or tint where shadow rays decided",
          .kind = K::Choice,
          .choices = namesOf<DebugView>(),
          ENUM(debugView, DebugView),
          .matters = debugViewShows,
-         .onlyWith = "--cascades auto or 2..4 (for the cascades tint)"});
+         .onlyWith = "--cascades auto or 2..4 (for the cascades tint), --shadow-rays all "
+                     "or uncertain (for the rays tint)"});
 }
 
 // What a shadow does to the colour.

@@ -52,15 +52,18 @@ const std::pair<const char*, Preset> kPresets[] = {{"default", Preset::Default},
 const std::pair<const char*, DebugView> kDebugViews[] = {{"none", DebugView::None},
                                                          {"cascades", DebugView::Cascades},
                                                          {"shadow-map", DebugView::ShadowMap},
-                                                         {"light-frusta", DebugView::LightFrusta}};
+                                                         {"light-frusta", DebugView::LightFrusta},
+                                                         {"rays", DebugView::Rays}};
 
 const std::pair<const char*, BlendShadows> kBlendShadows[] = {{"opaque", BlendShadows::Opaque},
                                                               {"none", BlendShadows::None},
                                                               {"dithered", BlendShadows::Dithered},
                                                               {"coloured", BlendShadows::Coloured}};
 
-const std::pair<const char*, ShadowRayMode> kShadowRays[] = {{"off", ShadowRayMode::Off},
-                                                             {"all", ShadowRayMode::All}};
+const std::pair<const char*, ShadowRayMode> kShadowRays[] = {
+    {"off", ShadowRayMode::Off},
+    {"all", ShadowRayMode::All},
+    {"uncertain", ShadowRayMode::Uncertain}};
 
 const std::pair<const char*, FitTo> kFitTo[] = {{"view-depth", FitTo::ViewDepth},
                                                 {"boxes", FitTo::Boxes}};

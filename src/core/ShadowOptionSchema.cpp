@@ -7,6 +7,11 @@ namespace {
 
 // The rules for when an option has an effect (OptionSpec::matters), each with its condition
 // in the CLI's words. Options of these groups without one need shadows on (OptionSchema.cpp).
+// Shadow rays have an effect where they are traced (and `off` wherever shadows are on).
+bool raysTraced(const RenderOptions& o) {
+    return o.shadow.shadowRays == ShadowRayMode::Off ? o.shadow.enabled
+                                                     : tracesShadowRays(o.shadow);
+}
 bool momentFilters(const RenderOptions& o) {
     return isMomentFilter(o.shadow.filter);
 }
@@ -110,10 +115,17 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
                 "lights up to their plane as they light; spot and point lights to their "
                 "position), started a little off the surface along its geometric normal; soft "
                 "filters (pcss, moments) trace that hard ray too; masked and blended casters "
-                "block it as opaque ones",
+                "block it as opaque ones. uncertain: the map answers where it is sure, a ray "
+                "where its filter's footprint is part lit and part shadowed (edges, thin "
+                "casters) or the surface is within 6 degrees of edge-on to the light; under "
+                "pcss and the moment filters, whose penumbra is their look, the map answers "
+                "everywhere",
          .kind = K::Choice,
          .choices = namesOf<ShadowRayMode>(),
-         ENUM(shadow.shadowRays, ShadowRayMode)});
+         ENUM(shadow.shadowRays, ShadowRayMode),
+         .matters = raysTraced,
+         .onlyWith = "--shadows on (uncertain: with a filter whose look is no wider penumbra: "
+                     "none, hw2x2, pcf, poisson)"});
 }
 
 // What keeps lit surfaces from shadowing themselves.

@@ -49,6 +49,20 @@ float contactRange(const RenderOptions& options, const ScoreOptions& scoreOption
     if (scoreOptions.contactRange > 0.0f) return scoreOptions.contactRange;
     return options.shadow.enabled ? options.shadow.contactLength : 0.0f;
 }
+// ShadowScore::traced of each light and of all: the share of the scored pairs a ray decided.
+void countTraced(const truth::Reference& same, const ShadowVisibility& v, ScoreResult& r) {
+    if (v.traced.size() != same.applies.size()) return;
+    std::vector<long> traced(std::size_t(same.lights), 0);
+    for (std::size_t c = 0; c < v.traced.size(); ++c)
+        if (same.applies[c] && v.traced[c]) ++traced[c % std::size_t(same.lights)];
+    long all = 0;
+    for (ShadowScore& s : r.lights) {
+        const long t = traced[std::size_t(s.light)];
+        s.traced = s.pixels > 0 ? double(t) / double(s.pixels) : 0.0;
+        all += t;
+    }
+    r.overall.traced = r.overall.pixels > 0 ? double(all) / double(r.overall.pixels) : 0.0;
+}
 }  // namespace
 
 ScoreFrame renderForScore(Renderer& renderer, const Scene& scene, const RenderOptions& options,
@@ -120,6 +134,7 @@ ScoreResult compareWithReference(ScoreFrame& frame, const truth::Reference& refe
         truth::scoreVisibility(scene, same, visibility.visibility, band, result.softReference);
     result.lights = scores.lights;
     result.overall = scores.overall;
+    countTraced(same, visibility, result);
     result.errors =
         truth::errorMap(same, visibility.visibility, band, result.softReference, result.render);
     if (scoreOptions.explain) {
@@ -156,7 +171,8 @@ nlohmann::json toJson(const ShadowScore& s, bool contacts) {
                         {"leak", s.leak},
                         {"false_shadow_outside_band", s.falseShadowOutsideBand},
                         {"leak_outside_band", s.leakOutsideBand},
-                        {"mean_abs_error", s.meanAbsError}};
+                        {"mean_abs_error", s.meanAbsError},
+                        {"traced", s.traced}};
     if (contacts) {
         j["contact_pixels"] = s.contactPixels;
         j["contact_leak"] = s.contactLeak;

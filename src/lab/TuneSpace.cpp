@@ -72,6 +72,8 @@ Space searchSpace(const Scene& scene, const RenderOptions& o, search::Point& sta
     if (hasFittedSun(scene)) add(&s.cascades, {"auto", "1", "2", "3", "4"});
     if (triangleCount(scene, /*castersOnly=*/true) >= kStandInTriangles)
         add(&s.casterDetail, {"1", "0.3", "0.1"});
+    // Rays where the map is unsure: exact edges for a ray's cost per unsure pixel.
+    add(&s.shadowRays, {"off", "uncertain"});
     start.clear();
     for (std::size_t i = 0; i < space.size(); ++i) {
         search::Parameter& p = space[i];

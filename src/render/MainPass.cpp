@@ -331,7 +331,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     } else if (visibility) {
         // The surfaces that won the depth test, again: each light's visibility per pixel,
         // untiled (the score reads every light's visibility everywhere).
-        gl::bindImage(0, visibility->visibility(), GL_RG32F);
+        gl::bindImage(0, visibility->visibility(), GL_RGBA32F);
         gl::bindImage(2, visibility->objects(), GL_R32F);
         const gl::Texture* tint = in.transmittance ? visibility->tint() : nullptr;
         if (tint) gl::bindImage(1, *tint, GL_RGBA32F);
@@ -343,7 +343,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
         gl::imageStoresDone();
-        gl::unbindImage(0, GL_RG32F);
+        gl::unbindImage(0, GL_RGBA32F);
         gl::unbindImage(2, GL_R32F);
         if (tint) gl::unbindImage(1, GL_RGBA32F);
     }

@@ -24,7 +24,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     v.hasCascades = in.hasCascades;
     v.pointFaces = in.pointFaces;
     v.constantFalloff = in.constantFalloff;
-    v.shadowRays = in.rays != nullptr;
+    if (!in.rays) v.shadowRays = 0;  // no caster to trace (shadows off, an empty scene)
     v.singleMapKind = MainVariant::Bits(in.singleMapKind + 1);
     v.noSpecular = item.noSpecular;
     static_assert(kMaxUnrolledLights < 16, "a count must fit its four bits");

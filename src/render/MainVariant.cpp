@@ -85,6 +85,9 @@ std::vector<std::string> choiceDefines(const MainVariant& v) {
     if (v.singleMapKind > 0) d.push_back("SINGLE_MAP_KIND " + std::to_string(v.singleMapKind - 1));
     if (v.shadowedFactor) d.push_back("SHADOWED_FACTOR");
     if (v.shadowRays) d.push_back("SHADOW_RAYS");
+    if (v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain))
+        d.push_back("SHADOW_RAYS_UNCERTAIN");
+    if (v.debugRays) d.push_back("DEBUG_RAYS");
     return d;
 }
 
@@ -144,7 +147,8 @@ MainVariant variantOf(const RenderOptions& options, bool floor, bool receiverOnl
     if (options.shading.dither && !floor)
         v.dither = options.shading.output == OutputEncoding::Srgb ? 2 : 1;
     v.shadowedFactor = options.shading.shadowedRule == ShadowedRule::Factor;
-    v.shadowRays = s.enabled && s.shadowRays == ShadowRayMode::All;
+    v.shadowRays = tracesShadowRays(s) ? MainVariant::Bits(s.shadowRays) : 0;
+    v.debugRays = options.debugView == DebugView::Rays;
     v.floor = floor;
     return v;
 }

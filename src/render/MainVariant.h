@@ -47,8 +47,9 @@ struct MainVariant {
     Bits mapCount : 4 = 0;
     Bits cubeCount : 4 = 0;
     Bits cascadedCount : 4 = 0;
-    Bits shadowRays : 1 = 0;  // --shadow-rays all: rays through the casters' BVH decide
-    Bits unused : 7 = 0;
+    Bits shadowRays : 2 = 0;  // ShadowRayMode when rays are traced (tracesShadowRays), else 0
+    Bits debugRays : 1 = 0;   // --debug-view rays
+    Bits unused : 5 = 0;
 
     // The bits as one number (memcpy: libc++ 14, the web build's, has no std::bit_cast).
     std::uint64_t key() const {

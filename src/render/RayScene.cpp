@@ -44,7 +44,7 @@ void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision
 const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& options,
                                    const GpuScene& gpuScene, int& built) {
     built = 0;
-    if (!options.shadow.enabled || options.shadow.shadowRays != ShadowRayMode::All) return nullptr;
+    if (!tracesShadowRays(options.shadow)) return nullptr;
     const std::uint64_t before = mBuilds;
     update(scene, options.time, gpuScene.revision(), gpuScene.geometryHash(), options.shadow);
     built = int(mBuilds - before);

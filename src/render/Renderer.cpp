@@ -66,7 +66,7 @@ struct Renderer::Impl {
     render::ViewDepthPass viewDepth;
     shadow::FramePlan plan;
     render::RelativeScene relative;  // the scene near the origin (RelativeScene.h)
-    render::RayScene rays;           // the casters' BVH for --shadow-rays all
+    render::RayScene rays;           // the casters' BVH for --shadow-rays
     Camera relativeFit;              // the fit camera moved as the scene is
     Camera lastCamera;               // the last frame's view and size, for mapUsage()
     int lastWidth = 1, lastHeight = 1;

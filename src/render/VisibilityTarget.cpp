@@ -46,11 +46,10 @@ void VisibilityTarget::clear(int width, int height, int lights, bool withTint,
     };
     const bool remade = !fits(mVisibility) || (withTint && !fits(mTint));
     if (!fits(mVisibility)) {
-        mVisibility = gl::Texture::array2D("shadow visibility", images ? GL_RG32F : GL_RGBA32F,
-                                           width, height, layers);
+        mVisibility = gl::Texture::array2D("shadow visibility", GL_RGBA32F, width, height, layers);
     }
-    const float unset[4] = {1.0f, 0.0f, 0.0f, 0.0f};  // lit, no map, (ES) no object
-    mVisibility.clear(images ? GL_RG : GL_RGBA, unset);
+    const float unset[4] = {1.0f, 0.0f, 0.0f, 0.0f};  // lit, no map, (ES) no object, no ray
+    mVisibility.clear(GL_RGBA, unset);
     if (images) {
         if (!mObjects || mObjects.width() != width || mObjects.height() != height) {
             mObjects = gl::Texture::plain2D("shadow visibility objects", GL_R32F, width, height);
@@ -97,16 +96,18 @@ void VisibilityTarget::read(int width, int height, int lights, bool drawn,
         std::size_t(out.width) * std::size_t(out.height) * std::size_t(lights);
     out.visibility.assign(cells, 1.0f);
     out.texelWorld.assign(cells, 0.0f);
+    out.traced.assign(cells, 0);
     // Nothing drawn: no object either, so that a score keeps every pixel (and reads it lit).
     out.object.assign(drawn ? std::size_t(out.width) * std::size_t(out.height) : 0, -1);
     out.tint.assign(mWithTint ? 3 * cells : 0, 1.0f);
     if (lights == 0 || !drawn) return;
-    // ES (no object texture): RGBA visibility layers, the object in the first's third channel.
+    // ES (no object texture): the object in the first layer's third channel.
     const bool es = !mObjects;
-    readLayers(mVisibility, es ? GL_RGBA : GL_RG, es ? 4 : 2, out.width, out.height, lights,
+    readLayers(mVisibility, GL_RGBA, 4, out.width, out.height, lights,
                [&](std::size_t cell, const float* v) {
                    out.visibility[cell] = v[0];
                    out.texelWorld[cell] = v[1];
+                   out.traced[cell] = v[3] > 0.5f ? 1 : 0;
                });
     const int at = es ? 2 : 0;
     readLayers(es ? mVisibility : mObjects, es ? GL_RGBA : GL_RED, es ? 4 : 1, out.width,

@@ -1,10 +1,10 @@
-// What `gnomon score` reads of a frame: per light and pixel the shadow visibility and the
-// world size of the map texel it came from (RG32F, a layer per scene light), per pixel the
-// scene object whose shadows those are (R32F, 1 + its index, 0 none), and with
-// coloured shadows the transmittance the lookup found (RGBA32F, the same layers). The main
-// pass's visibility pass writes them as images; on OpenGL ES 3.0 (WebGL2), which has no image
-// stores, it draws each light's layer in a pass of its own through layerTarget(): RGBA32F
-// visibility layers whose third channel holds the object, no object texture.
+// What `gnomon score` reads of a frame: per light and pixel the shadow visibility, the world
+// size of the map texel it came from and whether a shadow ray decided it (RGBA32F: x, y, w; a
+// layer per scene light), per pixel the scene object whose shadows those are (R32F, 1 + its
+// index, 0 none), and with coloured shadows the transmittance the lookup found (RGBA32F, the
+// same layers). The main pass's visibility pass writes them as images; on OpenGL ES 3.0
+// (WebGL2), which has no image stores, it draws each light's layer in a pass of its own through
+// layerTarget(), the object in the visibility layers' third channel, no object texture.
 #pragma once
 
 #include <vector>

@@ -287,7 +287,8 @@ TEST(GlesPrograms, MainPassChoices) {
 }
 
 // Shadow rays in place of every kind's lookup (a soft filter's and a moment filter's too),
-// with the frame's extras, for a receiver-only object and the floor.
+// with the frame's extras, for a receiver-only object and the floor; and after the maps'
+// lookups where they are unsure.
 TEST(GlesPrograms, MainPassShadowRays) {
     for (ShadowFilter filter : {ShadowFilter::Pcf, ShadowFilter::Pcss, ShadowFilter::Msm}) {
         for (bool faces : {false, true}) {
@@ -297,6 +298,15 @@ TEST(GlesPrograms, MainPassShadowRays) {
             o.shadow.receiverPlane = !faces;
             checkMain(frameVariant(o, faces, faces));
         }
+    }
+    // Rays where the maps are unsure, with the debug view's tint; the floor's lookups too.
+    for (ShadowFilter filter : {ShadowFilter::Pcf, ShadowFilter::None, ShadowFilter::Poisson}) {
+        RenderOptions o;
+        o.shadow.filter = filter;
+        o.shadow.shadowRays = ShadowRayMode::Uncertain;
+        o.debugView = DebugView::Rays;
+        checkMain(frameVariant(o, true, false));
+        checkMain(render::variantOf(o, true, false));
     }
     RenderOptions o;
     o.shadow.shadowRays = ShadowRayMode::All;

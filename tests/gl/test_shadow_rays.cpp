@@ -28,10 +28,9 @@ double wrongPairs(const ScoreResult& r) {
 // At most 0.005 % of the pixel x light pairs, plus kAllowance pairs, and none away from the
 // reference's shadow boundaries. The allowance: a pixel whose centre lands within a float
 // rounding of a shadow's edge falls either side, as the fragment's interpolated position and
-// the reference's hit on its triangle differ by that rounding (tutorial-point at 128² has one
-// such pixel, 1 of 13 262 pairs, 0.0075 %: over the share alone).
+// the reference's hit on its triangle differ by that rounding.
 constexpr double kShare = 0.00005;
-constexpr double kAllowance = 2.0;
+constexpr double kAllowance = 1.0;
 
 void expectNearlyExact(const ScoreResult& r) {
     EXPECT_LE(wrongPairs(r), kShare * double(r.overall.pixels) + kAllowance);

@@ -1,0 +1,127 @@
+// --shadow-rays uncertain: the map answers where it is sure, a ray where it is not. Scored
+// against the ray-traced reference it must come close to tracing every lookup while tracing a
+// small share of them, fix a coarse map's edges, leave the penumbra filters' look alone, and
+// --debug-view rays must show where it traced.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "GlTest.h"
+
+namespace gnomon::test {
+namespace {
+
+RenderOptions uncertain(const Scene& s, int size) {
+    RenderOptions o = s.options;
+    o.width = o.height = size;
+    o.shadow.shadowRays = ShadowRayMode::Uncertain;
+    return o;
+}
+
+double wrongPairs(const ScoreResult& r) {
+    return r.overall.misclassified * double(r.overall.pixels);
+}
+
+// The bound for uncertain rays: 0.02 % of the pixel x light pairs (plus one pair, a
+// pixel centre within a float's rounding of an edge), none away from shadow boundaries.
+void expectWithinBound(const ScoreResult& r) {
+    EXPECT_LE(wrongPairs(r), 0.0002 * double(r.overall.pixels) + 1.0);
+    EXPECT_EQ(r.overall.falseShadowOutsideBand, 0.0);
+    EXPECT_EQ(r.overall.leakOutsideBand, 0.0);
+}
+
+TEST(ShadowRaysUncertain, AgreesWithTheReferenceTracingFew) {
+    for (const char* name :
+         {"book-triangle", "tutorial-room", "tutorial-spot", "tutorial-point", "mixed-lights"}) {
+        SCOPED_TRACE(name);
+        const Scene s = builtinScene(name);
+        const ScoreResult r = score(sharedRenderer(), s, uncertain(s, 128));
+        std::printf("%-16s misclassified %.4f %%, traced %.2f %% of %ld pairs\n", name,
+                    100.0 * r.overall.misclassified, 100.0 * r.overall.traced, r.overall.pixels);
+        ASSERT_GT(r.overall.pixels, 1000);
+        expectWithinBound(r);
+        EXPECT_GT(r.overall.traced, 0.0);   // every one of these has shadow edges
+        EXPECT_LT(r.overall.traced, 0.25);  // and is mostly sure
+    }
+}
+
+// With every lookup traced, each pair is the ray's.
+TEST(ShadowRaysUncertain, AllTracesEveryPair) {
+    const Scene s = builtinScene("tutorial-spot");
+    RenderOptions o = uncertain(s, 64);
+    o.shadow.shadowRays = ShadowRayMode::All;
+    const ScoreResult r = score(sharedRenderer(), s, o);
+    EXPECT_EQ(r.overall.traced, 1.0);
+    o.shadow.shadowRays = ShadowRayMode::Off;
+    EXPECT_EQ(score(sharedRenderer(), s, o).overall.traced, 0.0);
+}
+
+// A 64-texel map under the default 3 x 3 PCF puts tutorial-room's shadow edges texels off;
+// its footprints there hold lit and shadowed texels, and the rays decide them.
+TEST(ShadowRaysUncertain, FixACoarseMapsEdges) {
+    const Scene s = builtinScene("tutorial-room");
+    RenderOptions map = s.options;
+    map.width = map.height = 128;
+    map.shadow.mapSize = 64;
+    RenderOptions rays = map;
+    rays.shadow.shadowRays = ShadowRayMode::Uncertain;
+    const ScoreResult m = score(sharedRenderer(), s, map);
+    const ScoreResult r = score(sharedRenderer(), s, rays);
+    std::printf("map %.4f %%, uncertain %.4f %% (traced %.2f %%)\n",
+                100.0 * m.overall.misclassified, 100.0 * r.overall.misclassified,
+                100.0 * r.overall.traced);
+    EXPECT_GT(m.overall.misclassified, 0.001);
+    expectWithinBound(r);
+    EXPECT_LT(r.overall.traced, 0.5);
+}
+
+// PCSS and the moment filters keep their penumbra: no hierarchy, no ray, the same picture.
+TEST(ShadowRaysUncertain, PenumbraFiltersKeepTheirLook) {
+    const Scene s = builtinScene("tutorial-room");
+    for (ShadowFilter f : {ShadowFilter::Pcss, ShadowFilter::Evsm2}) {
+        SCOPED_TRACE(toString(f));
+        RenderOptions off = s.options;
+        off.width = off.height = 64;
+        off.shadow.filter = f;
+        RenderOptions rays = off;
+        rays.shadow.shadowRays = ShadowRayMode::Uncertain;
+        EXPECT_FALSE(tracesShadowRays(rays.shadow));
+        Renderer& renderer = sharedRenderer();
+        const Image a = renderer.render(s, off);
+        const Image b = renderer.render(s, rays);
+        EXPECT_EQ(renderer.lastFrameStats().shadowRayBuilds, 0);
+        EXPECT_EQ(a.pixels, b.pixels);
+    }
+}
+
+// --debug-view rays tints the pixels a ray decided, and only those: as many as the score
+// counts traced where one light shadows (tutorial-room's sun), none without rays.
+TEST(ShadowRaysUncertain, DebugViewShowsTheTracedPixels) {
+    const Scene s = builtinScene("tutorial-room");
+    RenderOptions o = uncertain(s, 96);
+    Renderer& renderer = sharedRenderer();
+    const ScoreResult r = score(renderer, s, o);
+    const Image plain = renderer.render(s, o);
+    o.debugView = DebugView::Rays;
+    const Image tinted = renderer.render(s, o);
+    ASSERT_EQ(plain.pixels.size(), tinted.pixels.size());
+    long changed = 0;
+    for (int y = 0; y < plain.height; ++y) {
+        for (int x = 0; x < plain.width; ++x) {
+            const std::uint8_t *a = plain.at(x, y), *b = tinted.at(x, y);
+            changed += a[0] != b[0] || a[1] != b[1] || a[2] != b[2];
+        }
+    }
+    const double traced = r.overall.traced * double(r.overall.pixels);
+    std::printf("tinted %ld pixels, traced %.0f pairs\n", changed, traced);
+    EXPECT_GT(changed, 0);
+    EXPECT_NEAR(double(changed), traced, 0.1 * traced + 4.0);
+    o.shadow.shadowRays = ShadowRayMode::Off;
+    o.debugView = DebugView::None;
+    const Image off = renderer.render(s, o);
+    o.debugView = DebugView::Rays;
+    EXPECT_EQ(renderer.render(s, o).pixels, off.pixels);
+}
+
+}  // namespace
+}  // namespace gnomon::test
