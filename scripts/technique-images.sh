@@ -43,3 +43,16 @@ if [[ -f $suzanne ]]; then
     cp "$work/far/errors.png" "$out/far-origin-errors.png"
     echo "$out/far-origin*.png"
 fi
+# Shadow rays on Sponza's atrium (quality-real.py's view): where uncertain traces, and the error
+# maps of the maps alone and with rays where they are unsure.
+if python3 scripts/quality-real.py --write-scene sponza-atrium "$work/atrium.json" 2>/dev/null; then
+    mapfile -t view < <(python3 scripts/quality-real.py --view-flags sponza-atrium)
+    "$gnomon" render --size 256x256 --scene "$work/atrium.json" "${view[@]}" \
+        --shadow-rays uncertain --debug-view rays --out "$out/rays-atrium.png"
+    for rays in off uncertain; do
+        "$gnomon" score --size 256x256 --scene "$work/atrium.json" "${view[@]}" \
+            --shadow-rays "$rays" --out-dir "$work/atrium-$rays" >/dev/null 2>&1
+        cp "$work/atrium-$rays/errors.png" "$out/rays-atrium-errors-$rays.png"
+    done
+    echo "$out/rays-atrium*.png"
+fi

@@ -49,15 +49,20 @@ layout(location = 3) uniform vec3 uAmbient;
 layout(location = 4) uniform float uShadowFactor;
 layout(location = 5) uniform vec3 uEye;  // the camera's world position
 
+// Which lookup answers (LOOKUP_OF) and what follows it (RAYS_WHERE_UNSURE): under
+// --shadow-rays all the ray alone, but after the map's lookup where coloured shadows need its
+// tint; under uncertain the map's, then a ray where it is unsure.
 #ifdef SHADOW_RAYS
 #include "shadow_rays.glsl"
 #endif
-#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN)
+#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN) && !defined(COLOURED_SHADOWS)
 #define LOOKUP_OF(mapLookup) rayVisibility
 #else
 #define LOOKUP_OF(mapLookup) mapLookup
 #endif
-#ifndef SHADOW_RAYS_UNCERTAIN
+#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN) && defined(COLOURED_SHADOWS)
+#define RAYS_WHERE_UNSURE(sample, light, r, toLight) rayAfterMap(sample, light, r, toLight)
+#elif !defined(SHADOW_RAYS_UNCERTAIN)
 #define RAYS_WHERE_UNSURE(sample, light, r, toLight) sample
 #endif
 

@@ -149,6 +149,18 @@ float mapFilter(LightRecord light, Receiver receiver, vec3 wsToLight, MapTap m, 
     float beyond = compareDepth(downhill, m.layer, tapReference(m, plane, downhill - m.uv));
     if (atSilhouette(plane, kSingleTapSilhouetteCosine, 1.0 - beyond)) return 1.0;
 #endif
+#if defined(SHADOW_RAYS_UNCERTAIN)
+    // One comparison is never part lit: the four texels around the point tell whether the map
+    // is sure there (all alike: the comparison's answer) or not (a share between, which sends
+    // the lookup to a ray: shadow_rays.glsl).
+    float around = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        vec2 o = (vec2(k & 1, k >> 1) - 0.5) * m.texelUv;
+        vec2 corner = clamp(m.uv + o, m.lo, m.hi);
+        around += compareDepth(corner, m.layer, tapReference(m, plane, corner - m.uv));
+    }
+    if (around > 0.0 && around < 4.0) return 0.5;
+#endif
     return compareDepth(tap, m.layer, tapReference(m, plane, tap - m.uv));
 #endif
 }

@@ -60,6 +60,13 @@ ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     return result;
 }
 
+// The map's sample with the ray's visibility: its tint (COLOURED_SHADOWS) and texel kept.
+ShadowSample rayAfterMap(ShadowSample s, LightRecord light, Receiver r, vec3 wsToLight) {
+    s.visibility = rayVisibility(light, r, wsToLight).visibility;
+    s.traced = true;
+    return s;
+}
+
 #ifdef SHADOW_RAYS_UNCERTAIN
 // Hybrid shadows (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015): the map is unsure where its
 // filter's footprint holds both lit and shadowed texels (a shadow's edge, a caster thinner than
@@ -70,11 +77,7 @@ const float kUnsureCosine = 0.1;
 ShadowSample raysWhereUnsure(ShadowSample s, LightRecord light, Receiver r, vec3 wsToLight) {
     bool partial = s.visibility > 0.0 && s.visibility < 1.0;
     bool grazing = abs(dot(r.planeNormal, wsToLight)) < kUnsureCosine;
-    if (partial || grazing) {
-        s.visibility = rayVisibility(light, r, wsToLight).visibility;
-        s.traced = true;
-    }
-    return s;
+    return partial || grazing ? rayAfterMap(s, light, r, wsToLight) : s;
 }
 #define RAYS_WHERE_UNSURE(sample, light, r, toLight) raysWhereUnsure(sample, light, r, toLight)
 #endif

@@ -16,7 +16,11 @@ constexpr int kRowTexels = 4096;
 
 void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision,
                       std::uint64_t geometry, const ShadowOptions& options) {
-    const bool blendedCast = options.blendShadows != BlendShadows::None;
+    // Blended casters block rays as opaque ones where their shadow is whole or dithered; under
+    // `coloured` the transmittance maps tint the light through them, so rays, like the
+    // reference's visibility, look through them; under `none` they cast nothing.
+    const bool blendedCast = options.blendShadows == BlendShadows::Opaque ||
+                             options.blendShadows == BlendShadows::Dithered;
     if (mValid && revision == mRevision && blendedCast == mBlendedCast) return;
     mRevision = revision;
     mBlendedCast = blendedCast;
