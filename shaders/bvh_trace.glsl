@@ -6,6 +6,10 @@
 // Wald 2013, without the C++'s double-precision retry of an area of exactly 0.
 layout(binding = 12) uniform highp sampler2D uBvhNodes;
 layout(binding = 13) uniform highp sampler2D uBvhTriangles;
+// Masked and blended casters' cut-outs (render/RayMasks.h): texture coordinates and rules per
+// triangle, and the textures' alphas four to a texel.
+layout(binding = 10) uniform highp sampler2D uBvhUvs;
+layout(binding = 11) uniform mediump sampler2D uBvhAlphas;
 
 const float kBvhWiden = 1.0 + 2.0 * (3.0 * 5.9604645e-8) / (1.0 - 3.0 * 5.9604645e-8);
 const int kBvhStack = 64;
@@ -50,8 +54,10 @@ float bvhEnter(BvhRayFrame r, int node, float tnear, float tfar) {
     return enter <= leave ? enter : -1.0;
 }
 
-// The distance to triangle `tri` along the ray when it is hit within (tnear, tfar], else -1.
-float bvhHitTriangle(BvhRayFrame r, int tri, float tnear, float tfar) {
+// The distance to triangle `tri` along the ray when it is hit within (tnear, tfar], else -1;
+// `bary` the hit's barycentric weights of the triangle's corners.
+float bvhHitTriangle(BvhRayFrame r, int tri, float tnear, float tfar, out vec3 bary) {
+    bary = vec3(0.0);
     vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz - r.origin;
     vec3 b = bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - r.origin;
     vec3 c = bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - r.origin;
@@ -65,7 +71,51 @@ float bvhHitTriangle(BvhRayFrame r, int tri, float tnear, float tfar) {
     float t = r.shear.z * (u * a[r.kz] + v * b[r.kz] + w * c[r.kz]);
     float s = det < 0.0 ? -1.0 : 1.0;
     if (!(t * s > tnear * det * s) || !(t * s <= tfar * det * s)) return -1.0;
+    bary = vec3(u, v, w) / det;
     return t / det;
+}
+
+// A texel index wrapped into 0..n-1 as the texture's sampler wraps it (mode: 0 repeat,
+// 1 clamp to edge, 2 mirrored repeat).
+int bvhWrap(int i, int n, int mode) {
+    if (mode == 1) return clamp(i, 0, n - 1);
+    int period = mode == 2 ? 2 * n : n;
+    int m = ((i % period) + period) % period;
+    return m < n ? m : period - 1 - m;
+}
+
+// Alpha of texel `p` of a texture whose first alpha is byte `first` of uBvhAlphas.
+float bvhAlphaAt(int first, ivec2 size, ivec2 p, int modes) {
+    int k = first + bvhWrap(p.y, size.y, (modes / 3) % 3) * size.x + bvhWrap(p.x, size.x, modes % 3);
+    vec4 four = bvhTexel(uBvhAlphas, k >> 2);
+    int c = k & 3;
+    return c == 0 ? four.x : c == 1 ? four.y : c == 2 ? four.z : four.w;
+}
+
+// Whether filtered triangle `tri` blocks at barycentric weights `b` (of its first, second and
+// third corner): its texture's alpha there, nearest or bilinear on the full-size image as the
+// reference samples it (truth/AlphaRays.cpp), reaches the triangle's threshold.
+bool bvhTexelBlocks(int tri, vec3 b) {
+    vec4 t0 = bvhTexel(uBvhUvs, 3 * tri), t1 = bvhTexel(uBvhUvs, 3 * tri + 1);
+    vec4 t2 = bvhTexel(uBvhUvs, 3 * tri + 2);
+    vec2 uv = b.x * t0.xy + b.y * t0.zw + b.z * t1.xy;
+    int modes = int(t1.w);
+    int first = int(t2.x) * 4096 + int(t2.y);
+    ivec2 size = ivec2(t2.zw);
+    vec2 x = mod(uv * vec2(size) - 0.5, 1048576.0);
+    float alpha;
+    if (modes >= 9) {
+        alpha = bvhAlphaAt(first, size, ivec2(floor(x + 0.5)), modes);
+    } else {
+        ivec2 p = ivec2(floor(x));
+        vec2 f = x - floor(x);
+        float top = mix(bvhAlphaAt(first, size, p, modes),
+                        bvhAlphaAt(first, size, p + ivec2(1, 0), modes), f.x);
+        float bottom = mix(bvhAlphaAt(first, size, p + ivec2(0, 1), modes),
+                           bvhAlphaAt(first, size, p + ivec2(1, 1), modes), f.x);
+        alpha = mix(top, bottom, f.y);
+    }
+    return alpha >= t1.z;
 }
 
 // The nearest hit's distance (when `anyCaster`: the first caster's) within (tnear, tfar];
@@ -106,9 +156,12 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster) {
             }
         } else {
             for (int i = first; i < first + count; ++i) {
-                if (anyCaster && (int(bvhTexel(uBvhTriangles, 3 * i + 2).w) & 1) == 0) continue;
-                float t = bvhHitTriangle(r, i, tnear, tfar);
+                int flags = int(bvhTexel(uBvhTriangles, 3 * i + 2).w);
+                if (anyCaster && (flags & 1) == 0) continue;
+                vec3 bary;
+                float t = bvhHitTriangle(r, i, tnear, tfar, bary);
                 if (t < 0.0) continue;
+                if (anyCaster && (flags & 2) != 0 && !bvhTexelBlocks(i, bary)) continue;
                 best = t;
                 tfar = t;
                 if (anyCaster) return best;

@@ -125,10 +125,13 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         glBindSampler(7, mTintSampler.id());
         glBindSampler(8, mRawSampler.id());
     }
-    // The casters' BVH for shadow rays: units 12 and 13, read with texelFetch only.
+    // The casters' BVH for shadow rays: units 12 and 13, their cut-outs 10 and 11, read with
+    // texelFetch only.
     if (in.rays) {
         gl::bindTexture(12, in.rays->nodes());
         gl::bindTexture(13, in.rays->triangles());
+        gl::bindTexture(10, in.rays->masks().uvs());
+        gl::bindTexture(11, in.rays->masks().alphas());
     }
     // The view's depth for contact shadows: unit 5, read raw.
     if (in.viewDepth) {

@@ -16,33 +16,31 @@ constexpr int kRowTexels = 4096;
 
 void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision,
                       std::uint64_t geometry, const ShadowOptions& options) {
-    // Blended casters block rays as opaque ones where their shadow is whole or dithered; under
-    // `coloured` the transmittance maps tint the light through them, so rays, like the
-    // reference's visibility, look through them; under `none` they cast nothing.
-    const bool blendedCast = options.blendShadows == BlendShadows::Opaque ||
-                             options.blendShadows == BlendShadows::Dithered;
-    if (mValid && revision == mRevision && blendedCast == mBlendedCast) return;
+    if (mValid && revision == mRevision && options.blendShadows == mBlend) return;
     mRevision = revision;
-    mBlendedCast = blendedCast;
-    // The casters as the shadow maps have them (shadow::castsDepth), and what they are now.
+    mBlend = options.blendShadows;
+    // The casters as rays meet them (RayMasks.h), and what they are now: object, mesh, the
+    // texture and alpha that cut them out, the transform and the texture's.
     mScratch.clear();
-    mCasters.clear();
+    mCasters.assign(scene.objects.size(), RayCaster{});
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const Object& obj = scene.objects[o];
-        const bool blended = scene.materials[obj.material].alphaMode == AlphaMode::Blend;
-        if (!obj.castsShadows || scene.meshes[obj.mesh].indices.empty()) continue;
-        if (blended && !blendedCast) continue;
+        const RayCaster c = rayCaster(scene, obj, options);
+        mCasters[o] = c;
+        if (!c.casts) continue;
         const glm::mat4 m = obj.worldFromModelAt(seconds);
-        mScratch.push_back(float(o));
-        mScratch.push_back(float(obj.mesh));
+        mScratch.insert(mScratch.end(), {float(o), float(obj.mesh), float(c.texture), c.threshold});
         mScratch.insert(mScratch.end(), &m[0][0], &m[0][0] + 16);
-        mCasters.push_back(std::uint32_t(o));
+        if (c.filtered) {
+            const glm::mat3& uv = scene.materials[obj.material].uvTransform;
+            mScratch.insert(mScratch.end(), &uv[0][0], &uv[0][0] + 9);
+        }
     }
     if (mValid && geometry == mGeometry && mScratch == mKey) return;
     mValid = true;
     mGeometry = geometry;
     std::swap(mKey, mScratch);
-    build(scene, seconds, mCasters);
+    build(scene, seconds);
 }
 
 const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& options,
@@ -55,10 +53,11 @@ const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& opti
     return this;
 }
 
-void RayScene::build(const Scene& scene, double seconds,
-                     const std::vector<std::uint32_t>& casters) {
+void RayScene::build(const Scene& scene, double seconds) {
     std::vector<bvh::BvhTriangle> triangles;
-    for (std::uint32_t o : casters) {
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const RayCaster& c = mCasters[o];
+        if (!c.casts) continue;
         const Object& obj = scene.objects[o];
         const Mesh& mesh = scene.meshes[obj.mesh];
         const glm::mat4 m = obj.worldFromModelAt(seconds);
@@ -66,9 +65,11 @@ void RayScene::build(const Scene& scene, double seconds,
         for (std::size_t i = 0; i < p.size(); ++i)
             p[i] = glm::vec3(m * glm::vec4(mesh.positions[i], 1.0f));
         const std::vector<std::uint32_t>& idx = mesh.indices;
+        const std::uint32_t flags =
+            bvh::BvhTriangle::kCaster | (c.filtered ? bvh::BvhTriangle::kFiltered : 0u);
         for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
-            triangles.push_back({p[idx[t]], float(o), p[idx[t + 1]], float(t / 3), p[idx[t + 2]],
-                                 float(bvh::BvhTriangle::kCaster)});
+            triangles.push_back(
+                {p[idx[t]], float(o), p[idx[t + 1]], float(t / 3), p[idx[t + 2]], float(flags)});
         }
     }
     // Rows of kRowTexels (or the driver's widest) texels: three a triangle, two a node (under
@@ -95,6 +96,7 @@ void RayScene::build(const Scene& scene, double seconds,
         mTriangles =
             gl::Texture::texelRows("shadow-ray triangles", &tris[0].p0.x, tris.size() * 3, row);
     }
+    mMasks.build(scene, mCasters, tris, row);
     ++mBuilds;
 }
 

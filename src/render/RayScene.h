@@ -13,6 +13,7 @@
 #include "gnomon/Options.h"
 #include "gnomon/Scene.h"
 #include "render/GpuScene.h"
+#include "render/RayMasks.h"
 
 namespace gnomon::render {
 
@@ -20,7 +21,7 @@ class RayScene {
 public:
     // Makes the textures hold `scene`'s casters at `seconds`. `revision` and `geometry`: the
     // GPU scene's revision and geometry hash (GpuScene), which change with any caster.
-    // Blended materials cast unless `options` says they cast nothing. Throws gnomon::Error
+    // Masked and blended casters as RayMasks.h says. Throws gnomon::Error
     // when the casters do not fit the driver's textures.
     void update(const Scene& scene, double seconds, std::uint64_t revision, std::uint64_t geometry,
                 const ShadowOptions& options);
@@ -30,22 +31,26 @@ public:
                              const GpuScene& gpuScene, int& built);
     const gl::Texture& nodes() const { return mNodes; }
     const gl::Texture& triangles() const { return mTriangles; }
+    // Masked and blended casters' cut-outs (RayMasks.h).
+    const RayMasks& masks() const { return mMasks; }
     // How many times the hierarchy was built (what tests check the caching by).
     std::uint64_t builds() const { return mBuilds; }
     std::size_t triangleCount() const { return mTriangleCount; }
 
 private:
-    void build(const Scene& scene, double seconds, const std::vector<std::uint32_t>& casters);
+    void build(const Scene& scene, double seconds);
 
     bool mValid = false;
     std::uint64_t mRevision = 0;
-    bool mBlendedCast = false;
+    BlendShadows mBlend = BlendShadows::Opaque;
     // What the textures were built from: the geometry hash, and per caster its object and
-    // mesh index and its transform's 16 floats.
+    // mesh index, its cut-out's texture and threshold, its transform's 16 floats and, cut out,
+    // its texture transform's 9.
     std::uint64_t mGeometry = 0;
     std::vector<float> mKey, mScratch;
-    std::vector<std::uint32_t> mCasters;
+    std::vector<RayCaster> mCasters;  // per scene object
     gl::Texture mNodes, mTriangles;
+    RayMasks mMasks;
     std::uint64_t mBuilds = 0;
     std::size_t mTriangleCount = 0;
 };

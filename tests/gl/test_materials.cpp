@@ -203,6 +203,49 @@ TEST(Materials, ReferenceAgreesWithMaskedAndDitheredShadows) {
     EXPECT_LT(b.overall.meanAbsError, 0.08);
 }
 
+// Shadow rays meet masked and blended casters as the maps and the reference do: the masked
+// plate's clear texel lets the ray through, a texture transform moves the cut, and a blended
+// plate blocks by its rule (whole under opaque; under coloured where a texel is opaque; under
+// dithered from alpha one half; never under none).
+TEST(Materials, ShadowRaysKeepTheCutOuts) {
+    auto rays = [](const Scene& s, BlendShadows blend = BlendShadows::Coloured) {
+        RenderOptions o = s.options;
+        o.shadow.shadowRays = ShadowRayMode::All;
+        o.shadow.blendShadows = blend;
+        return sharedRenderer().render(s, o);
+    };
+    Scene s = texturedPlate(AlphaMode::Mask);
+    Image image = rays(s);
+    const int lit = lum(image, -4.5f);
+    EXPECT_LT(lum(image, 1.0f), lit / 3) << "under the opaque half: shadow";
+    EXPECT_GT(lum(image, 3.5f), lit * 9 / 10) << "under the cut-away half: lit";
+    s.materials[1].uvTransform = glm::mat3(1, 0, 0, 0, 1, 0, 0.5f, 0, 1);
+    s.revision.bump();  // an edit of a scene already drawn
+    image = rays(s);
+    EXPECT_GT(lum(image, -0.5f), lit * 9 / 10) << "moved cut: the left half casts nothing";
+    EXPECT_LT(lum(image, 3.5f), lit / 3) << "moved cut: the right half casts";
+
+    // Two texels, opaque red | clear green, blended: under coloured only the red one blocks.
+    const Scene blended = texturedPlate(AlphaMode::Blend);
+    image = rays(blended, BlendShadows::Coloured);
+    EXPECT_LT(lum(image, 1.0f), lit / 3);
+    EXPECT_GT(lum(image, 3.5f), lit * 9 / 10);
+    // Untextured at alpha 0.3: blocks whole under opaque only.
+    const Scene faint = texturedPlate(AlphaMode::Blend, 0.3f, false);
+    EXPECT_LT(lum(rays(faint, BlendShadows::Opaque), 3.5f), lit / 3);
+    for (BlendShadows b : {BlendShadows::Dithered, BlendShadows::None})
+        EXPECT_GT(lum(rays(faint, b), 3.5f), lit * 9 / 10) << toString(b);
+
+    // Scored against the reference, the masked plate's rays agree everywhere.
+    RenderOptions o = texturedPlate(AlphaMode::Mask).options;
+    o.width = o.height = 128;
+    o.shadow.shadowRays = ShadowRayMode::All;
+    const ScoreResult r = score(sharedRenderer(), texturedPlate(AlphaMode::Mask), o);
+    std::printf("masked plate, rays: %.4f%% misclassified\n", 100.0 * r.overall.misclassified);
+    EXPECT_LE(r.overall.misclassified * double(r.overall.pixels),
+              0.00005 * double(r.overall.pixels) + 1.0);
+}
+
 TEST(Materials, SrgbOutputEncodesTheLinearColours) {
     const Scene s = texturedPlate(AlphaMode::Mask);
     RenderOptions o = s.options;
