@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "GlTest.h"
+#include "RayTest.h"
 #include "ShadowCheck.h"
 #include "render/RayScene.h"
 
@@ -14,28 +15,12 @@ namespace gnomon::test {
 namespace {
 
 RenderOptions traced(const Scene& s, int size) {
-    RenderOptions o = s.options;
-    o.width = o.height = size;
-    o.shadow.shadowRays = ShadowRayMode::All;
-    return o;
+    return withRays(s, size, ShadowRayMode::All);
 }
 
-// Pixel x light pairs wrong, out of the pairs scored.
-double wrongPairs(const ScoreResult& r) {
-    return r.overall.misclassified * double(r.overall.pixels);
-}
-
-// At most 0.005 % of the pixel x light pairs, plus kAllowance pairs, and none away from the
-// reference's shadow boundaries. The allowance: a pixel whose centre lands within a float
-// rounding of a shadow's edge falls either side, as the fragment's interpolated position and
-// the reference's hit on its triangle differ by that rounding.
-constexpr double kShare = 0.00005;
-constexpr double kAllowance = 1.0;
-
+// At most 0.005 % of the pixel x light pairs, plus one pair.
 void expectNearlyExact(const ScoreResult& r) {
-    EXPECT_LE(wrongPairs(r), kShare * double(r.overall.pixels) + kAllowance);
-    EXPECT_EQ(r.overall.falseShadowOutsideBand, 0.0);
-    EXPECT_EQ(r.overall.leakOutsideBand, 0.0);
+    expectWrongAtMost(r, 0.00005, 1.0);
 }
 
 TEST(ShadowRays, AllAgreesWithTheReference) {
