@@ -130,6 +130,8 @@ int runRender(const RenderArgs& args, bool verbose) {
         return renderer.render(scene, options);
     }();
     gnomon::cli::checkInterrupt("rendering; nothing was written");
+    if (const std::string& note = renderer.lastFrameStats().mapBudgetNote; !note.empty())
+        std::fprintf(stderr, "gnomon: warning: %s\n", note.c_str());
     if (verbose) {
         std::fprintf(stderr, "gnomon: first frame (uploads, shadow maps, main pass) in %.0f ms\n",
                      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -

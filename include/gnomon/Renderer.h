@@ -52,6 +52,9 @@ struct FrameStats {
     int shadowPasses = 0;            // shadow maps rendered this frame (kept ones: 0)
     int shadowMaps = 0;              // maps in use (a cascaded light: one per cascade)
     std::size_t shadowMapBytes = 0;  // GPU memory held by shadow maps (moments, transmittance)
+    // Empty, or one sentence: the maps of lights naming no size did not fit one array's budget
+    // (1 GiB, the driver's layers) even at the smallest size by need.
+    std::string mapBudgetNote;
     int momentPasses = 0;  // evsm2, evsm4, msm: moment passes drawn (per map made: 1, 2 blurred)
     int transmittancePasses = 0;        // --blend-shadows coloured: transmittance maps drawn
     std::uint64_t shadowTriangles = 0;  // triangles submitted to shadow maps (cubes: x 6)

@@ -210,6 +210,7 @@ struct Renderer::Impl {
         // Drawn for the tiles alone, the samples do not fit the lights.
         const bool fitSamples = shadow::FramePlan::wantsViewSamples(s, options) || contact;
         plan.setRecordLimit(mainPass.maxLights());
+        plan.setMapBudget(std::size_t(1) << 30, gl::activeCaps().maxArrayLayers);
         plan.plan(s, options, scene.planScene(), fitSamples ? samples : nullptr, fitCamera,
                   shadowPass.held());
         if (fitCamera) {
@@ -231,6 +232,7 @@ struct Renderer::Impl {
         const render::ShadowPassStats passStats =
             shadowPass.render(scene, plan, options.shadow, timer, &stats.passes);
         stats.shadowPasses = passStats.rendered;
+        stats.mapBudgetNote = plan.budgetNote();
         stats.shadowTriangles = passStats.triangles;
         stats.castersCulled = passStats.culled;
         stats.shadowMaps = int(plan.shadowed().size());

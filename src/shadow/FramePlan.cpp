@@ -1,4 +1,5 @@
 #include "shadow/FramePlan.h"
+#include "shadow/MapSizing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,11 +99,9 @@ void FramePlan::plan(const Scene& s, const RenderOptions& options, const PlanSce
         const bool faces = samples && !samples->empty() &&
                            options.shadow.pointMaps == PointMaps::Faces &&
                            options.shadow.filter != ShadowFilter::Pcss;
-        planLights(s, options, scene, samples, faces);
-        if (mHasFaces && int(mLights.size() + mCascadeRecords.size()) > mRecordLimit)
-            planLights(s, options, scene, samples, false);
-        orderLights(s.lights.size());
-        layOutMaps(options.shadow);
+        mSizeCap = 0;
+        planWithin(s, options, scene, samples, faces);
+        fitBudget(s, options, scene, samples, faces);
         fillMapRecords();
         collectCasters(scene, options.shadow);
         mMade.geometry = scene.revision;
@@ -116,6 +115,52 @@ void FramePlan::plan(const Scene& s, const RenderOptions& options, const PlanSce
         mMade.valid = true;
     }
     chooseRedraws(held);
+}
+
+// The lights planned, in records the main pass holds, their maps laid out.
+void FramePlan::planWithin(const Scene& s, const RenderOptions& options, const PlanScene& scene,
+                           const ViewSamples* samples, bool faces) {
+    planLights(s, options, scene, samples, faces);
+    if (mHasFaces && int(mLights.size() + mCascadeRecords.size()) > mRecordLimit)
+        planLights(s, options, scene, samples, false);
+    orderLights(s.lights.size());
+    layOutMaps(options.shadow);
+}
+
+// Maps of lights naming no size halved together until their arrays fit the budget; a
+// sentence (budgetNote) when even kMinNeededMapSize does not.
+void FramePlan::fitBudget(const Scene& s, const RenderOptions& options, const PlanScene& scene,
+                          const ViewSamples* samples, bool faces) {
+    mBudgetNote.clear();
+    auto over = [&] {
+        return largestArrayBytes(mLayout) > mBudgetBytes || mLayout.layers2D > mMaxLayers ||
+               6 * mLayout.cubes > mMaxLayers;
+    };
+    if (!over()) return;
+    int largest = 0;
+    for (const ShadowedLight& sl : mShadowed) {
+        const Light& l = s.lights[std::size_t(sl.light)];
+        if (l.shadowMapSize == 0 && options.shadow.mapSize == 0)
+            largest = std::max(largest, sl.mapSize);
+    }
+    for (mSizeCap = largest / 2; mSizeCap >= kMinNeededMapSize && over(); mSizeCap /= 2)
+        planWithin(s, options, scene, samples, faces);
+    if (over()) {
+        mBudgetNote = std::to_string(mShadowed.size()) + " shadow maps need more than the " +
+                      std::to_string(mBudgetBytes >> 20) + " MiB (and " +
+                      std::to_string(mMaxLayers) + " layers) an array holds even at " +
+                      std::to_string(kMinNeededMapSize) +
+                      "² for the lights naming no size; shadow fewer lights or lower their "
+                      "shadow-map-size";
+    }
+}
+
+// The size light `light` asks for when it names none: by need, within the budget's cap.
+int FramePlan::wantedSize(const Light& light, const RenderOptions& options) const {
+    const int need = neededMapSize(light, mFitCamera, options.width, options.height,
+                                   shadowMapSizeOf(light, options.shadow));
+    if (mSizeCap <= 0) return need;
+    return std::min(need > 0 ? need : shadowMapSizeOf(light, options.shadow), mSizeCap);
 }
 
 void FramePlan::planLights(const Scene& s, const RenderOptions& options, const PlanScene& scene,
@@ -158,7 +203,9 @@ void FramePlan::planLights(const Scene& s, const RenderOptions& options, const P
         g.cosOuter = std::cos(glm::radians(light.outerConeDegrees));
         g.cosInner = std::cos(glm::radians(light.innerConeDegrees));
         g.sceneLight = int(i);  // for the visibility pass
-        const int mapSize = shadowMapSizeOf(light, options.shadow);
+        const bool named = light.shadowMapSize > 0 || options.shadow.mapSize > 0;
+        const int wanted = named ? 0 : wantedSize(light, options);
+        const int mapSize = wanted > 0 ? wanted : shadowMapSizeOf(light, options.shadow);
         const bool shadowing = casts(s, options, i);
         g.biasConstant = options.shadow.biasConstant;
         g.normalOffset = options.shadow.normalOffset;
@@ -177,7 +224,7 @@ void FramePlan::planLights(const Scene& s, const RenderOptions& options, const P
             Held* h = held(i);
             int size = 0;
             const LightCameraFrame frame = sizedLightCameraFrame(
-                light, options.shadow, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr);
+                light, options.shadow, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr, wanted);
             if (frame.valid && frame.kind == FrameKind::Cube && faces) {
                 planFaces(s, options, i, frame.faces, size, g);
             } else if (frame.valid) {

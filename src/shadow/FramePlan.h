@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gnomon/Options.h"
@@ -73,6 +74,14 @@ public:
     // The most records the main pass holds: a plan whose point lights' faces would need more
     // gives them cubes instead.
     void setRecordLimit(int records) { mRecordLimit = records; }
+    // The most bytes and layers one map array may take: lights naming no map size get smaller
+    // maps (halved together) until their arrays fit (MapSizing.h).
+    void setMapBudget(std::size_t bytes, int layers) {
+        mBudgetBytes = bytes;
+        mMaxLayers = layers;
+    }
+    // Empty, or one sentence: the maps do not fit the budget even at the smallest size.
+    const std::string& budgetNote() const { return mBudgetNote; }
 
     const std::vector<ShadowedLight>& shadowed() const { return mShadowed; }
     const std::vector<GpuLight>& records() const { return mLights; }
@@ -107,6 +116,11 @@ private:
                    std::uint8_t faces, int mapSize, GpuLight& g);
     void planLights(const Scene& s, const RenderOptions& options, const PlanScene& scene,
                     const ViewSamples* samples, bool faces);
+    void planWithin(const Scene& s, const RenderOptions& options, const PlanScene& scene,
+                    const ViewSamples* samples, bool faces);
+    void fitBudget(const Scene& s, const RenderOptions& options, const PlanScene& scene,
+                   const ViewSamples* samples, bool faces);
+    int wantedSize(const Light& light, const RenderOptions& options) const;
     // FrameMaps.cpp: the maps' places in their arrays (and the records' map fields), their
     // casters and keys, and which to draw again.
     void layOutMaps(const ShadowOptions& options);
@@ -154,6 +168,10 @@ private:
     glm::ivec4 mRanges{0};
     bool mHasCascades = false, mHasFaces = false;
     int mRecordLimit = 1 << 30;
+    std::size_t mBudgetBytes = ~std::size_t(0);
+    int mMaxLayers = 1 << 30;
+    int mSizeCap = 0;  // 0, or the largest size of a light naming none (fitBudget)
+    std::string mBudgetNote;
     Camera mFitCamera;
     FitScene mFit;  // reused every frame
     MapLayout mLayout;

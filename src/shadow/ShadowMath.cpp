@@ -300,14 +300,14 @@ LightCameraFrame sampledCascadeFrame(const glm::vec3& direction, const FitScene&
 
 LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& options,
                                        const Camera& view, const FitScene& scene, int& size,
-                                       HeldExtent* held) {
-    size = shadowMapSizeOf(light, options);
+                                       HeldExtent* held, int wanted) {
+    const bool named = light.shadowMapSize > 0 || options.mapSize > 0;
+    size = !named && wanted > 0 ? wanted : shadowMapSizeOf(light, options);
     LightCameraFrame frame = lightCameraFrame(light, view, scene, size, held);
     // Fitted again at the cube's size: a frustum's fit quantises its window by the map size,
     // and a fit that finds no frustum at 2048 finds none at the coarser 1024 either (its
     // margins only grow), so this stays a cube.
-    if (frame.valid && frame.kind == FrameKind::Cube && light.shadowMapSize == 0 &&
-        options.mapSize == 0) {
+    if (frame.valid && frame.kind == FrameKind::Cube && !named && size > kDefaultCubeFaceSize) {
         size = kDefaultCubeFaceSize;
         frame = lightCameraFrame(light, view, scene, size, held);
     }

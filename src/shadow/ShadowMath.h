@@ -110,9 +110,11 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
 // the fit draws as a cube gets kDefaultCubeFaceSize per face (Scene.h), fitted again at it.
 // With the view's samples (scene.samples), a cube's `faces` are those the view looks up
 // (cubeFacesSeen, widened by cubeLookupReachTexels).
+// `wanted` > 0: the size the plan chose for a light naming none (by need, or held to the
+// frame's budget: MapSizing.h), in place of the defaults.
 LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& options,
                                        const Camera& view, const FitScene& scene, int& size,
-                                       HeldExtent* held = nullptr);
+                                       HeldExtent* held = nullptr, int wanted = 0);
 // A point light's face `face` (0..5, as cubeFaceRotation) as a map of its own, a perspective
 // frustum over the face's pyramid (widened by what a lookup at its rim reads, from
 // cubeLookupReachTexels) narrowed to the view's samples in it and to where casters can shadow

@@ -1,0 +1,50 @@
+#include "shadow/MapSizing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+namespace gnomon::shadow {
+
+namespace {
+std::size_t texelBytes(DepthFormat f) {
+    if (f == DepthFormat::Depth16) return 2;
+    return isColourFormat(f) ? 8 : 4;  // colour formats: RGBA8 beside a 24-bit depth test
+}
+}  // namespace
+
+int neededMapSize(const Light& light, const Camera& view, int width, int height, int largest) {
+    if (!(light.range > 0.0f) || (light.type != LightType::Point && light.type != LightType::Spot))
+        return 0;
+    const float side = float(std::max(width, height));
+    float radiusPixels = side;  // the camera inside the range: all of the picture
+    if (view.projection == Projection::Orthographic) {
+        radiusPixels =
+            light.range / std::max(0.5f * (view.top - view.bottom), 1e-30f) * 0.5f * float(height);
+    } else {
+        const float d = glm::length(light.position - view.eye);
+        if (d > light.range) {
+            const float s = light.range / d;
+            const float tanAngle = s / std::sqrt(1.0f - s * s);
+            radiusPixels =
+                tanAngle / std::tan(glm::radians(0.5f * view.fovyDegrees)) * 0.5f * float(height);
+        }
+    }
+    const float pixels = std::min(2.0f * radiusPixels, side);
+    const float want = kNeededTexelsPerPixel * pixels;
+    int size = kMinNeededMapSize;
+    while (size < largest && float(size) < want)
+        size *= 2;
+    return std::min(size, largest);
+}
+
+std::size_t largestArrayBytes(const MapLayout& l) {
+    const std::size_t maps = std::size_t(l.size2D) * std::size_t(l.size2D) *
+                             std::size_t(l.layers2D) * texelBytes(l.format2D);
+    const std::size_t cubes = std::size_t(l.sizeCube) * std::size_t(l.sizeCube) * 6u *
+                              std::size_t(l.cubes) * texelBytes(l.formatCube);
+    return std::max(maps, cubes);
+}
+
+}  // namespace gnomon::shadow
