@@ -304,6 +304,8 @@ struct Renderer::Impl {
 
     GlTexture drawPanel(int light, int width, int height) {
         makeCurrent();
+        // The maps first: drawing any left out binds their targets.
+        const render::ShadowPass& maps = shadows.shownDepth(scene, plan);
         if (!panelTarget || panelColour.width() != width || panelColour.height() != height) {
             panelColour = gl::Texture::plain2D("shadow map panel", GL_RGBA8, width, height);
             panelColour.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -316,7 +318,7 @@ struct Renderer::Impl {
         glViewport(0, 0, width, height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         panelTarget.clearColour(black);
-        if (!debugPass.drawMaps(shadows.depth(), plan.shadowed(), light, width, height)) return {};
+        if (!debugPass.drawMaps(maps, plan.shadowed(), light, width, height)) return {};
         return {panelColour.id(), width, height};
     }
 
@@ -381,11 +383,12 @@ GlTexture Renderer::drawShadowMapPanel(int light, int width, int height) {
 }
 
 std::vector<ShadowMapImage> Renderer::shadowMaps() {
-    mImpl->makeCurrent();
+    Impl& m = *mImpl;
+    m.makeCurrent();
     std::vector<ShadowMapImage> out;
-    for (const render::ShadowedLight& sl : mImpl->plan.shadowed()) {
-        out.push_back({sl.light, sl.cascade, sl.face, mImpl->shadows.depth().readBack(sl)});
-    }
+    const render::ShadowPass& maps = m.shadows.shownDepth(m.scene, m.plan);
+    for (const render::ShadowedLight& sl : m.plan.shadowed())
+        out.push_back({sl.light, sl.cascade, sl.face, maps.readBack(sl)});
     return out;
 }
 
