@@ -241,6 +241,9 @@ ShadowSample cubeVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
 #if defined(COLOURED_SHADOWS)
     result.tint = cubeTint(c.toPoint, c.layer, c.reference);
 #endif
+#ifdef RAYS_ONLY
+    return result;  // the tint alone: a ray gives the visibility (shadow_lookup.glsl)
+#endif
     // Two axes spanning the face of the major axis; one texel is 2 / size at unit distance.
     c.u = a.x >= a.y && a.x >= a.z ? vec3(0, 1, 0) : vec3(1, 0, 0);
     c.v = a.z >= a.x && a.z >= a.y ? vec3(0, 1, 0) : vec3(0, 0, 1);

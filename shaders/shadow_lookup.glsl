@@ -65,6 +65,13 @@ layout(binding = 3) uniform CUBE_MAPS uShadowCubeDepths;
 #include "transmittance_lookup.glsl"
 #endif
 
+// Under --shadow-rays all a ray answers every lookup (main.frag.glsl's LOOKUP_OF); with
+// coloured shadows a lookup still runs for its tint, and returns it without filtering the map
+// (RAYS_ONLY): the frame then draws no moments, and the main pass reads no depth map.
+#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN)
+#define RAYS_ONLY
+#endif
+
 // The fragment the lookups are for, the same for every light (main.frag.glsl fills it in).
 struct Receiver {
     vec3 position;       // world space
@@ -279,6 +286,9 @@ ShadowSample mapVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     m.uv = m.origin + coord.xy * m.scale;
 #if defined(COLOURED_SHADOWS)
     result.tint = mapTint(m.uv, m.layer, m.reference, m.lo, m.hi, m.texelUv);
+#endif
+#ifdef RAYS_ONLY
+    return result;  // the tint alone: a ray gives the visibility
 #endif
     TapPlane plane = mapPlane(light, r, wsToLight, shadowCoord, coord, texelWorld, m);
     result.visibility = mapFilter(light, r, wsToLight, m, plane, coord.z);

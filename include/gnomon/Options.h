@@ -164,8 +164,8 @@ struct ShadowOptions {
     // shadowed light through the view's depth, for the contacts a map misses; 0 = off.
     float contactLength = 0.0f;
     // Off: the maps decide; All: a shadow ray per lookup decides (exact hard shadows, the
-    // error and timing reference; maps are still drawn); Uncertain: a ray where the map is
-    // unsure.
+    // error and timing reference; no map is drawn but for coloured shadows' tints and
+    // --debug-view shadow-map); Uncertain: a ray where the map is unsure.
     ShadowRayMode shadowRays = ShadowRayMode::Off;
 
     bool operator==(const ShadowOptions&) const = default;

@@ -48,6 +48,8 @@ struct PassTiming {
 
 // What a frame cost: N shadowed lights cost up to N shadow renderings plus the
 // main one, and N maps of memory; maps whose light and casters did not change are kept.
+// Under --shadow-rays all no map is drawn or in use unless coloured shadows' tints or
+// --debug-view shadow-map read them (maps an earlier frame drew stay held, for a later one).
 struct FrameStats {
     int shadowPasses = 0;            // shadow maps rendered this frame (kept ones: 0)
     int shadowMaps = 0;              // maps in use (a cascaded light: one per cascade)
@@ -134,9 +136,11 @@ public:
     GlTexture frameTexture() const;
     // Draws the last frame's shadow maps of `light` (an index into Scene::lights) as
     // --debug-view shadow-map does, into a texture of width x height kept by the renderer,
-    // and returns it; empty when that light had no map in the last frame.
+    // and returns it; empty when that light had no map in the last frame. Maps the frame
+    // left out (--shadow-rays all) are drawn first, from that frame's plan.
     GlTexture drawShadowMapPanel(int light, int width, int height);
-    // The shadow maps of the last frame, one per shadowed light.
+    // The shadow maps of the last frame, one per shadowed light (drawn now where the frame
+    // left them out, as drawShadowMapPanel says).
     std::vector<ShadowMapImage> shadowMaps();
     // The last frame's counts and timings; the reference stays valid until the next frame.
     // A reference, so a viewer that copies it into its own FrameStats every frame reuses that

@@ -33,15 +33,20 @@ struct MainPassInputs {
     // cascaded records).
     const TiledLights* tiled = nullptr;
     bool hasCascades = false;  // some light is cascaded this frame
-    bool pointFaces = false;   // point lights' faces are maps of their own (shadow::FramePlan)
+    // Some point light has a cube this frame (HAS_CUBES), bound or not: under --shadow-rays
+    // all the lookups read no map (shadowCubes null) and trace the cube's light all the same.
+    bool hasCubes = false;
+    bool pointFaces = false;  // point lights' faces are maps of their own (shadow::FramePlan)
     // The kind (lights.glsl's type code) every single-map record shares, or -1 when they mix
     // (FramePlan::singleMapKind): the program drops the other kinds' light code.
     int singleMapKind = -1;
     // No light falls off with distance (FramePlan::constantFalloff): the program drops the
     // distance terms.
     bool constantFalloff = false;
-    const gl::Texture* shadowMaps = nullptr;   // 2D array; null when no light has one
-    const gl::Texture* shadowCubes = nullptr;  // cube-map array; null when no light has one
+    // The maps the lookups read: 2D array, cube-map array; null when no light has one or
+    // nothing reads them (--shadow-rays all), and a 1x1 stand-in is bound instead.
+    const gl::Texture* shadowMaps = nullptr;
+    const gl::Texture* shadowCubes = nullptr;
     // The 2D maps' blurred moments (MomentPass) for the moment filters; null otherwise.
     const gl::Texture* shadowMoments = nullptr;
     // The view's depth at the output's size (ViewDepthPass) when contact shadows are on (and

@@ -20,7 +20,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     v.material = material;
     v.contactShadows = in.viewDepth != nullptr;
     v.coloured = in.transmittance != nullptr;
-    v.hasCubes = in.shadowCubes != nullptr;
+    v.hasCubes = in.hasCubes;
     v.hasCascades = in.hasCascades;
     v.pointFaces = in.pointFaces;
     v.constantFalloff = in.constantFalloff;

@@ -16,13 +16,11 @@
 #include "render/DebugPass.h"
 #include "render/GpuScene.h"
 #include "render/MainPass.h"
-#include "render/MomentPass.h"
 #include "render/PassClock.h"
 #include "render/RayScene.h"
 #include "render/RelativeScene.h"
-#include "render/ShadowPass.h"
+#include "render/ShadowPasses.h"
 #include "render/TiledLights.h"
-#include "render/TransmittancePass.h"
 #include "render/ViewDepthPass.h"
 #include "render/VisibilityTarget.h"
 #include "scene/SceneUtil.h"
@@ -51,9 +49,7 @@ struct Renderer::Impl {
     std::optional<gl::HeadlessContext> context;
     gl::ContextCaps caps;  // read next, before the passes that follow them
     render::GpuScene scene;
-    render::ShadowPass shadowPass;
-    render::MomentPass momentPass;                // filterable maps' moments (evsm2, evsm4, msm)
-    render::TransmittancePass transmittancePass;  // coloured shadows' transmittance maps
+    render::ShadowPasses shadows;  // depth maps, moments, transmittance
     render::MainPass mainPass;
     render::TiledLights tiled;
     render::DebugPass debugPass;
@@ -212,7 +208,7 @@ struct Renderer::Impl {
         plan.setRecordLimit(mainPass.maxLights());
         plan.setMapBudget(std::size_t(1) << 30, gl::activeCaps().maxArrayLayers);
         plan.plan(s, options, scene.planScene(), fitSamples ? samples : nullptr, fitCamera,
-                  shadowPass.held());
+                  shadows.depth().held());
         if (fitCamera) {
             // The samples were the fit camera's view: contact shadows need the drawn one's,
             // and the tiles are not worth it for this rare frame.
@@ -229,37 +225,13 @@ struct Renderer::Impl {
                             std::to_string(mainPass.maxLights()));
         }
 
-        const render::ShadowPassStats passStats =
-            shadowPass.render(scene, plan, options.shadow, timer, &stats.passes);
-        stats.shadowPasses = passStats.rendered;
+        render::MainPassInputs in;
+        shadows.draw(scene, plan, options, timer, stats, in);
         stats.mapBudgetNote = plan.budgetNote();
-        stats.shadowTriangles = passStats.triangles;
-        stats.castersCulled = passStats.culled;
-        stats.shadowMaps = int(plan.shadowed().size());
         for (const render::DrawItem& item : scene.items())
             stats.mainTriangles += item.indexCount / 3;
-        stats.shadowMapBytes = plan.shadowed().empty() ? 0 : shadowPass.bytes();
-        const bool moments = isMomentFilter(options.shadow.filter) && options.shadow.enabled;
-        if (moments && shadowPass.mapArraySize() > 0) {
-            stats.momentPasses = momentPass.update(shadowPass, plan.shadowed(), shadowPass.drawn(),
-                                                   options.shadow, timer, &stats.passes);
-            stats.shadowMapBytes += momentPass.bytes();
-        } else if (!moments) {
-            momentPass.release();
-        }
-        const bool tinted = options.shadow.enabled && scene.hasTintingCasters(options.shadow) &&
-                            !plan.shadowed().empty();
-        if (tinted) {
-            stats.transmittancePasses =
-                transmittancePass.update(scene, shadowPass, plan.shadowed(), shadowPass.drawn(),
-                                         options.shadow, timer, &stats.passes);
-            stats.shadowMapBytes += transmittancePass.bytes();
-        } else {
-            transmittancePass.release();
-        }
 
         ensureTarget(options.width, options.height, options.shading.output);
-        render::MainPassInputs in;
         // The view depth pass, when drawn for this very view, spares the main pass its
         // overdraw (not under the shadow-map debug view, which draws no scene).
         in.depthReady = options.shading.depthPrepass && options.debugView != DebugView::ShadowMap &&
@@ -288,17 +260,7 @@ struct Renderer::Impl {
         in.pointFaces = plan.hasPointFaces();
         in.singleMapKind = plan.singleMapKind();
         in.constantFalloff = plan.constantFalloff();
-        // Only maps made this frame: an array left from another format must not be bound.
-        bool any2D = false, anyCube = false;
-        const std::vector<render::ShadowedLight>& shadowed = plan.shadowed();
-        for (const render::ShadowedLight& sl : shadowed) {
-            (sl.frame.kind == shadow::FrameKind::Cube ? anyCube : any2D) = true;
-        }
-        in.shadowMaps = any2D ? &shadowPass.maps() : nullptr;
-        in.shadowCubes = anyCube ? &shadowPass.cubes() : nullptr;
-        in.shadowMoments = any2D && moments ? &momentPass.moments() : nullptr;
         in.viewDepth = contact ? &viewDepth.depth() : nullptr;
-        in.transmittance = tinted ? &transmittancePass : nullptr;
         in.rays = rays.forFrame(s, options, scene, stats.shadowRayBuilds);
         if (timer) timer->start();
         drawMain(s, options, in, visibility != nullptr);
@@ -314,7 +276,8 @@ struct Renderer::Impl {
             const int light = options.lightOnly >= 0 ? options.lightOnly
                               : shadowed.empty()     ? -1
                                                      : shadowed.front().light;
-            if (!debugPass.drawMaps(shadowPass, shadowed, light, options.width, options.height)) {
+            if (!debugPass.drawMaps(shadows.depth(), shadowed, light, options.width,
+                                    options.height)) {
                 throw Error(ErrorKind::InvalidInput,
                             light < 0 ? "debug-view shadow-map: no light of scene '" + s.name +
                                             "' has a shadow map in this frame"
@@ -343,6 +306,8 @@ struct Renderer::Impl {
 
     GlTexture drawPanel(int light, int width, int height) {
         makeCurrent();
+        // The maps first: drawing any left out binds their targets.
+        const render::ShadowPass& maps = shadows.shownDepth(scene, plan);
         if (!panelTarget || panelColour.width() != width || panelColour.height() != height) {
             panelColour = gl::Texture::plain2D("shadow map panel", GL_RGBA8, width, height);
             panelColour.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -355,7 +320,7 @@ struct Renderer::Impl {
         glViewport(0, 0, width, height);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         panelTarget.clearColour(black);
-        if (!debugPass.drawMaps(shadowPass, plan.shadowed(), light, width, height)) return {};
+        if (!debugPass.drawMaps(maps, plan.shadowed(), light, width, height)) return {};
         return {panelColour.id(), width, height};
     }
 
@@ -420,11 +385,12 @@ GlTexture Renderer::drawShadowMapPanel(int light, int width, int height) {
 }
 
 std::vector<ShadowMapImage> Renderer::shadowMaps() {
-    mImpl->makeCurrent();
+    Impl& m = *mImpl;
+    m.makeCurrent();
     std::vector<ShadowMapImage> out;
-    for (const render::ShadowedLight& sl : mImpl->plan.shadowed()) {
-        out.push_back({sl.light, sl.cascade, sl.face, mImpl->shadowPass.readBack(sl)});
-    }
+    const render::ShadowPass& maps = m.shadows.shownDepth(m.scene, m.plan);
+    for (const render::ShadowedLight& sl : m.plan.shadowed())
+        out.push_back({sl.light, sl.cascade, sl.face, maps.readBack(sl)});
     return out;
 }
 
@@ -461,7 +427,7 @@ void Renderer::setPassTiming(bool on) {
 }
 
 void Renderer::invalidateShadowMaps() {
-    mImpl->shadowPass.invalidate();
+    mImpl->shadows.depth().invalidate();
     mImpl->viewDepth.invalidate();
 }
 
@@ -473,7 +439,7 @@ double Renderer::measureBareDepthPass(int size) {
     mImpl->makeCurrent();
     for (const render::ShadowedLight& sl : mImpl->plan.shadowed()) {
         if (sl.frame.kind == shadow::FrameKind::Cube) continue;
-        return mImpl->shadowPass.bareDepthPass(mImpl->scene, sl.frame.clipFromWorld(), size);
+        return mImpl->shadows.depth().bareDepthPass(mImpl->scene, sl.frame.clipFromWorld(), size);
     }
     return -1.0;
 }

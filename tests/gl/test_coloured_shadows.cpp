@@ -2,7 +2,7 @@
 // 2D maps and cubes, by the colour of their texture where they are textured; a receiver
 // nearer the light than the glass stays untinted; the transmitted light matches the ray-traced
 // reference's within 4/255 on average; the transmittance pass runs only for maps drawn and
-// only when something blended casts; every depth format tints.
+// only when something blended casts; every depth format tints, and so do shadow rays.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -185,6 +185,37 @@ TEST(ColouredShadowsPass, FullyOpaqueBlendedCastersShadowAsOpaqueOnes) {
     EXPECT_LT(differ, compared / 200) << "the same shadow in the depth maps";
     const ScoreResult result = score(sharedRenderer(), blended, blended.options);
     EXPECT_LT(result.overall.misclassified, 0.01);
+}
+
+// Under --shadow-rays all a ray decides each light's visibility and the transmittance maps
+// still tint it: they are drawn, against the depth maps as their depth test, which are drawn
+// for them; the moments, which nothing reads, are not.
+TEST(ColouredShadowsPass, RaysAllKeepTheTint) {
+    Renderer& r = sharedRenderer();
+    for (int light = 0; light < 3; ++light) {  // sun, point light's faces, point light's cube
+        for (ShadowFilter filter : {ShadowFilter::Pcf, ShadowFilter::Evsm2}) {
+            SCOPED_TRACE(std::to_string(light) + " " + toString(filter));
+            const Scene s = glassPane(light > 0);
+            RenderOptions o = s.options;
+            o.shadow.shadowRays = ShadowRayMode::All;
+            o.shadow.filter = filter;
+            o.shadow.pointMaps = light == 2 ? PointMaps::Cube : PointMaps::Faces;
+            r.invalidateShadowMaps();
+            const Image image = r.render(s, o);
+            const FrameStats& stats = r.lastFrameStats();
+            EXPECT_GE(stats.shadowPasses, 1);
+            EXPECT_EQ(stats.transmittancePasses, stats.shadowPasses);
+            EXPECT_EQ(stats.momentPasses, 0);
+            const std::uint8_t* red = at(image, -1.5f, 3.2f);
+            const std::uint8_t* blue = at(image, 1.5f, 3.2f);
+            EXPECT_GT(red[0], red[1] * 3 / 2) << "red light under the red half";
+            EXPECT_GT(blue[2], blue[1] * 3 / 2) << "blue light under the blue half";
+            o.shadow.shadowRays = ShadowRayMode::Off;
+            const Image maps = r.render(s, o);
+            EXPECT_NEAR(luminance(at(maps, -1.5f, 3.2f)), luminance(red), 3)
+                << "the maps' tinted light";
+        }
+    }
 }
 
 TEST(ColouredShadowsPass, EveryDepthFormatTints) {
