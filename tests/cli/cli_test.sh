@@ -90,7 +90,15 @@ PY
         fail "sweep.csv header"
     grep -q "<polyline" "$work/s/sweep.svg" || fail "sweep.svg has no lines"
     run bench --scene tutorial-room --sweep colour
-    expect 2 "--sweep: expected lights, map-size, triangles, cascades, filter or caster-detail"
+    expect 2 "--sweep: expected lights, local-lights, map-size, triangles, cascades, filter or"
+    # Local lights: a sweep's table and CSV; a count out of range is one clear error.
+    run bench --scene tutorial-room --size 64x64 --frames 1 --warmup 0 --sweep local-lights \
+        --values 1,4 --out-dir "$work/l"
+    expect 0 "local-lights"
+    [[ $(wc -l <"$work/l/sweep.csv") == 3 ]] || fail "local-lights sweep.csv should have 2 rows"
+    run bench --scene tutorial-room --sweep local-lights --values 300 --frames 1 --warmup 0 \
+        --out-dir "$work/l"
+    expect 2 "--values: local-lights 300 is outside 1..256"
     run bench --scene tutorial-room --sweep map-size --values 256,big --frames 1 --warmup 0 \
         --out-dir "$work/s"
     expect 2 "'big' is not a number"
