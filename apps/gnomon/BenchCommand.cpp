@@ -47,6 +47,11 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
                     "(stand-in casters, 1..0.01)");
     cmd->add_option("--values", args.values,
                     "comma-separated values for --sweep (default: the ranges above)");
+    cmd->add_option("--write-scene", args.writeScene,
+                    "with --sweep and one value in --values: write that value's scene (the "
+                    "scene included, then its lights, camera and options) as a scene file, and "
+                    "measure nothing")
+        ->type_name("FILE");
     cmd->add_option("--out-dir", args.outDir,
                     "folder for bench.json, and for a sweep sweep.csv and sweep.svg "
                     "(default bench)");
@@ -306,6 +311,34 @@ void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
     std::printf("wrote %s/bench.json, sweep.csv, sweep.svg\n", args.outDir.c_str());
 }
 
+// --write-scene: the scene of a sweep's one value as a scene file that includes the scene
+// given and holds that value's lights, camera and options; nothing is measured (no GL).
+int writeSweepScene(const BenchArgs& args, const Scene& base, const RenderOptions& baseOptions,
+                    const std::vector<std::string>& values) {
+    if (values.size() != 1) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--write-scene needs --sweep and one value in --values, got " +
+                        std::to_string(values.size()) + " values");
+    }
+    if (args.sweep == "triangles") {
+        throw Error(ErrorKind::InvalidInput,
+                    "--write-scene: a triangles sweep changes the meshes, which a scene file "
+                    "takes from the scene it includes as they are");
+    }
+    Scene scene;
+    RenderOptions options;
+    applySweep(args.sweep, values[0], base, baseOptions, scene, options);
+    scene.name = std::filesystem::path(args.writeScene).stem().string();
+    scene.description = base.name + " with " + args.sweep + " " + values[0] +
+                        " (written by gnomon bench --sweep " + args.sweep + " --values " +
+                        values[0] + " --write-scene)";
+    saveSceneFile(args.writeScene, args.scene, scene, options, args.flags.ground,
+                  args.flags.upAxis());
+    std::printf("wrote %s: %s, %zu lights\n", args.writeScene.c_str(), scene.description.c_str(),
+                scene.lights.size());
+    return 0;
+}
+
 }  // namespace
 
 int runBench(const BenchArgs& args, bool verbose) {
@@ -324,6 +357,7 @@ int runBench(const BenchArgs& args, bool verbose) {
     args.flags.editSceneAndWarn(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     const std::vector<std::string> values = sweepValues(args);
+    if (!args.writeScene.empty()) return writeSweepScene(args, base, baseOptions, values);
     OutputSet files(args.outDir, "--out-dir");
     ContextOptions context;
     context.verbose = verbose;

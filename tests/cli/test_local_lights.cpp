@@ -233,5 +233,30 @@ TEST(LocalLights, SponzaAtriumInTheOpen) {
     EXPECT_EQ(placeLocalLights(s, 32, kAspect), lights);
 }
 
+// examples/sponza-local-lights.json is what the sweep places for 32 lights in its view
+// (written by --write-scene; docs/results/performance.md gives the command): regenerate it
+// when the rule changes.
+TEST(LocalLights, SponzaExampleIsTheSweepsThirtyTwo) {
+    const std::string model =
+        std::string(GNOMON_SHARED_SCENES) + "/DabrovicSponza/dabrovic_sponza.glb";
+    if (!std::filesystem::exists(model)) GTEST_SKIP() << model << " is absent";
+    const Scene s = loadScene(std::string(GNOMON_EXAMPLES_DIR) + "/sponza-local-lights.json");
+    const float aspect = float(s.options.width) / float(s.options.height);
+    const std::vector<Light> placed = placeLocalLights(s, 32, aspect);
+    ASSERT_EQ(s.lights.size(), placed.size());
+    glm::vec3 lo, hi;
+    sceneBounds(s, lo, hi);
+    const float size = glm::length(hi - lo);
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        const Light &file = s.lights[i], &now = placed[i];
+        EXPECT_EQ(file.name, now.name);
+        EXPECT_EQ(file.type, now.type) << file.name;
+        EXPECT_LT(glm::length(file.position - now.position), 1e-5f * size) << file.name;
+        EXPECT_LT(glm::length(file.direction - now.direction), 1e-5f) << file.name;
+        EXPECT_NEAR(file.range, now.range, 1e-5f * now.range) << file.name;
+        EXPECT_NEAR(file.intensity, now.intensity, 1e-4f * now.intensity) << file.name;
+    }
+}
+
 }  // namespace
 }  // namespace gnomon::cli
