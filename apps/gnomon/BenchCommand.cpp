@@ -411,6 +411,15 @@ int runBench(const BenchArgs& args, bool verbose) {
         files.keep();
         throw Interrupted(std::string(e.what()) + "; kept the " + std::to_string(runs.size()) +
                           " of " + std::to_string(values.size()) + " values finished");
+    } catch (const Error& e) {
+        // A value the renderer or the driver refuses (maps beyond a texture's size limit, more
+        // lights than a uniform block holds): the values measured before it are kept too.
+        if (runs.empty()) throw;
+        writeSweep(runs, base.name, baseOptions, args, out, files);
+        files.keep();
+        throw Error(e.kind(), args.sweep + " " + values[runs.size()] + ": " + e.what() +
+                                  " (kept the " + std::to_string(runs.size()) + " of " +
+                                  std::to_string(values.size()) + " values finished)");
     }
     writeSweep(runs, base.name, baseOptions, args, out, files);
     files.keep();

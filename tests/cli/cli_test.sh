@@ -110,9 +110,12 @@ PY
     run bench --scene tutorial-room --sweep local-lights --values 300 --frames 1 --warmup 0 \
         --out-dir "$work/l"
     expect 2 "--values: local-lights 300 is outside 1..256"
-    run bench --scene tutorial-room --sweep map-size --values 256,big --frames 1 --warmup 0 \
-        --out-dir "$work/s"
-    expect 2 "'big' is not a number"
+    # A value refused after others were measured: one error line, and theirs are kept.
+    run bench --scene tutorial-room --size 64x64 --sweep map-size --values 256,big --frames 1 \
+        --warmup 0 --out-dir "$work/big"
+    expect 2 "map-size big: --values: 'big' is not a number (kept the 1 of 2 values finished)"
+    [[ $(grep -c "error" "$work/stderr") == 1 ]] || fail "more than one error line"
+    [[ $(wc -l <"$work/big/sweep.csv") == 2 ]] || fail "the value measured was not kept"
     ;;
 score)
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s"
