@@ -86,16 +86,18 @@ public:
                     : std::abs((camera.right - camera.left) * (camera.top - camera.bottom));
     }
 
-    // The ray through `uv` in [0, 1]^2 of the picture, up to the far plane.
+    // The ray through `uv` in [0, 1]^2 of the picture, up to the far plane. Its direction is
+    // taken to the far plane's point (a long base, so a precise one), or, where a far plane
+    // 10^7 nears away leaves that point out of float's reach, to the depth range's middle.
     bvh::BvhRay ray(glm::vec2 uv) const {
         const glm::vec2 ndc = 2.0f * uv - 1.0f;
-        const glm::vec3 a = unproject(ndc, -1.0f), b = unproject(ndc, 0.0f);
-        const float far = glm::length(unproject(ndc, 1.0f) - a);
+        const glm::vec3 a = unproject(ndc, -1.0f), f = unproject(ndc, 1.0f);
+        const bool farKnown = std::isfinite(f.x) && std::isfinite(f.y) && std::isfinite(f.z);
         bvh::BvhRay r;
         r.origin = a;
-        r.dir = glm::normalize(b - a);
+        r.dir = glm::normalize((farKnown ? f : unproject(ndc, 0.0f)) - a);
         r.tnear = 0.0f;
-        r.tfar = std::isfinite(far) ? far : std::numeric_limits<float>::max();
+        r.tfar = farKnown ? glm::length(f - a) : std::numeric_limits<float>::max();
         return r;
     }
     // The picture's area: on the image plane at distance 1 (perspective), or of the volume.
