@@ -40,11 +40,18 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
                   "keep unchanged shadow maps between frames (default: every frame redraws "
                   "every map, as when lights move)");
     cmd->add_option("--sweep", args.sweep,
-                    "vary one parameter: lights (1..64 spot lights), map-size (256..8192), "
-                    "triangles (each triangle split into 1..4096), cascades (1..4), filter, "
-                    "caster-detail (stand-in casters, 1..0.01)");
+                    "vary one parameter: lights (1..64 spot lights), local-lights (1..256 spot "
+                    "and point lights of limited range in the open space the view looks into, "
+                    "instead of the scene's own), map-size (256..8192), triangles (each "
+                    "triangle split into 1..4096), cascades (1..4), filter, caster-detail "
+                    "(stand-in casters, 1..0.01)");
     cmd->add_option("--values", args.values,
                     "comma-separated values for --sweep (default: the ranges above)");
+    cmd->add_option("--write-scene", args.writeScene,
+                    "with --sweep and one value in --values: write that value's scene (the "
+                    "scene included, then its lights, camera and options) as a scene file, and "
+                    "measure nothing")
+        ->type_name("FILE");
     cmd->add_option("--out-dir", args.outDir,
                     "folder for bench.json, and for a sweep sweep.csv and sweep.svg "
                     "(default bench)");
@@ -263,8 +270,8 @@ void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
     plot.title = "gnomon bench: " + sceneName + ", sweep of " + args.sweep + " (" +
                  std::to_string(baseOptions.width) + "x" + std::to_string(baseOptions.height) +
                  ", median of " + std::to_string(args.frames) + " frames)";
-    const bool logAxis =
-        args.sweep == "lights" || args.sweep == "map-size" || args.sweep == "triangles";
+    const bool logAxis = args.sweep == "lights" || args.sweep == "local-lights" ||
+                         args.sweep == "map-size" || args.sweep == "triangles";
     plot.xLabel = args.sweep == "triangles" ? "triangles per original triangle (totals in the CSV)"
                                             : args.sweep;
     plot.yLabel = "milliseconds";
@@ -273,7 +280,8 @@ void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
                    {"main pass", {}},
                    {"shadows off (reference)", {}},
                    {"bare depth draw, 1 map (reference)", {}}};
-    std::printf("%-10s %10s %10s %10s %10s %12s %12s\n", args.sweep.c_str(), "frame ms",
+    const int column = std::max(10, int(args.sweep.size()));
+    std::printf("%-*s %10s %10s %10s %10s %12s %12s\n", column, args.sweep.c_str(), "frame ms",
                 "shadow ms", "main ms", "off ms", "bare ms", "shadow MiB");
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const Run& r = runs[i];
@@ -286,7 +294,7 @@ void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
                       r.shadowBytes, (unsigned long long)r.shadowTriangles,
                       (unsigned long long)r.mainTriangles);
         csv += line;
-        std::printf("%-10s %10.2f %10.2f %10.2f %10.2f %12.2f %12.1f\n", r.value.c_str(),
+        std::printf("%-*s %10.2f %10.2f %10.2f %10.2f %12.2f %12.1f\n", column, r.value.c_str(),
                     r.frame.median, r.shadow.median, r.main.median, r.shadowsOff.median,
                     r.bareDepth.median, double(r.shadowBytes) / (1024.0 * 1024.0));
         plot.xTicks.push_back(r.value);
@@ -303,6 +311,34 @@ void writeSweep(const std::vector<Run>& runs, const std::string& sceneName,
     std::printf("wrote %s/bench.json, sweep.csv, sweep.svg\n", args.outDir.c_str());
 }
 
+// --write-scene: the scene of a sweep's one value as a scene file that includes the scene
+// given and holds that value's lights, camera and options; nothing is measured (no GL).
+int writeSweepScene(const BenchArgs& args, const Scene& base, const RenderOptions& baseOptions,
+                    const std::vector<std::string>& values) {
+    if (values.size() != 1) {
+        throw Error(ErrorKind::InvalidInput,
+                    "--write-scene needs --sweep and one value in --values, got " +
+                        std::to_string(values.size()) + " values");
+    }
+    if (args.sweep == "triangles") {
+        throw Error(ErrorKind::InvalidInput,
+                    "--write-scene: a triangles sweep changes the meshes, which a scene file "
+                    "takes from the scene it includes as they are");
+    }
+    Scene scene;
+    RenderOptions options;
+    applySweep(args.sweep, values[0], base, baseOptions, scene, options);
+    scene.name = std::filesystem::path(args.writeScene).stem().string();
+    scene.description = base.name + " with " + args.sweep + " " + values[0] +
+                        " (written by gnomon bench --sweep " + args.sweep + " --values " +
+                        values[0] + " --write-scene)";
+    saveSceneFile(args.writeScene, args.scene, scene, options, args.flags.ground,
+                  args.flags.upAxis());
+    std::printf("wrote %s: %s, %zu lights\n", args.writeScene.c_str(), scene.description.c_str(),
+                scene.lights.size());
+    return 0;
+}
+
 }  // namespace
 
 int runBench(const BenchArgs& args, bool verbose) {
@@ -315,9 +351,13 @@ int runBench(const BenchArgs& args, bool verbose) {
                     "--warmup must be in 0..1000, got " + std::to_string(args.warmup));
     }
     Scene base = loadWithProgress(args.scene, args.flags.upAxis());
+    // Sweeps that replace the lights make a loader's added sun moot: no warning about it.
+    if (args.sweep == "lights" || args.sweep == "local-lights")
+        std::erase(base.warnings, std::string(kDefaultSunWarning));
     args.flags.editSceneAndWarn(base);
     const RenderOptions baseOptions = args.flags.resolve(base);
     const std::vector<std::string> values = sweepValues(args);
+    if (!args.writeScene.empty()) return writeSweepScene(args, base, baseOptions, values);
     OutputSet files(args.outDir, "--out-dir");
     ContextOptions context;
     context.verbose = verbose;
@@ -371,6 +411,15 @@ int runBench(const BenchArgs& args, bool verbose) {
         files.keep();
         throw Interrupted(std::string(e.what()) + "; kept the " + std::to_string(runs.size()) +
                           " of " + std::to_string(values.size()) + " values finished");
+    } catch (const Error& e) {
+        // A value the renderer or the driver refuses (maps beyond a texture's size limit, more
+        // lights than a uniform block holds): the values measured before it are kept too.
+        if (runs.empty()) throw;
+        writeSweep(runs, base.name, baseOptions, args, out, files);
+        files.keep();
+        throw Error(e.kind(), args.sweep + " " + values[runs.size()] + ": " + e.what() +
+                                  " (kept the " + std::to_string(runs.size()) + " of " +
+                                  std::to_string(values.size()) + " values finished)");
     }
     writeSweep(runs, base.name, baseOptions, args, out, files);
     files.keep();

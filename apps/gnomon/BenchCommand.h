@@ -10,6 +10,7 @@ namespace gnomon::cli {
 
 struct BenchArgs {
     std::string scene, outDir = "bench", sweep, values;
+    std::string writeScene;  // --write-scene: the scene file of the sweep's one value
     int frames = 20, warmup = 3;
     bool staticMaps = false;
     RenderFlags flags;

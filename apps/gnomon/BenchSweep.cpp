@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "LocalLights.h"
 #include "gnomon/gnomon.h"
 
 namespace gnomon::cli {
@@ -36,8 +37,8 @@ void subdivide(Mesh& mesh) {
 // Scene and options for one value of a sweep.
 [[noreturn]] void unknownSweep(const std::string& param) {
     throw Error(ErrorKind::InvalidInput,
-                "--sweep: expected lights, map-size, triangles, cascades, filter or "
-                "caster-detail, got '" +
+                "--sweep: expected lights, local-lights, map-size, triangles, cascades, filter "
+                "or caster-detail, got '" +
                     param + "'");
 }
 
@@ -107,6 +108,13 @@ void applySweep(const std::string& param, const std::string& value, const Scene&
             scene.lights.push_back(l);
         }
         options.lightOnly = -1;
+    } else if (param == "local-lights") {
+        // N spot and point lights of limited range in the open space the view looks into,
+        // instead of the scene's own (LocalLights.h), seen in the same picture.
+        const int n = integer(1, kMaxLocalLights);
+        const float aspect = float(baseOptions.width) / float(std::max(baseOptions.height, 1));
+        scene.lights = placeLocalLights(base, n, aspect, baseOptions.time);
+        options.lightOnly = -1;
     } else if (param == "triangles") {
         // Every triangle split into 4^k by its edge midpoints (k from the multiplier, a power
         // of 4): the same picture and draw calls, more triangles. (Copies of the scene would
@@ -132,6 +140,7 @@ namespace {
 // Each parameter's values when --values is not given.
 std::vector<std::string> defaultValues(const std::string& param) {
     if (param == "lights") return {"1", "2", "4", "8", "16", "32", "64"};
+    if (param == "local-lights") return {"1", "2", "4", "8", "16", "32", "64", "128", "256"};
     if (param == "map-size") return {"256", "512", "1024", "2048", "4096", "8192"};
     if (param == "triangles") return {"1", "4", "16", "64", "256", "1024", "4096"};
     if (param == "cascades") return {"1", "2", "3", "4"};

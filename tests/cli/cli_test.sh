@@ -90,10 +90,32 @@ PY
         fail "sweep.csv header"
     grep -q "<polyline" "$work/s/sweep.svg" || fail "sweep.svg has no lines"
     run bench --scene tutorial-room --sweep colour
-    expect 2 "--sweep: expected lights, map-size, triangles, cascades, filter or caster-detail"
-    run bench --scene tutorial-room --sweep map-size --values 256,big --frames 1 --warmup 0 \
-        --out-dir "$work/s"
-    expect 2 "'big' is not a number"
+    expect 2 "--sweep: expected lights, local-lights, map-size, triangles, cascades, filter or"
+    # Local lights: a sweep's table and CSV, and one value's scene written as a file that
+    # renders (and measures nothing).
+    run bench --scene tutorial-room --size 64x64 --frames 1 --warmup 0 --sweep local-lights \
+        --values 1,4 --out-dir "$work/l"
+    expect 0 "local-lights"
+    [[ $(wc -l <"$work/l/sweep.csv") == 3 ]] || fail "local-lights sweep.csv should have 2 rows"
+    (cd "$work" && run bench --scene tutorial-room --sweep local-lights --values 6 \
+        --write-scene six.json)
+    expect 0 "6 lights"
+    [[ ! -e "$work/bench" ]] || fail "--write-scene made the bench folder"
+    run render --scene "$work/six.json" --size 64x64 --out "$work/six.png"
+    [[ $(cat "$work/code") == 0 && -s "$work/six.png" ]] ||
+        fail "six.json does not render: $(cat "$work/stderr")"
+    [[ $(grep -c '"type": "spot"' "$work/six.json") == 3 ]] || fail "six.json: 3 spot lights"
+    run bench --scene tutorial-room --sweep local-lights --write-scene "$work/all.json"
+    expect 2 "--write-scene needs --sweep and one value in --values, got 9 values"
+    run bench --scene tutorial-room --sweep local-lights --values 300 --frames 1 --warmup 0 \
+        --out-dir "$work/l"
+    expect 2 "--values: local-lights 300 is outside 1..256"
+    # A value refused after others were measured: one error line, and theirs are kept.
+    run bench --scene tutorial-room --size 64x64 --sweep map-size --values 256,big --frames 1 \
+        --warmup 0 --out-dir "$work/big"
+    expect 2 "map-size big: --values: 'big' is not a number (kept the 1 of 2 values finished)"
+    [[ $(grep -c "error" "$work/stderr") == 1 ]] || fail "more than one error line"
+    [[ $(wc -l <"$work/big/sweep.csv") == 2 ]] || fail "the value measured was not kept"
     ;;
 score)
     run score --scene tutorial-room --size 96x96 --out-dir "$work/s"
