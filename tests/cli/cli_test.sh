@@ -114,7 +114,7 @@ PY
     run bench --scene tutorial-room --size 64x64 --sweep map-size --values 256,big --frames 1 \
         --warmup 0 --out-dir "$work/big"
     expect 2 "map-size big: --values: 'big' is not a number (kept the 1 of 2 values finished)"
-    [[ $(grep -c "error" "$work/stderr") == 1 ]] || fail "more than one error line"
+    [[ $(grep -c "^gnomon: error" "$work/stderr") == 1 ]] || fail "more than one error line"
     [[ $(wc -l <"$work/big/sweep.csv") == 2 ]] || fail "the value measured was not kept"
     ;;
 score)
