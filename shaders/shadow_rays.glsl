@@ -1,7 +1,7 @@
 // Shadow rays: a shadowed light's visibility from one ray through a BVH of the scene's casters
 // (bvh_trace.glsl, built by render::RayScene) instead of its map. The hard answer of the
-// light's centre, as the reference traces it (truth::ShadowRays); masked or blended casters
-// block the ray whole. --shadow-rays all: every lookup is a ray (LOOKUP_OF in main.frag.glsl),
+// light's centre, as the reference traces it (truth::ShadowRays); masked and blended casters
+// block it where their texels do (bvhTexelBlocks, render/RayMasks.h). --shadow-rays all: every lookup is a ray (LOOKUP_OF in main.frag.glsl),
 // soft filters get the hard answer too. SHADOW_RAYS_UNCERTAIN (--shadow-rays uncertain): the
 // map's answer where it is sure, a ray's where it is not (raysWhereUnsure). Included by
 // main.frag.glsl after uEye.
