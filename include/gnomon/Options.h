@@ -84,6 +84,10 @@ enum class BlendShadows {
     Coloured,  // light passing the material is tinted: a transmittance map per light beside
                // its depth map, T = (1 - alpha) mix(1, colour, alpha) per blended surface
 };
+// Under BlendShadows::Coloured a blended texel this opaque (alpha 255 of 255) blocks the light
+// as an opaque one does: the shadow pass draws it into the depth maps (alpha_test_vertex.glsl),
+// shadow rays stop at it (render/RayMasks.h) and the reference traces it so (truth/AlphaRays.h).
+inline constexpr float kOpaqueBlendAlpha = 254.5f / 255.0f;
 
 // What a fitted directional (or area) light's map is made to cover.
 enum class FitTo {

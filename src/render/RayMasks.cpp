@@ -10,9 +10,6 @@
 namespace gnomon::render {
 
 namespace {
-// A blended texel this opaque blocks under --blend-shadows coloured, as the shadow pass draws
-// it into the depth maps (alpha_test_vertex.glsl) and the reference traces it.
-constexpr float kOpaqueBlendAlpha = 254.5f / 255.0f;
 // `first` is stored as first / kFirstSplit and first mod kFirstSplit: each part a whole
 // number a float holds exactly.
 constexpr std::size_t kFirstSplit = 4096;

@@ -10,11 +10,12 @@
 // through under half the light), and never under none.
 //
 // Layout. uvs: three RGBA32F texels a triangle in the hierarchy's leaf order, (u0, v0, u1, v1),
-// (u2, v2, threshold, modes), (first, width, height, 0) with the texture coordinates after the
-// material's uvTransform; the texel blocks where its alpha is at least `threshold`;
-// modes = wrapS + 3 wrapT + 9 nearest; `first` the index of the texture's first alpha in
-// `alphas`. alphas: every such texture's alpha, rows top-down, one byte each, four to an RGBA8
-// texel (byte k in texel k / 4, channel k mod 4), texel t at (t mod width, t / width).
+// (u2, v2, threshold, modes), (first / 4096, first mod 4096, width, height) with the texture
+// coordinates after the material's uvTransform; the texel blocks where its alpha is at least
+// `threshold`; modes = wrapS + 3 wrapT + 9 nearest; `first` the index of the texture's first
+// alpha in `alphas`, in two parts that floats hold exactly (bvh_trace.glsl joins them). alphas:
+// every such texture's alpha, rows top-down, one byte each, four to an RGBA8 texel (byte k in texel
+// k / 4, channel k mod 4), texel t at (t mod width, t / width).
 #pragma once
 
 #include <vector>

@@ -27,11 +27,6 @@ struct AlphaSurface {
 glm::vec4 colourAt(const AlphaSurface& a, unsigned prim, float u, float v);
 float alphaAt(const AlphaSurface& a, unsigned prim, float u, float v);
 
-// Under --blend-shadows coloured, a blended surface this opaque (alpha 255 of 255) blocks the
-// light as an opaque one does (the shadow pass draws such texels into the depth maps:
-// shaders/alpha_test_vertex.glsl); below it, it tints the light.
-constexpr float kOpaqueBlendAlpha = 254.5f / 255.0f;
-
 // What one blended surface of colour `c` and opacity `alpha` passes under
 // --blend-shadows coloured: the share 1 - alpha, filtered by its colour as strongly as it is
 // opaque (white passes 1 - alpha, as dithered does; alpha 0 passes all, alpha 1 nothing).

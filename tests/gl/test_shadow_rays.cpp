@@ -18,7 +18,7 @@ RenderOptions traced(const Scene& s, int size) {
     return withRays(s, size, ShadowRayMode::All);
 }
 
-// At most 0.005 % of the pixel x light pairs, plus one pair.
+// The bound for every lookup traced: the share for `all`, plus one pair.
 void expectNearlyExact(const ScoreResult& r) {
     expectWrongAtMost(r, 0.00005, 1.0);
 }

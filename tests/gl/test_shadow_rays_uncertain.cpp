@@ -16,7 +16,7 @@ RenderOptions uncertain(const Scene& s, int size) {
     return withRays(s, size, ShadowRayMode::Uncertain);
 }
 
-// The bound for uncertain rays: 0.02 % of the pixel x light pairs, plus one pair.
+// The bound for rays where the map is unsure: the share for `uncertain`, plus one pair.
 void expectWithinBound(const ScoreResult& r) {
     expectWrongAtMost(r, 0.0002, 1.0);
 }
