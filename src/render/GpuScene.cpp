@@ -11,6 +11,7 @@
 #include "gnomon/Error.h"
 #include "scene/MeshTopology.h"
 #include "scene/SceneUtil.h"
+#include "shadow/MeshPieces.h"
 #include "shadow/StandIn.h"
 
 namespace gnomon::render {
@@ -75,8 +76,26 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     // per geometry: a new stand-in detail uploads again but keeps them.
     if (mSplits.size() != scene.meshes.size()) {
         mSplits.clear();
-        for (const Mesh& m : scene.meshes)
-            mSplits.push_back(splitForCulling(m));
+        mPieces.clear();
+        // Meshes an object blends with keep their triangles' order: it is the order they
+        // blend in.
+        std::vector<bool> blended(scene.meshes.size(), false);
+        for (const Object& o : scene.objects) {
+            if (o.mesh < blended.size() &&
+                scene.materials[o.material].alphaMode == AlphaMode::Blend) {
+                blended[o.mesh] = true;
+            }
+        }
+        for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+            mSplits.push_back(splitForCulling(scene.meshes[m]));
+            CullingSplit& split = mSplits.back();
+            if (blended[m]) {
+                mPieces.push_back({{0, std::uint32_t(split.indices.size()), false, {}}});
+            } else {
+                mPieces.push_back(shadow::cutIntoPieces(scene.meshes[m].positions, split.indices,
+                                                        split.closedIndices));
+            }
+        }
     }
     std::vector<GpuVertex> vertices;
     std::vector<std::uint32_t> indices;
@@ -201,7 +220,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     const bool resized = mObjectData.size() != n;
     mObjectData.resize(n);
     mCasts.resize(n);
-    mItems.resize(n);
+    mItems.clear();
     bool dataChanged = resized;
     mBounds = Aabb();
     mCasterBounds = Aabb();
@@ -243,7 +262,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
         const CullingSplit& split = mSplits[o.mesh];
         const std::string_view record(reinterpret_cast<const char*>(&mObjectData[i]),
                                       sizeof(GpaObject));
-        mItems[i] = {
+        DrawItem item{
             std::uint32_t(i), GLsizei(mesh.indices.size()), mMeshRanges[o.mesh].first,
             mat.doubleSided,
             // On solids wound outwards in the world, as culling in a shadow pass needs.
@@ -254,7 +273,6 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
             mat.alphaMode,
             mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
             mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};
-        DrawItem& item = mItems[i];
         item.specular = mat.specular > 0.0f && !mat.unlit;
         item.standInFirstIndexByte = standIns[o.mesh].first;
         item.standInIndexCount = standIns[o.mesh].second;
@@ -264,6 +282,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
                                        : item.closedIndexCount == item.indexCount
                                            ? item.standInIndexCount
                                            : 0;
+        addItems(item, mPieces[o.mesh], g.worldFromModel);
     }
     // Opaque first, then masked, then blended; by texture within each (binds once each).
     std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {
@@ -304,6 +323,40 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     mSyncedRevision = scene.revision.value();
     mSyncedSeconds = seconds;
     return changed;
+}
+
+// `whole` as one item, or, when its mesh was cut into pieces (shadow/MeshPieces.h) and it
+// does not blend (blending follows the mesh's order, which pieces sorted by depth would not),
+// one item per piece: each its own index range and world box, so a map culls the pieces
+// beyond its volume. A simplified stand-in is not cut: the first piece draws all of it and
+// is bounded by the whole object.
+void GpuScene::addItems(const DrawItem& whole, const std::vector<shadow::MeshPiece>& pieces,
+                        const glm::mat4& worldFromModel) {
+    if (pieces.size() <= 1 || whole.alphaMode == AlphaMode::Blend) {
+        mItems.push_back(whole);
+        return;
+    }
+    const bool ownStandIn = whole.standInFirstIndexByte == whole.firstIndexByte;
+    const bool solid = whole.closedIndexCount > 0;  // the object's solids face outwards
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+        const shadow::MeshPiece& piece = pieces[p];
+        DrawItem item = whole;
+        item.indexCount = GLsizei(piece.indexCount);
+        item.firstIndexByte = whole.firstIndexByte + piece.firstIndex * sizeof(std::uint32_t);
+        item.closedIndexCount = solid && piece.closed ? item.indexCount : 0;
+        item.bounds = piece.bounds.transformed(worldFromModel);
+        if (ownStandIn) {
+            item.standInFirstIndexByte = item.firstIndexByte;
+            item.standInIndexCount = item.indexCount;
+            item.standInClosedIndexCount = item.closedIndexCount;
+        } else if (p == 0) {
+            item.bounds = whole.bounds;
+        } else {
+            item.standInIndexCount = 0;
+            item.standInClosedIndexCount = 0;
+        }
+        mItems.push_back(item);
+    }
 }
 
 std::string objectRecordsOverflow(std::size_t objects, std::size_t maxTexels) {

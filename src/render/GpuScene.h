@@ -20,6 +20,7 @@
 #include "gnomon/Scene.h"
 #include "scene/MeshTopology.h"
 #include "shadow/FramePlan.h"
+#include "shadow/MeshPieces.h"
 #include "shadow/StandIn.h"
 
 namespace gnomon::render {
@@ -147,6 +148,8 @@ private:
     bool makeStandIns(const Scene& scene, float casterDetail);
     void uploadTextures(const Scene& scene);
     bool uploadDrawCommands();
+    void addItems(const DrawItem& whole, const std::vector<shadow::MeshPiece>& pieces,
+                  const glm::mat4& worldFromModel);
     // Where the command drawing `part` of item `item`, `instances` times, lies in mCommands.
     std::size_t commandIndex(std::size_t item, GLsizei instances, bool standIns, Part part) const {
         const std::size_t set = (standIns ? 3 : 0) + std::size_t(part);
@@ -191,6 +194,8 @@ private:
     // Per mesh, for the current geometry: its indices in the order uploaded, the closed
     // ones first (splitForCulling).
     std::vector<CullingSplit> mSplits;
+    // Per mesh: its pieces (one when it is small or an object blends with it).
+    std::vector<std::vector<shadow::MeshPiece>> mPieces;
     Aabb mBounds, mCasterBounds;
     bool mHasUnlit = false, mHasBlended = false, mHasBlendedCasters = false;
     std::uint64_t mRevision = 0;

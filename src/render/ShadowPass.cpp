@@ -182,17 +182,16 @@ void ShadowPass::drawCasters(const GpuScene& scene, const shadow::FramePlan& pla
                              GLsizei instances, const SetUniforms& setUniforms) {
     const std::span<const std::uint32_t> casters(plan.casters().data() + light.firstCaster,
                                                  light.casterCount);
+    const DrawItem* items = scene.items().data();
     mHoldsLight.resize(scene.items().size());
-    for (std::uint32_t k = 0; k < light.casterCount; ++k) {
-        mHoldsLight[scene.items()[casters[k]].object] =
-            char(plan.castersHoldLight()[light.firstCaster + k]);
-    }
+    for (std::uint32_t k = 0; k < light.casterCount; ++k)
+        mHoldsLight[casters[k]] = char(plan.castersHoldLight()[light.firstCaster + k]);
     // Stand-in casters always: at --caster-detail 1 they are the full meshes.
     drawDepthRuns(
         scene, casters, instances, /*standIns=*/true,
         [&](const DrawItem& item) { return alphaTestedCaster(item, options); },
         [&](const DrawItem& item) {
-            return casterCull(item, options, mHoldsLight[item.object] != 0);
+            return casterCull(item, options, mHoldsLight[std::size_t(&item - items)] != 0);
         },
         [&](bool alpha) {
             gl::use(program(variant, alpha, options.blendShadows == BlendShadows::Coloured));

@@ -30,11 +30,12 @@ LightCameraFrame fitFrustum(const glm::mat4& lightFromWorld, glm::vec2 lo, glm::
     const bool fromBoxes = !(farthest > 0.0f);
     for (std::size_t i = 0; fromBoxes && i < boxes.receivers.size(); ++i) {
         const Aabb& r = boxes.receivers[i];
-        if (outsideClipVolume(r, sides, true)) continue;
+        if (boxes.beyondReach(r) || outsideClipVolume(r, sides, true)) continue;
         float nearest = 0.0f, far = 0.0f;
         depthRange(r, lightFromWorld, nearest, far);
         farthest = std::max(farthest, far);
     }
+    if (boxes.reach > 0.0f) farthest = std::min(farthest, boxes.reach);
     if (!(farthest > 0.0f)) return f;
     // Near at the nearest point of a caster inside the pyramid (not the nearest corner of
     // its box: a floor reaching behind the light would pull near to ~0 and waste the depth
@@ -43,7 +44,7 @@ LightCameraFrame fitFrustum(const glm::mat4& lightFromWorld, glm::vec2 lo, glm::
     const std::array<glm::vec3, 8> volumeCorners = frustumCorners(volume);
     float nearestCaster = std::numeric_limits<float>::max();
     for (const Aabb& c : *boxes.casters) {
-        if (c.empty() || outsideClipVolume(c, volume, false)) continue;
+        if (c.empty() || boxes.beyondReach(c) || outsideClipVolume(c, volume, false)) continue;
         const ClippedPoints inside = clipToFrustum(c, volume, volumeCorners);
         for (int i = 0; i < inside.count; ++i) {
             const float d = -(lightFromWorld * glm::vec4(inside.points[size_t(i)], 1.0f)).z;
@@ -72,9 +73,11 @@ LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int m
     f.valid = false;
     float farthest = 0.0f;
     for (const Aabb& r : boxes.receivers) {
+        if (boxes.beyondReach(r)) continue;
         for (const glm::vec3& c : r.corners())
             farthest = std::max(farthest, glm::length(c - position));
     }
+    if (boxes.reach > 0.0f) farthest = std::min(farthest, boxes.reach);
     if (!(farthest > 0.0f)) return f;
     // A face's depth is the distance along its axis, the largest of |dx|, |dy|, |dz|, which is
     // as small as 1/sqrt(3) of the Euclidean distance towards a face's corners. A near plane
@@ -159,16 +162,16 @@ LightCameraFrame fitWindow(const glm::mat4& lightFromWorld, const SampleWindow& 
 // out lies beside every caster seen from the light, so it is lit, as a lookup outside the map
 // reads it (a model on a wide ground under a close lamp: the ground the view sees around the
 // model's shadow took most of the map). False when no caster reaches into the window.
-bool narrowToCasters(const glm::mat4& lightFromWorld, SampleWindow& window,
-                     const std::vector<Aabb>& casters, float marginTan) {
+bool narrowToCasters(const glm::mat4& lightFromWorld, SampleWindow& window, const FitBoxes& boxes,
+                     float marginTan) {
     const float far = window.farthest, near = far * 1e-4f;  // fitFrustum clamps at 1e-3
     const glm::mat4 volume = glm::frustum(window.lo.x * near, window.hi.x * near,
                                           window.lo.y * near, window.hi.y * near, near, far) *
                              lightFromWorld;
     const std::array<glm::vec3, 8> corners = frustumCorners(volume);
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const Aabb& c : casters) {
-        if (c.empty() || outsideClipVolume(c, volume, false)) continue;
+    for (const Aabb& c : *boxes.casters) {
+        if (c.empty() || boxes.beyondReach(c) || outsideClipVolume(c, volume, false)) continue;
         const ClippedPoints inside = clipToFrustum(c, volume, corners);
         for (int i = 0; i < inside.count; ++i) {
             const glm::vec3 v =
@@ -203,7 +206,7 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
                           const FitBoxes& boxes, int mapSize) {
     glm::vec3 axis(0.0f);
     SampleWindow window;
-    if (!samples || !samplesDirection(*samples, position, axis))
+    if (!samples || !samplesDirection(*samples, position, axis, boxes.reach))
         return fitCube(position, boxes, mapSize);
     // Following frames keep the held frustum, axis and all, while it still holds the view:
     // the mean direction drifts with every camera move, and a new axis is a new texel grid.
@@ -211,8 +214,8 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
     if (held && held->valid &&
         glm::length(glm::vec3(held->rotation * glm::vec4(position, 1.0f))) <=
             1e-5f * (1.0f + glm::length(position)) &&
-        samplesWindow(*samples, held->rotation, window) &&
-        narrowToCasters(held->rotation, window, *boxes.casters, windowMargin(window, mapSize))) {
+        samplesWindow(*samples, held->rotation, window, nullptr, boxes.reach) &&
+        narrowToCasters(held->rotation, window, boxes, windowMargin(window, mapSize))) {
         const LightCameraFrame f = fitWindow(held->rotation, window, boxes, mapSize, 2.0f, true);
         if (f.valid) return f;
     }
@@ -224,8 +227,8 @@ LightCameraFrame fitPoint(const glm::vec3& position, const ViewSamples* samples,
         axis = {std::cos(pitch) * std::sin(yaw), std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
     }
     const glm::mat4 lightFromWorld = safeLookAt(position, position + axis, glm::vec3(0, 1, 0));
-    if (!samplesWindow(*samples, lightFromWorld, window) ||
-        !narrowToCasters(lightFromWorld, window, *boxes.casters, windowMargin(window, mapSize))) {
+    if (!samplesWindow(*samples, lightFromWorld, window, nullptr, boxes.reach) ||
+        !narrowToCasters(lightFromWorld, window, boxes, windowMargin(window, mapSize))) {
         return fitCube(position, boxes, mapSize);
     }
     const LightCameraFrame f = fitWindow(lightFromWorld, window, boxes, mapSize, 2.0f);
@@ -247,8 +250,8 @@ LightCameraFrame fitPointFace(const glm::vec3& position, int face, float marginT
     const float t = 1.0f + std::max(marginTan, 0.0f);
     const SampleWindow faceWindow{glm::vec2(-t), glm::vec2(t), 0.0f};
     SampleWindow window;
-    if (samples && samplesWindow(*samples, lightFromWorld, window, &faceWindow)) {
-        if (!narrowToCasters(lightFromWorld, window, *boxes.casters, marginTan)) {
+    if (samples && samplesWindow(*samples, lightFromWorld, window, &faceWindow, boxes.reach)) {
+        if (!narrowToCasters(lightFromWorld, window, boxes, marginTan)) {
             LightCameraFrame none;
             none.valid = false;  // nothing the view sees through this face can be shadowed
             return none;
@@ -270,9 +273,8 @@ LightCameraFrame fitSpot(const glm::vec3& position, const glm::vec3& axis, float
     const glm::mat4 lightFromWorld = safeLookAt(position, position + axis, glm::vec3(0, 1, 0));
     const SampleWindow cone{glm::vec2(-t), glm::vec2(t), 0.0f};
     SampleWindow window;
-    if (samples && samplesWindow(*samples, lightFromWorld, window, &cone)) {
-        if (!narrowToCasters(lightFromWorld, window, *boxes.casters,
-                             windowMargin(window, mapSize))) {
+    if (samples && samplesWindow(*samples, lightFromWorld, window, &cone, boxes.reach)) {
+        if (!narrowToCasters(lightFromWorld, window, boxes, windowMargin(window, mapSize))) {
             LightCameraFrame none;
             none.valid = false;  // no caster can shadow what the view sees in the cone: no map
             return none;

@@ -20,6 +20,13 @@ struct FitBoxes {
     const std::vector<Aabb>* casters = nullptr;
     bool snap = false;           // the fit follows the view: keep it steady
     HeldExtent* held = nullptr;  // with snap: the extent kept from the previous frame
+    // A spot's or point light's range (0: none) around `apex`, its position: receivers and
+    // samples beyond it are unlit and casters beyond it shadow nothing lit, so neither counts.
+    float reach = 0.0f;
+    glm::vec3 apex{0.0f};
+    bool beyondReach(const Aabb& box) const {
+        return reach > 0.0f && glm::length(glm::clamp(apex, box.min, box.max) - apex) > reach;
+    }
 };
 
 // Depth range of the bounds' corners in front of a light camera (view looks down -z).

@@ -85,7 +85,8 @@ struct ShadowedLight {
 
 // What a light's map sees, for culling what it need not draw: its clip volume (casters in
 // front of the near plane count when the depth is clamped), or its cube's: within the far
-// sphere and, when only some faces are drawn, inside one of theirs.
+// sphere and, when only some faces are drawn, inside one of theirs; and within the light's
+// range (LightCameraFrame::reach).
 class LightVolume {
 public:
     explicit LightVolume(const ShadowedLight& light)
@@ -99,6 +100,9 @@ public:
         }
     }
     bool outside(const Aabb& box) const {
+        const float reach = mLight.frame.reach;
+        if (reach > 0.0f && glm::length(glm::clamp(mEye, box.min, box.max) - mEye) > reach)
+            return true;
         if (!mCube) return outsideClipVolume(box, mClipFromWorld, mLight.depthClamp);
         if (outsideCube(box, mLight.frame)) return true;
         for (int i = 0; i < mFaceCount; ++i) {

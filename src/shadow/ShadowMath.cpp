@@ -255,6 +255,11 @@ float cubeStoredDepth(const glm::vec3& d, float near, float far) {
     return 0.5f * ndc + 0.5f;
 }
 
+float lightReach(const Light& light) {
+    const bool local = light.type == LightType::Point || light.type == LightType::Spot;
+    return local && light.range > 0.0f ? light.range : 0.0f;
+}
+
 LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const FitScene& scene,
                                   int mapSize, HeldExtent* held) {
     const ShadowCamera& c = light.shadowCamera;
@@ -269,6 +274,9 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
     const bool parallel = light.type == LightType::Directional || light.type == LightType::Area;
     FitBoxes boxes = visibleReceivers(scene, !(parallel && scene.samples));
     boxes.held = held;
+    boxes.reach = lightReach(light);
+    boxes.apex = light.position;
+    LightCameraFrame frame;
     switch (light.type) {
         case LightType::Directional:
         case LightType::Area:
@@ -278,14 +286,17 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
                                    receiversInLight(scene, boxes, light.direction, 0.0f, kNoEnd),
                                    boxes, mapSize);
         case LightType::Spot:
-            return fit::fitSpot(
-                light.position, glm::normalize(light.direction),
-                glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)), scene.samples,
-                boxes, mapSize);
+            frame =
+                fit::fitSpot(light.position, glm::normalize(light.direction),
+                             glm::radians(2.0f * std::clamp(light.outerConeDegrees, 1.0f, 89.0f)),
+                             scene.samples, boxes, mapSize);
+            break;
         case LightType::Point:
-            return fit::fitPoint(light.position, scene.samples, boxes, mapSize);
+            frame = fit::fitPoint(light.position, scene.samples, boxes, mapSize);
+            break;
     }
-    return {};
+    frame.reach = boxes.reach;
+    return frame;
 }
 
 LightCameraFrame sampledCascadeFrame(const glm::vec3& direction, const FitScene& scene,
@@ -314,8 +325,9 @@ LightCameraFrame sizedLightCameraFrame(const Light& light, const ShadowOptions& 
     // A cube draws only the faces the view's pixels look up (a face spans 90 degrees over
     // `size` texels, each at most 2 / size radians wide, at its centre).
     if (frame.valid && frame.kind == FrameKind::Cube && scene.samples && !scene.samples->empty()) {
-        const std::uint8_t seen = cubeFacesSeen(
-            *scene.samples, light.position, cubeLookupReachTexels(options) * 2.0f / float(size));
+        const std::uint8_t seen =
+            cubeFacesSeen(*scene.samples, light.position,
+                          cubeLookupReachTexels(options) * 2.0f / float(size), lightReach(light));
         if (seen) frame.faces = seen;
     }
     return frame;
@@ -325,10 +337,15 @@ LightCameraFrame pointFaceFrame(const Light& light, int face, const ShadowOption
                                 const FitScene& scene, int mapSize, HeldExtent* held) {
     FitBoxes boxes = visibleReceivers(scene, true);
     boxes.held = held;
+    boxes.reach = lightReach(light);
+    boxes.apex = light.position;
     // The face's texels at its rim are 2 / mapSize tan units wide, as a cube's: a lookup
     // there reads as far past the rim as a cube's lookup reads into the next face.
     const float margin = cubeLookupReachTexels(options) * 2.0f / float(std::max(mapSize, 1));
-    return fit::fitPointFace(light.position, face, margin, scene.samples, boxes, mapSize);
+    LightCameraFrame frame =
+        fit::fitPointFace(light.position, face, margin, scene.samples, boxes, mapSize);
+    frame.reach = boxes.reach;
+    return frame;
 }
 
 float cubeLookupReachTexels(const ShadowOptions& options) {

@@ -34,6 +34,10 @@ struct LightCameraFrame {
     // along the view axis (multiply by the distance).
     float texelWorldSize = 0.0f;
     bool valid = true;  // false: nothing to shadow (empty scene bounds)
+    // Spot and point lights with a range: how far from the light anything is lit. A caster
+    // wholly farther shadows nothing lit (the segment from the light to a lit point lies in
+    // the range's sphere), so maps neither reach nor draw past it. 0: unbounded.
+    float reach = 0.0f;
     // Cube frames: the faces drawn, bit f for face f; the others hold no pixel the view drew
     // (cubeFacesSeen, ViewSamples.h), and no lookup reads them.
     std::uint8_t faces = kAllCubeFaces;
@@ -84,6 +88,10 @@ struct HeldExtent {
     float zNear = 0.0f, zFar = 0.0f;
 };
 constexpr float kHoldSlack = 1.25f;
+
+// A spot's or point light's range, where one is set: nothing beyond it is lit (0: unbounded,
+// and for every other kind of light).
+float lightReach(const Light& light);
 
 // The light camera of `light` for a frame: Manual and Course use the light's numbers; Fit
 // holds the visible receivers that casters can shadow, and those casters:

@@ -10,6 +10,35 @@
 
 namespace gnomon::shadow {
 
+namespace {
+
+// Nearest distance from the origin to the segment a..b.
+float distanceToSegment(const glm::vec3& a, const glm::vec3& b) {
+    const glm::vec3 d = b - a;
+    const float dd = glm::dot(d, d);
+    const float t = dd > 0.0f ? std::clamp(-glm::dot(a, d) / dd, 0.0f, 1.0f) : 0.0f;
+    return glm::length(a + t * d);
+}
+
+// Does sample i, with the other end of its cell's segment when it has one, lie wholly farther
+// than `reach` from `apex` (a spot's or point light's range: unlit there)? Never when reach <= 0.
+bool beyondReach(const ViewSamples& samples, std::size_t i, const glm::vec3& apex, float reach) {
+    if (!(reach > 0.0f)) return false;
+    const std::size_t n = samples.points.size();
+    std::size_t j = i;
+    if (i + 1 < n && i < samples.farthestNext.size() && samples.farthestNext[i]) {
+        j = i + 1;
+    } else if (i > 0 && i - 1 < samples.farthestNext.size() && samples.farthestNext[i - 1]) {
+        j = i - 1;
+    }
+    const glm::vec4& p = samples.points[i];
+    const glm::vec4& q = samples.points[j];
+    const float pad = std::max(samples.pad(p.w), samples.pad(q.w));
+    return distanceToSegment(glm::vec3(p) - apex, glm::vec3(q) - apex) - pad > reach;
+}
+
+}  // namespace
+
 SampleGrid sampleGrid(int width, int height, int limit) {
     SampleGrid g;
     g.size = {std::max(1, width), std::max(1, height)};
@@ -86,9 +115,12 @@ Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld,
     return box;
 }
 
-bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction) {
+bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction,
+                      float reach) {
     glm::dvec3 sum(0.0);
-    for (const glm::vec4& p : samples.points) {
+    for (std::size_t i = 0; i < samples.points.size(); ++i) {
+        const glm::vec4& p = samples.points[i];
+        if (beyondReach(samples, i, apex, reach)) continue;
         const glm::vec3 d = glm::vec3(p) - apex;
         const float length = glm::length(d);
         if (!(length > samples.pad(p.w))) return false;
@@ -100,12 +132,15 @@ bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::ve
 }
 
 bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
-                   SampleWindow& window, const SampleWindow* limit) {
+                   SampleWindow& window, const SampleWindow* limit, float reach) {
     window.lo = glm::vec2(std::numeric_limits<float>::max());
     window.hi = -window.lo;
     window.farthest = 0.0f;
     bool any = false;
-    for (const glm::vec4& p : samples.points) {
+    const glm::vec3 apex = reach > 0.0f ? glm::vec3(glm::inverse(lightFromWorld)[3]) : glm::vec3(0);
+    for (std::size_t i = 0; i < samples.points.size(); ++i) {
+        const glm::vec4& p = samples.points[i];
+        if (beyondReach(samples, i, apex, reach)) continue;
         const glm::vec3 v = glm::vec3(lightFromWorld * glm::vec4(glm::vec3(p), 1.0f));
         const float depth = -v.z, pad = samples.pad(p.w);
         // Wholly behind the camera's plane: outside any limit (a cone narrower than 180°).
@@ -216,24 +251,20 @@ bool segmentMeetsFace(glm::vec3 a, glm::vec3 b, int face, float half) {
     return t0 <= t1;
 }
 
-// Nearest distance from the origin to the segment a..b.
-float distanceToSegment(const glm::vec3& a, const glm::vec3& b) {
-    const glm::vec3 d = b - a;
-    const float dd = glm::dot(d, d);
-    const float t = dd > 0.0f ? std::clamp(-glm::dot(a, d) / dd, 0.0f, 1.0f) : 0.0f;
-    return glm::length(a + t * d);
-}
-
 }  // namespace
 
 std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPosition,
-                           float marginRadians) {
+                           float marginRadians, float reach) {
     // Past a tenth of a radian the widening below stops being a bound.
     constexpr float kMaxAngle = 0.1f;
     if (!(marginRadians >= 0.0f && marginRadians < kMaxAngle)) return kAllCubeFaces;
     std::uint8_t faces = 0;
     const std::size_t n = samples.points.size();
     for (std::size_t i = 0; i < n; ++i) {
+        if (beyondReach(samples, i, lightPosition, reach)) {
+            if (i < samples.farthestNext.size() && samples.farthestNext[i]) ++i;  // its pair too
+            continue;
+        }
         const glm::vec3 a = glm::vec3(samples.points[i]) - lightPosition;
         glm::vec3 b = a;
         float pad = samples.pad(samples.points[i].w);

@@ -62,8 +62,10 @@ Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld,
 
 // For fitting one frustum from a point light over what the view sees (instead of a cube):
 // the samples' mean direction from `apex`; false when there is none or one lies within its
-// pad of the apex.
-bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction);
+// pad of the apex. With `reach` > 0 (a light's range), samples wholly farther from the apex
+// are left out: they are unlit (here and in the two functions below).
+bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction,
+                      float reach = 0.0f);
 // The window [lo, hi] in tan units (x / -z, y / -z) of the camera `lightFromWorld` (a
 // look-at) that holds every sample with its pad, and the largest depth -z among them. False
 // when there is no sample or some sample's pad reaches the camera's plane z = 0 (no window
@@ -75,7 +77,7 @@ struct SampleWindow {
     float farthest = 0.0f;
 };
 bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
-                   SampleWindow& window, const SampleWindow* limit = nullptr);
+                   SampleWindow& window, const SampleWindow* limit = nullptr, float reach = 0.0f);
 
 struct LightCameraFrame;
 
@@ -86,7 +88,7 @@ struct LightCameraFrame;
 // them. All six when a pad or the margin is too wide for the test to stay a bound.
 constexpr std::uint8_t kAllCubeFaces = 0x3F;  // bits 0 to 5
 std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPosition,
-                           float marginRadians);
+                           float marginRadians, float reach = 0.0f);
 
 // The share (0..1) of a light camera's map that the samples whose view depth lies in
 // [depthFrom, depthTo] land on: the map split into cells x cells squares (a cube's faces
