@@ -284,39 +284,10 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
                                            : 0;
         addItems(item, mPieces[o.mesh], g.worldFromModel);
     }
-    // Opaque first, then masked, then blended; by texture within each (binds once each).
-    std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {
-        return std::make_tuple(int(a.alphaMode), a.texture, a.doubleSided) <
-               std::make_tuple(int(b.alphaMode), b.texture, b.doubleSided);
-    });
-    mPlanItems.resize(mItems.size());
-    for (std::size_t i = 0; i < mItems.size(); ++i) {
-        const DrawItem& d = mItems[i];
-        mPlanItems[i] = {d.bounds,         d.dataHash, d.object,   d.alphaMode,
-                         d.indexCount > 0, d.casts,    d.receives, d.closedIndexCount > 0};
-    }
+    orderItems();
     if (uploadDrawCommands()) changed = true;
     if (dataChanged) {
-        const float* records = n ? &mObjectData[0].worldFromModel[0][0] : nullptr;
-        if (!gl::activeCaps().textureBuffers) {
-            // ES: rows of kObjectsPerRow records in a 2D texture (scene_data.glsl).
-            const int rowTexels = int(gl::kObjectsPerRow * kObjectTexels);
-            if (mObjectCount != n || !mObjectTexels) {
-                checkObjectTexels(n);
-                mObjectTexels =
-                    gl::Texture::texelRows("scene objects", records, n * kObjectTexels, rowTexels);
-            } else if (n > 0) {
-                mObjectTexels.writeTexelRows(records, n * kObjectTexels);
-            }
-        } else if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
-            checkObjectTexels(n);
-            mObjects = gl::Buffer("scene objects", n * sizeof(GpaObject), mObjectData.data(),
-                                  GL_DYNAMIC_STORAGE_BIT);
-            mObjectTexels = gl::Texture::bufferView("scene objects", mObjects, GL_RGBA32F);
-        } else {
-            mObjects.update(0, n * sizeof(GpaObject), mObjectData.data());
-        }
-        mObjectCount = n;
+        uploadObjectRecords(n);
         changed = true;
     }
     if (changed) ++mRevision;
@@ -357,6 +328,46 @@ void GpuScene::addItems(const DrawItem& whole, const std::vector<shadow::MeshPie
         }
         mItems.push_back(item);
     }
+}
+
+// Opaque first, then masked, then blended; by texture within each (binds once each). And
+// the plan's copy of them.
+void GpuScene::orderItems() {
+    std::stable_sort(mItems.begin(), mItems.end(), [](const DrawItem& a, const DrawItem& b) {
+        return std::make_tuple(int(a.alphaMode), a.texture, a.doubleSided) <
+               std::make_tuple(int(b.alphaMode), b.texture, b.doubleSided);
+    });
+    mPlanItems.resize(mItems.size());
+    for (std::size_t i = 0; i < mItems.size(); ++i) {
+        const DrawItem& d = mItems[i];
+        mPlanItems[i] = {d.bounds,         d.dataHash, d.object,   d.alphaMode,
+                         d.indexCount > 0, d.casts,    d.receives, d.closedIndexCount > 0};
+    }
+}
+
+// The object records, to a buffer texture (ES: rows of a 2D texture), remade when their count
+// changed.
+void GpuScene::uploadObjectRecords(std::size_t n) {
+    const float* records = n ? &mObjectData[0].worldFromModel[0][0] : nullptr;
+    if (!gl::activeCaps().textureBuffers) {
+        // ES: rows of kObjectsPerRow records in a 2D texture (scene_data.glsl).
+        const int rowTexels = int(gl::kObjectsPerRow * kObjectTexels);
+        if (mObjectCount != n || !mObjectTexels) {
+            checkObjectTexels(n);
+            mObjectTexels =
+                gl::Texture::texelRows("scene objects", records, n * kObjectTexels, rowTexels);
+        } else if (n > 0) {
+            mObjectTexels.writeTexelRows(records, n * kObjectTexels);
+        }
+    } else if (mObjects.size() != n * sizeof(GpaObject) || !mObjects) {
+        checkObjectTexels(n);
+        mObjects = gl::Buffer("scene objects", n * sizeof(GpaObject), mObjectData.data(),
+                              GL_DYNAMIC_STORAGE_BIT);
+        mObjectTexels = gl::Texture::bufferView("scene objects", mObjects, GL_RGBA32F);
+    } else {
+        mObjects.update(0, n * sizeof(GpaObject), mObjectData.data());
+    }
+    mObjectCount = n;
 }
 
 std::string objectRecordsOverflow(std::size_t objects, std::size_t maxTexels) {

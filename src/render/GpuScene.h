@@ -148,6 +148,8 @@ private:
     bool makeStandIns(const Scene& scene, float casterDetail);
     void uploadTextures(const Scene& scene);
     bool uploadDrawCommands();
+    void uploadObjectRecords(std::size_t n);
+    void orderItems();
     void addItems(const DrawItem& whole, const std::vector<shadow::MeshPiece>& pieces,
                   const glm::mat4& worldFromModel);
     // Where the command drawing `part` of item `item`, `instances` times, lies in mCommands.
