@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "BenchSweep.h"
+#include "LocalLights.h"
 #include "OutputSet.h"
 #include "Progress.h"
 #include "SvgPlot.h"
@@ -39,6 +40,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
     cmd->add_flag("--static", args.staticMaps,
                   "keep unchanged shadow maps between frames (default: every frame redraws "
                   "every map, as when lights move)");
+    cmd->add_flag("--moving-lights", args.movingLights,
+                  "move every spot and point light a little each frame (a small circle), so "
+                  "every map changes and --map-redraws decides how many are drawn again");
     cmd->add_option("--sweep", args.sweep,
                     "vary one parameter: lights (1..64 spot lights), local-lights (1..256 spot "
                     "and point lights of limited range in the open space the view looks into, "
@@ -100,6 +104,7 @@ struct Run {
     std::uint64_t shadowTriangles = 0, mainTriangles = 0;
     std::size_t shadowBytes = 0;
     int maps = 0, mapSize = 0;
+    double mapsDrawn = 0.0, mapsWaiting = 0.0;  // a frame's, the median
     int momentPasses = 0;         // the moment filters' passes in the last frame measured
     int transmittancePasses = 0;  // coloured shadows' transmittance maps drawn, the same
 };
@@ -108,10 +113,12 @@ struct Run {
 Spread untimedFrames(Renderer& renderer, const Scene& scene, const RenderOptions& options,
                      const BenchArgs& args) {
     std::vector<double> ms;
+    Scene moved = args.movingLights ? scene : Scene{};
     for (int i = 0; i < args.warmup + args.frames; ++i) {
-        if (!args.staticMaps) renderer.invalidateShadowMaps();
+        if (!args.staticMaps && !args.movingLights) renderer.invalidateShadowMaps();
+        if (args.movingLights) moveLights(scene, moved, i);
         const auto start = std::chrono::steady_clock::now();
-        renderer.render(scene, options);
+        renderer.render(args.movingLights ? moved : scene, options);
         const auto stop = std::chrono::steady_clock::now();
         if (i >= args.warmup)
             ms.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
@@ -124,15 +131,17 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
     Run run;
     renderer.setPassTiming(true);
     std::map<std::string, std::vector<double>> perPass;
-    std::vector<double> timedFrame, shadow, main, overFloor;
+    std::vector<double> timedFrame, shadow, main, overFloor, drawn, waiting;
     std::atomic<int> framesDone{0};
     const int total = args.warmup + args.frames;
     const Activity activity(label, [&] { return double(framesDone.load()) / double(total); });
+    Scene moved = args.movingLights ? scene : Scene{};
     for (int i = 0; i < total; ++i, ++framesDone) {
         checkInterrupt(label);
-        if (!args.staticMaps) renderer.invalidateShadowMaps();
+        if (!args.staticMaps && !args.movingLights) renderer.invalidateShadowMaps();
+        if (args.movingLights) moveLights(scene, moved, i);
         const auto start = std::chrono::steady_clock::now();
-        renderer.render(scene, options);
+        renderer.render(args.movingLights ? moved : scene, options);
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
@@ -156,12 +165,16 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
         run.mainTriangles = stats.mainTriangles;
         run.shadowBytes = stats.shadowMapBytes;
         run.maps = stats.shadowMaps;
+        drawn.push_back(double(stats.shadowPasses));
+        waiting.push_back(double(stats.shadowMapsWaiting));
         run.momentPasses = stats.momentPasses;
         run.transmittancePasses = stats.transmittancePasses;
     }
     for (PassResult& p : run.passes)
         p.ms = spreadOf(perPass[p.name]);
     run.timedFrame = spreadOf(timedFrame);
+    run.mapsDrawn = spreadOf(drawn).median;
+    run.mapsWaiting = spreadOf(waiting).median;
     run.shadow = spreadOf(shadow);
     run.main = spreadOf(main);
     if (!overFloor.empty()) run.mainOverFloor = spreadOf(overFloor).median;
@@ -215,6 +228,8 @@ nlohmann::json runJson(const Run& r) {
             {"main_over_floor", r.mainOverFloor},
             {"map_size", r.mapSize},
             {"maps", r.maps},
+            {"maps_drawn", r.mapsDrawn},
+            {"maps_waiting", r.mapsWaiting},
             {"shadow_map_bytes", r.shadowBytes},
             {"moment_passes", r.momentPasses},
             {"transmittance_passes", r.transmittancePasses},
@@ -369,6 +384,7 @@ int runBench(const BenchArgs& args, bool verbose) {
     out["frames"] = args.frames;
     out["warmup"] = args.warmup;
     out["static_maps"] = args.staticMaps;
+    out["moving_lights"] = args.movingLights;
     out["gl"] = renderer.glInfo();
     out["timing"] =
         "wall clock around glFinish() per pass (timer queries are unreliable on "
@@ -401,8 +417,10 @@ int runBench(const BenchArgs& args, bool verbose) {
             Run run = measure(renderer, scene, options, args, "measuring " + step);
             run.value = values[i];
             std::fprintf(stderr,
-                         "gnomon bench: %s: frame %.1f ms (shadow passes %.1f, main %.1f)\n",
-                         step.c_str(), run.frame.median, run.shadow.median, run.main.median);
+                         "gnomon bench: %s: frame %.1f ms (shadow passes %.1f, main %.1f; "
+                         "maps drawn %.0f, waiting %.0f)\n",
+                         step.c_str(), run.frame.median, run.shadow.median, run.main.median,
+                         run.mapsDrawn, run.mapsWaiting);
             runs.push_back(std::move(run));
         }
     } catch (const Interrupted& e) {

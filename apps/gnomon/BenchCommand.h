@@ -13,6 +13,7 @@ struct BenchArgs {
     std::string writeScene;  // --write-scene: the scene file of the sweep's one value
     int frames = 20, warmup = 3;
     bool staticMaps = false;
+    bool movingLights = false;  // --moving-lights: spot and point lights move every frame
     RenderFlags flags;
 };
 

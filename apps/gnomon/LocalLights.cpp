@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "gnomon/gnomon.h"
@@ -308,6 +309,25 @@ std::vector<Light> placeLocalLights(const Scene& scene, int count, float aspect,
     for (std::size_t i = 0; i < anchors.size(); ++i)
         lights.push_back(lightAt(bvh, anchors[i], i, view, count, sceneSize, box));
     return lights;
+}
+
+void moveLights(const Scene& base, Scene& moved, int frame) {
+    float size = -1.0f;  // the scene's, measured when a light without a range needs it
+    for (std::size_t i = 0; i < base.lights.size() && i < moved.lights.size(); ++i) {
+        const Light& l = base.lights[i];
+        if (l.type != LightType::Spot && l.type != LightType::Point) continue;
+        if (!(l.range > 0.0f) && size < 0.0f) {
+            glm::vec3 lo(0.0f), hi(0.0f);
+            sceneBounds(base, lo, hi);
+            size = glm::length(hi - lo);
+        }
+        const float radius = 0.02f * (l.range > 0.0f ? l.range : size);
+        // Each light starts at its own place on its circle (the golden angle apart).
+        const float angle =
+            2.0f * std::numbers::pi_v<float> * float(frame) / 60.0f + 2.39996f * float(i);
+        moved.lights[i].position =
+            l.position + radius * glm::vec3(std::cos(angle) - 1.0f, 0.0f, std::sin(angle));
+    }
 }
 
 }  // namespace gnomon::cli

@@ -35,4 +35,10 @@ bvh::Bvh sceneHierarchy(const Scene& scene, double seconds);
 std::vector<Light> placeLocalLights(const Scene& scene, int count, float aspect,
                                     double seconds = 0.0);
 
+// `gnomon bench --moving-lights`: `moved` is `base` with every spot and point light a little
+// along a small horizontal circle of its own at frame `frame` (a fiftieth of its range, or of the
+// scene's size without one; a full turn in 60 frames), so each frame every map changes.
+// `moved` must start as a copy of `base`; only light positions are written.
+void moveLights(const Scene& base, Scene& moved, int frame);
+
 }  // namespace gnomon::cli

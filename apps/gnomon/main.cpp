@@ -169,9 +169,10 @@ int runRender(const RenderArgs& args, bool verbose) {
                 u.cascade >= 0 ? " cascade " + std::to_string(u.cascade)
                 : u.face >= 0  ? " face " + std::to_string(u.face) + " (" + kFaceNames[u.face] + ")"
                                : "";
-            std::fprintf(stderr, "gnomon: light %d%s: %d² %s%s, the view uses %.0f %% of it\n",
+            std::fprintf(stderr, "gnomon: light %d%s: %d² %s%s, the view uses %.0f %% of it%s\n",
                          u.light, part.c_str(), u.mapSize, u.cube ? "cube" : "map", faces.c_str(),
-                         100.0 * double(u.share));
+                         100.0 * double(u.share),
+                         u.waiting ? " (kept as drawn earlier: waits for --map-redraws)" : "");
         }
     }
     return 0;

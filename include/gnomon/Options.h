@@ -147,6 +147,10 @@ struct ShadowOptions {
     float lightRadius = 0.25f;  // Pcss: emitter radius of spot, point and area lights, world units
     float lightAngle = 1.0f;    // Pcss: angular radius of directional lights, degrees, 0..20
     int mapSize = 0;            // texels per side for every light, 64..8192; 0 = each light's own
+    // The most spot and point light maps drawn again in a frame when many changed (moving
+    // lights): the largest and longest waiting first, the rest keep the map last drawn (the
+    // shadow of where their light was) until their turn; 0 = every map that changed.
+    int mapRedraws = 0;
     // Fitted directional lights: 1..4 maps along the view; 0 = auto: with fitTo ViewDepth,
     // one per factor of 8 in the depth range the view sees (1..4); with Boxes, 1.
     int cascades = 0;

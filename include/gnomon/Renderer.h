@@ -52,6 +52,7 @@ struct PassTiming {
 // --debug-view shadow-map read them (maps an earlier frame drew stay held, for a later one).
 struct FrameStats {
     int shadowPasses = 0;            // shadow maps rendered this frame (kept ones: 0)
+    int shadowMapsWaiting = 0;       // changed, kept as drawn earlier by --map-redraws
     int shadowMaps = 0;              // maps in use (a cascaded light: one per cascade)
     std::size_t shadowMapBytes = 0;  // GPU memory held by shadow maps (moments, transmittance)
     // Empty, or one sentence: the maps of lights naming no size did not fit one array's budget
@@ -81,6 +82,8 @@ struct MapUsage {
     bool cube = false;  // a point light's six faces, not one map
     int faces = 1;      // a cube's faces the view looks up (and draws; a kept cube may hold more)
     int face = -1;      // a point light's face with a map of its own (0..5: +X, -X, +Y, ...)
+    // Changed, and kept as an earlier frame drew it by the redraw budget (--map-redraws).
+    bool waiting = false;
 };
 
 // Per pixel and light, what the main pass's shadow lookups returned (gnomon score): values at

@@ -55,6 +55,17 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          .zeroAllowed = true,
          .defaultNote = "0: each light's own",
          NUMBER(shadow.mapSize, int)});
+    add({.name = "map-redraws",
+         .group = G::ShadowMaps,
+         .doc = "the most spot and point light maps drawn again a frame when many changed "
+                "(moving lights): the largest and longest waiting first; the others keep the "
+                "map drawn last, the shadow of where their light was, until their turn",
+         .kind = K::Integer,
+         .min = 1,
+         .max = 100000,
+         .zeroAllowed = true,
+         .defaultNote = "0: every map that changed",
+         NUMBER(shadow.mapRedraws, int)});
     add({.name = "caster-detail",
          .group = G::ShadowMaps,
          .doc = "share of each mesh's triangles drawn into shadow maps: simplified stand-in "

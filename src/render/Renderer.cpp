@@ -410,8 +410,8 @@ std::vector<MapUsage> Renderer::mapUsage() {
             {sl.light, sl.cascade, sl.mapSize,
              shadow::mapShareUsed(samples, sl.frame, sl.mapSize, sl.depthFrom, sl.depthTo),
              sl.frame.kind == shadow::FrameKind::Cube,
-             sl.frame.kind == shadow::FrameKind::Cube ? std::popcount(sl.frame.faces) : 1,
-             sl.face});
+             sl.frame.kind == shadow::FrameKind::Cube ? std::popcount(sl.frame.faces) : 1, sl.face,
+             sl.waiting});
     }
     return out;
 }

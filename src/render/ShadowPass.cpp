@@ -153,6 +153,7 @@ void ShadowPass::allocateCubes(int size, int cubes, DepthFormat format) {
     mHeld.layout.cubes = cubes;
     mHeld.layout.formatCube = isColourFormat(format) ? DepthFormat::Depth32F : format;
     mHeld.cubes.assign(size_t(cubes), shadow::MapKey{});
+    mHeld.drawnCubes.assign(size_t(cubes), 0);
 }
 
 std::size_t ShadowPass::bytes() const {
@@ -197,6 +198,20 @@ void ShadowPass::drawCasters(const GpuScene& scene, const shadow::FramePlan& pla
             gl::use(program(variant, alpha, options.blendShadows == BlendShadows::Coloured));
             setUniforms();
         });
+}
+
+// The 2D maps held in other slots whose squares `key` draws over no longer hold what their
+// keys say (a map of another light drew there since), so none may stand in for a map later.
+void ShadowPass::forgetOverlapping(const shadow::MapKey& key, std::size_t slot) {
+    const glm::ivec3 p = key.place;
+    for (std::size_t i = 0; i < mHeld.maps2D.size(); ++i) {
+        shadow::MapKey& other = mHeld.maps2D[i];
+        const glm::ivec3 q = other.place;
+        if (i == slot || q.z != p.z || other.castersHash == ~0ull) continue;
+        const bool apart = q.x >= p.x + key.mapSize || p.x >= q.x + other.mapSize ||
+                           q.y >= p.y + key.mapSize || p.y >= q.y + other.mapSize;
+        if (!apart) other = shadow::MapKey{};
+    }
 }
 
 void ShadowPass::invalidate() {
@@ -346,6 +361,8 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePla
     for (const ShadowedLight& light : lights)
         count2D += light.frame.kind == shadow::FrameKind::Cube ? 0 : 1;
     mHeld.maps2D.resize(count2D);
+    mHeld.drawn2D.resize(count2D);
+    ++mHeld.frame;
 
     ShadowPassStats stats;
     stats.culled = plan.castersCulled();
@@ -355,9 +372,11 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePla
     for (std::size_t li = 0; li < lights.size(); ++li) {
         const ShadowedLight& light = lights[li];
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
-        shadow::MapKey& held = cube ? mHeld.cubes[size_t(light.layer)] : mHeld.maps2D[index2D++];
-        if (!light.redraw) continue;  // nothing changed: keep the map
-        held = light.key;
+        const std::size_t slot = cube ? std::size_t(light.layer) : index2D++;
+        if (!light.redraw) continue;  // nothing changed (or it waits): keep the map
+        if (!cube) forgetOverlapping(light.key, slot);
+        (cube ? mHeld.cubes : mHeld.maps2D)[slot] = light.key;
+        (cube ? mHeld.drawnCubes : mHeld.drawn2D)[slot] = mHeld.frame;
         if (clock) clock->start();
         if (!any) {
             scene.bind();

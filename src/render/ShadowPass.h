@@ -111,6 +111,7 @@ private:
     gl::Framebuffer mCubeFramebuffer;                    // layered: the whole cube array
     std::vector<gl::Framebuffer> mCubeFaceFramebuffers;  // fallback: one per cube face
     shadow::HeldMaps mHeld;
+    void forgetOverlapping(const shadow::MapKey& key, std::size_t slot);
     std::vector<char> mHoldsLight;  // per item: its box holds the light (no face culling)
     std::vector<int> mDrawn;        // reused every frame
     gl::Texture mBareDepth;         // bareDepthPass's target

@@ -31,6 +31,8 @@ void ShadowPasses::draw(const GpuScene& scene, const shadow::FramePlan& plan,
         stats.shadowTriangles = passStats.triangles;
         stats.castersCulled = passStats.culled;
         stats.shadowMaps = int(shadowed.size());
+        for (const ShadowedLight& sl : shadowed)
+            stats.shadowMapsWaiting += sl.waiting ? 1 : 0;
     }
     stats.shadowMapBytes = shadowed.empty() ? 0 : mDepth.bytes();
     const bool moments = isMomentFilter(so.filter) && so.enabled && !rays;

@@ -1,6 +1,9 @@
 // The maps' side of the frame plan: where each map lies in its array, which casters reach it,
 // the key it is drawn under, and which maps are drawn again this frame.
 #include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "shadow/FramePlan.h"
 
@@ -66,7 +69,7 @@ void FramePlan::planMaps(const std::vector<ShadowedLight>& maps, const PlanScene
     mShadowed = maps;
     layOutMaps(options);
     collectCasters(scene, options);
-    chooseRedraws(held);
+    chooseRedraws(held, options.mapRedraws);
 }
 
 // Each map's depth casters (those inside its light's volume) and the key it is drawn under.
@@ -109,14 +112,19 @@ void FramePlan::collectCasters(const PlanScene& scene, const ShadowOptions& opti
         key.format = options.depthFormat;
         key.blend = options.blendShadows;
         key.faces = cube ? l.frame.faces : kAllCubeFaces;
+        key.eye = glm::vec3(glm::inverse(l.frame.lightFromWorld)[3]);
+        key.near = l.frame.near;
+        key.far = l.frame.far;
+        key.texelWorldSize = l.frame.texelWorldSize;
         for (int face = 0; face < (cube ? 6 : 1); ++face)
             key.clipFromWorld[std::size_t(face)] =
                 cube ? l.frame.faceClipFromWorld(face) : l.frame.clipFromWorld();
     }
 }
 
-// A map is kept when its array was not remade and what it holds serves the key wanted now.
-void FramePlan::chooseRedraws(const HeldMaps& held) {
+// A map is kept when its array was not remade and what it holds serves the key wanted now;
+// with a redraw budget, maps that changed may wait (keepWaiting).
+void FramePlan::chooseRedraws(const HeldMaps& held, int budget) {
     const MapLayout& have = held.layout;
     const bool same2D = have.size2D == mLayout.size2D && have.layers2D == mLayout.layers2D &&
                         have.format2D == mLayout.format2D;
@@ -128,7 +136,72 @@ void FramePlan::chooseRedraws(const HeldMaps& held) {
         const std::size_t slot = cube ? std::size_t(l.layer) : next2D++;
         const std::vector<MapKey>& keys = cube ? held.cubes : held.maps2D;
         l.redraw = !((cube ? sameCubes : same2D) && slot < keys.size() && keys[slot].serves(l.key));
+        if (l.waiting) writeLookup(l, l.key);  // waited last frame: the plan's camera again
+        l.waiting = false;
     }
+    if (budget > 0) keepWaiting(held, budget);
+}
+
+// At most `budget` maps drawn this frame when many changed (moving lights): maps with nothing
+// to show in their place are drawn whatever the budget; of the spot and point lights' maps
+// that changed but hold an earlier drawing in their place, the longest waiting are drawn first,
+// the most visible (the largest: maps are sized by their reach on screen) ahead; the rest keep what
+// they hold, their records' lookups following the camera it was drawn with (the shadows of
+// where the light was). Cached shadow maps under a re-render budget, as engines keep them.
+void FramePlan::keepWaiting(const HeldMaps& held, int budget) {
+    const bool same2D = held.layout.size2D == mLayout.size2D &&
+                        held.layout.layers2D == mLayout.layers2D &&
+                        held.layout.format2D == mLayout.format2D;
+    const bool sameCubes = held.layout.sizeCube == mLayout.sizeCube &&
+                           held.layout.cubes == mLayout.cubes &&
+                           held.layout.formatCube == mLayout.formatCube;
+    mWaitOrder.clear();
+    int drawn = 0;
+    std::size_t next2D = 0;
+    for (std::size_t i = 0; i < mShadowed.size(); ++i) {
+        const ShadowedLight& l = mShadowed[i];
+        const bool cube = l.frame.kind == FrameKind::Cube;
+        const std::size_t slot = cube ? std::size_t(l.layer) : next2D++;
+        if (!l.redraw) continue;
+        const std::vector<MapKey>& keys = cube ? held.cubes : held.maps2D;
+        const std::vector<std::uint64_t>& when = cube ? held.drawnCubes : held.drawn2D;
+        const bool local = l.cascade < 0 && l.frame.kind != FrameKind::Orthographic;
+        const bool canWait = local && (cube ? sameCubes : same2D) && slot < keys.size() &&
+                             slot < when.size() && keys[slot].samePlace(l.key);
+        if (!canWait) {
+            ++drawn;
+            continue;
+        }
+        // Frames since it was drawn, and a head start of a frame per doubling of its size: a
+        // map waits at most as many frames as the budget needs to draw every map once, and
+        // the head start.
+        const double age = double(held.frame - std::min(when[slot], held.frame));
+        mWaitOrder.push_back({-(age + std::log2(double(std::max(l.mapSize, 1)))), i, slot});
+    }
+    std::sort(mWaitOrder.begin(), mWaitOrder.end());
+    for (const Waiting& w : mWaitOrder) {
+        if (drawn < budget) {
+            ++drawn;
+            continue;
+        }
+        ShadowedLight& l = mShadowed[w.light];
+        l.redraw = false;
+        l.waiting = true;
+        const bool cube = l.frame.kind == FrameKind::Cube;
+        writeLookup(l, cube ? held.cubes[w.slot] : held.maps2D[w.slot]);
+    }
+}
+
+// The record fields through which `light`'s lookups read its map, from the camera `key`
+// names.
+void FramePlan::writeLookup(const ShadowedLight& light, const MapKey& key) {
+    GpuLight& g = mLights[std::size_t(light.record)];
+    g.textureFromWorld = light.frame.kind == FrameKind::Cube
+                             ? glm::translate(glm::mat4(1.0f), -key.eye)
+                             : textureFromClip() * key.clipFromWorld[0];
+    g.mapNear = key.near;
+    g.mapFar = key.far;
+    g.texelWorldSize = key.texelWorldSize;
 }
 
 }  // namespace gnomon::shadow

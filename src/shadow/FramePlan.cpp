@@ -53,9 +53,9 @@ void fillShadowRecord(GpuLight& g, const LightCameraFrame& frame, const Light& l
     g.frame = frame.kind == FrameKind::Cube           ? gpu::kFrameCube
               : frame.kind == FrameKind::Orthographic ? gpu::kFrameOrthographic
                                                       : gpu::kFramePerspective;
-    if (frame.kind != FrameKind::Cube) {
-        g.textureFromWorld = textureFromClip() * frame.clipFromWorld();
-    }
+    g.textureFromWorld = frame.kind == FrameKind::Cube
+                             ? frame.lightFromWorld  // a translation to the light
+                             : textureFromClip() * frame.clipFromWorld();
 }
 }  // namespace
 
@@ -114,7 +114,7 @@ void FramePlan::plan(const Scene& s, const RenderOptions& options, const PlanSce
         mMade.options = options;
         mMade.valid = true;
     }
-    chooseRedraws(held);
+    chooseRedraws(held, options.shadow.mapRedraws);
 }
 
 // The lights planned, in records the main pass holds, their maps laid out.

@@ -48,6 +48,9 @@ struct MapLayout {
 struct HeldMaps {
     MapLayout layout;
     std::vector<MapKey> maps2D, cubes;
+    // Frames drawn so far, and the frame each map was last drawn in (as maps2D and cubes).
+    std::uint64_t frame = 0;
+    std::vector<std::uint64_t> drawn2D, drawnCubes;
 };
 
 class FramePlan {
@@ -126,7 +129,9 @@ private:
     void layOutMaps(const ShadowOptions& options);
     void fillMapRecords();
     void collectCasters(const PlanScene& scene, const ShadowOptions& options);
-    void chooseRedraws(const HeldMaps& held);
+    void chooseRedraws(const HeldMaps& held, int budget);
+    void keepWaiting(const HeldMaps& held, int budget);
+    void writeLookup(const ShadowedLight& light, const MapKey& key);
 
     static constexpr int kMaxCascades = 4;
     // Extents a light may hold: its single map's (0, also where a point light tries one
@@ -172,6 +177,15 @@ private:
     int mMaxLayers = 1 << 30;
     int mSizeCap = 0;  // 0, or the largest size of a light naming none (fitBudget)
     std::string mBudgetNote;
+    // keepWaiting's candidates: -priority, index into mShadowed, slot held.
+    struct Waiting {
+        double order = 0.0;
+        std::size_t light = 0, slot = 0;
+        bool operator<(const Waiting& o) const {
+            return order < o.order || (order == o.order && light < o.light);
+        }
+    };
+    std::vector<Waiting> mWaitOrder;
     Camera mFitCamera;
     FitScene mFit;  // reused every frame
     MapLayout mLayout;

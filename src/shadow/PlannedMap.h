@@ -55,7 +55,19 @@ struct MapKey {
     DepthFormat format = DepthFormat::Depth32F;
     BlendShadows blend = BlendShadows::Dithered;
     std::uint8_t faces = kAllCubeFaces;  // cubes: the faces drawn
+    // What a lookup needs of the camera besides clipFromWorld (all follow from it): where it
+    // stood (a cube's origin), its depth range and texel size (LightCameraFrame's).
+    glm::vec3 eye{0.0f};
+    float near = 0.0f, far = 0.0f, texelWorldSize = 0.0f;
     bool operator==(const MapKey&) const = default;
+    // A map drawn as `this` may stand in for one wanted as `want` (a light that moved, kept
+    // by the redraw budget): the same place and depth state, only the camera or casters
+    // differ.
+    bool samePlace(const MapKey& want) const {
+        return castersHash != ~0ull && mapSize == want.mapSize && place == want.place &&
+               cull == want.cull && slope == want.slope && units == want.units &&
+               depthClamp == want.depthClamp && format == want.format && blend == want.blend;
+    }
     // A map drawn as `this` serves `want`: the same, its faces a superset of want's.
     bool serves(const MapKey& want) const {
         MapKey same = want;
@@ -81,6 +93,9 @@ struct ShadowedLight {
     std::uint32_t firstCaster = 0, casterCount = 0;
     MapKey key{};         // what the map holds once drawn
     bool redraw = false;  // this frame draws it (else the map held serves)
+    // Kept by the redraw budget: the map held was drawn under another key, which its
+    // record's lookups now use (FramePlan::chooseRedraws).
+    bool waiting = false;
 };
 
 // What a light's map sees, for culling what it need not draw: its clip volume (casters in

@@ -277,6 +277,11 @@ LightCameraFrame lightCameraFrame(const Light& light, const Camera& view, const 
     boxes.reach = lightReach(light);
     boxes.apex = light.position;
     LightCameraFrame frame;
+    if (boxes.reach > 0.0f && scene.samples && !scene.samples->empty() &&
+        !anySampleWithin(*scene.samples, light.position, boxes.reach)) {
+        frame.valid = false;  // its range holds nothing the view sees
+        return frame;
+    }
     switch (light.type) {
         case LightType::Directional:
         case LightType::Area:

@@ -115,6 +115,13 @@ Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld,
     return box;
 }
 
+bool anySampleWithin(const ViewSamples& samples, const glm::vec3& apex, float reach) {
+    for (std::size_t i = 0; i < samples.points.size(); ++i) {
+        if (!beyondReach(samples, i, apex, reach)) return true;
+    }
+    return false;
+}
+
 bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction,
                       float reach) {
     glm::dvec3 sum(0.0);

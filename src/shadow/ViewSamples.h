@@ -60,6 +60,10 @@ void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, c
 Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld, float depthFrom,
                     float depthTo);
 
+// Does some sample lie within `reach` of `apex` (reach <= 0: unbounded, so any sample)? A
+// light with a range that holds none lights nothing the view sees and needs no map.
+bool anySampleWithin(const ViewSamples& samples, const glm::vec3& apex, float reach);
+
 // For fitting one frustum from a point light over what the view sees (instead of a cube):
 // the samples' mean direction from `apex`; false when there is none or one lies within its
 // pad of the apex. With `reach` > 0 (a light's range), samples wholly farther from the apex

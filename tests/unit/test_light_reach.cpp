@@ -70,15 +70,14 @@ TEST(MeshPieces, CutsALargeMeshIntoCompactPiecesKeepingEveryTriangleAndTheGroups
     EXPECT_EQ(next, indices.size());
     EXPECT_GE(pieces.size(), 20u);
     // Compact: the pieces' boxes together cover the grid (10 000) a few times at most, where
-    // runs of rows in the file's order would span the grid's width each (rows of 100 quads:
-    // ~5 rows a piece, boxes of 100 x 6, about 6 times over).
+    // runs of triangles in the file's order (rows of quads) would each span the grid's width.
     EXPECT_LT(area, 3.0f * 10000.0f);
 }
 
 TEST(MeshPieces, ASmallMeshStaysWholeAndInOrder) {
     std::vector<glm::vec3> positions;
     std::vector<std::uint32_t> indices;
-    grid(30, positions, indices);  // 1800 triangles
+    grid(15, positions, indices);  // 450 triangles, under two pieces' worth
     const std::vector<std::uint32_t> before = indices;
     const auto pieces = shadow::cutIntoPieces(positions, indices, 0);
     ASSERT_EQ(pieces.size(), 1u);
@@ -134,8 +133,8 @@ TEST(LightReach, CastersBeyondTheRangeAreNotDrawn) {
     EXPECT_FALSE(volume.outside(Aabb{{-0.2f, 0.0f, -0.2f}, {0.2f, 3.0f, 0.2f}}));  // the post
 }
 
-// A point light whose range reaches no receiver has no map; one that does, a map no deeper
-// than its range.
+// A point light whose range holds no receiver, or none the view sees, has no map; one that does,
+// a map no deeper than its range.
 TEST(LightReach, APointLightsMapEndsAtItsRangeAndIsNoneWhenItLightsNothing) {
     shadow::ViewSamples samples;
     const Camera camera = test::groundCamera();
@@ -147,6 +146,8 @@ TEST(LightReach, APointLightsMapEndsAtItsRangeAndIsNoneWhenItLightsNothing) {
     const auto lit = shadow::lightCameraFrame(lamp, camera, scene, 1024);
     ASSERT_TRUE(lit.valid);
     EXPECT_LE(lit.far, 1.5f * 1.01f);
+    lamp.position = {9.0f, 0.5f, 9.0f};  // over the ground behind the camera: lights only
+    EXPECT_FALSE(shadow::lightCameraFrame(lamp, camera, scene, 1024).valid);  // what is unseen
     lamp.position.y = 4.0f;  // 4 above the ground, 1 above the post's top: nothing within 1.5
     lamp.position.x = lamp.position.z = 3.0f;
     EXPECT_FALSE(shadow::lightCameraFrame(lamp, camera, scene, 1024).valid);
