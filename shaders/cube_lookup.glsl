@@ -213,7 +213,9 @@ TapPlane cubePlane(Receiver r, vec3 wsToLight, CubeTap c, float stored, float ne
 // directions: the same footprint for k^2 instead of k^3 lookups).
 ShadowSample cubeVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     ShadowSample result = kLitSample;
-    vec3 toPoint = r.position - light.position;
+    // From where the cube was drawn (a map kept while its light moves was drawn elsewhere).
+    vec3 toPoint = (light.textureFromWorld * vec4(r.position, 1.0)).xyz;
+    vec3 cubeOrigin = -light.textureFromWorld[3].xyz;
     float near = light.mapNear, far = light.mapFar;
     vec3 a = abs(toPoint);
     float major = max(a.x, max(a.y, a.z));
@@ -232,7 +234,7 @@ ShadowSample cubeVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     // step of a float map on receivers near the nearest caster's distance (a box's top face
     // under a point light just above it flips into shadow at once). Both sides round, as
     // mapRounding counts them: 2^-23, not 2^-24.
-    float wsScale = length(r.position) + length(light.position);
+    float wsScale = length(r.position) + length(cubeOrigin);
     float rounding = exp2(-23.0) * (farTerm + nearTerm * (2.0 + wsScale / major));
     CubeTap c;
     c.toPoint = toPoint;

@@ -19,7 +19,8 @@ const int kFrameCascaded = 3;  // the maps are the cascade records that follow t
 const int kFrameFaces = 4;     // a point light's faces as maps of their own, in face records
 
 struct LightRecord {
-    mat4 textureFromWorld;  // world -> light clip -> [0, 1] map coordinates and stored depth
+    mat4 textureFromWorld;  // world -> light clip -> [0, 1] map coordinates and stored depth;
+                            // cubes: world -> offset from where the cube was drawn
     vec3 position;          // world space
     int type;               // kDirectional...
     vec3 direction;         // world space, normalised: where the light goes
