@@ -250,6 +250,8 @@ void printRun(const Run& r) {
                 r.timedFrame.p10, r.timedFrame.p90);
     std::printf("%-28s %10.2f %10.2f %10.2f\n", "frame (wall, render())", r.frame.median,
                 r.frame.p10, r.frame.p90);
+    std::printf("%-28s %d maps, %.0f drawn and %.0f waiting a frame (medians)\n", "  shadow maps",
+                r.maps, r.mapsDrawn, r.mapsWaiting);
     std::printf("%-28s %10.2f %10.2f %10.2f\n", "  reference: shadows off", r.shadowsOff.median,
                 r.shadowsOff.p10, r.shadowsOff.p90);
     if (r.bareDepth.median >= 0.0) {
@@ -396,7 +398,9 @@ int runBench(const BenchArgs& args, bool verbose) {
         const Run run = measure(renderer, base, baseOptions, args, "measuring " + base.name);
         std::printf("gnomon bench: %s, %dx%d, %d frames (%s maps)\n", base.name.c_str(),
                     baseOptions.width, baseOptions.height, args.frames,
-                    args.staticMaps ? "kept" : "redrawn");
+                    args.movingLights ? "moving lights'"
+                    : args.staticMaps ? "kept"
+                                      : "redrawn");
         printRun(run);
         out["runs"] = nlohmann::json::array({runJson(run)});
         writeTextFile(files.file("bench.json"), out.dump(2) + "\n");

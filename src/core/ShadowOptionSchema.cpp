@@ -58,7 +58,8 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
     add({.name = "map-redraws",
          .group = G::ShadowMaps,
          .doc = "the most spot and point light maps drawn again a frame when many changed "
-                "(moving lights): the largest and longest waiting first; the others keep the "
+                "(moving lights): the longest waiting first, larger maps a little ahead; the "
+                "others keep the "
                 "map drawn last, the shadow of where their light was, until their turn",
          .kind = K::Integer,
          .min = 1,

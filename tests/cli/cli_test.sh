@@ -105,6 +105,18 @@ PY
     [[ $(cat "$work/code") == 0 && -s "$work/six.png" ]] ||
         fail "six.json does not render: $(cat "$work/stderr")"
     [[ $(grep -c '"type": "spot"' "$work/six.json") == 3 ]] || fail "six.json: 3 spot lights"
+    # Moving lights under a redraw budget: at most the budget's maps drawn a frame, the
+    # others wait (the first frame draws them all: nothing is held yet).
+    run bench --scene mixed-lights --size 64x64 --frames 3 --warmup 1 --moving-lights \
+        --map-redraws 2 --out-dir "$work/mv"
+    expect 0 "drawn and"
+    python3 - "$work/mv/bench.json" <<'PY' || fail "moving lights under --map-redraws 2"
+import json, sys
+j = json.load(open(sys.argv[1]))
+r = j["runs"][0]
+assert j["moving_lights"] is True
+assert r["maps_drawn"] <= 2 and r["maps_waiting"] > 0, (r["maps_drawn"], r["maps_waiting"])
+PY
     run bench --scene tutorial-room --sweep local-lights --write-scene "$work/all.json"
     expect 2 "--write-scene needs --sweep and one value in --values, got 9 values"
     run bench --scene tutorial-room --sweep local-lights --values 300 --frames 1 --warmup 0 \
