@@ -9,6 +9,18 @@
 
 namespace gnomon::shadow {
 
+namespace {
+
+// Are the 2D maps' (or the cubes') arrays as they were: every map they held is still there?
+bool sameArrays(const MapLayout& have, const MapLayout& want, bool cubes) {
+    return cubes ? have.sizeCube == want.sizeCube && have.cubes == want.cubes &&
+                       have.formatCube == want.formatCube
+                 : have.size2D == want.size2D && have.layers2D == want.layers2D &&
+                       have.format2D == want.format2D;
+}
+
+}  // namespace
+
 // Sizes the arrays for the maps and gives each its layer (and, for 2D maps, its square in the
 // layer).
 void FramePlan::layOutMaps(const ShadowOptions& options) {
@@ -125,11 +137,8 @@ void FramePlan::collectCasters(const PlanScene& scene, const ShadowOptions& opti
 // A map is kept when its array was not remade and what it holds serves the key wanted now;
 // with a redraw budget, maps that changed may wait (keepWaiting).
 void FramePlan::chooseRedraws(const HeldMaps& held, int budget) {
-    const MapLayout& have = held.layout;
-    const bool same2D = have.size2D == mLayout.size2D && have.layers2D == mLayout.layers2D &&
-                        have.format2D == mLayout.format2D;
-    const bool sameCubes = have.sizeCube == mLayout.sizeCube && have.cubes == mLayout.cubes &&
-                           have.formatCube == mLayout.formatCube;
+    const bool same2D = sameArrays(held.layout, mLayout, false);
+    const bool sameCubes = sameArrays(held.layout, mLayout, true);
     std::size_t next2D = 0;
     for (ShadowedLight& l : mShadowed) {
         const bool cube = l.frame.kind == FrameKind::Cube;
@@ -149,12 +158,8 @@ void FramePlan::chooseRedraws(const HeldMaps& held, int budget) {
 // they hold, their records' lookups following the camera it was drawn with (the shadows of
 // where the light was). Cached shadow maps under a re-render budget, as engines keep them.
 void FramePlan::keepWaiting(const HeldMaps& held, int budget) {
-    const bool same2D = held.layout.size2D == mLayout.size2D &&
-                        held.layout.layers2D == mLayout.layers2D &&
-                        held.layout.format2D == mLayout.format2D;
-    const bool sameCubes = held.layout.sizeCube == mLayout.sizeCube &&
-                           held.layout.cubes == mLayout.cubes &&
-                           held.layout.formatCube == mLayout.formatCube;
+    const bool same2D = sameArrays(held.layout, mLayout, false);
+    const bool sameCubes = sameArrays(held.layout, mLayout, true);
     mWaitOrder.clear();
     int drawn = 0;
     std::size_t next2D = 0;
