@@ -22,7 +22,7 @@ struct MeshPiece {
 };
 
 // Triangles in a piece, at most; meshes with fewer than twice as many stay whole.
-inline constexpr std::uint32_t kPieceTriangles = 256;
+inline constexpr std::uint32_t kPieceTriangles = 128;
 
 // Cuts `indices` (a mesh's triangles, the first `closedIndices` of them on solids, as
 // splitForCulling orders them) into pieces: each of the two groups is reordered in place

@@ -77,7 +77,7 @@ TEST(MeshPieces, CutsALargeMeshIntoCompactPiecesKeepingEveryTriangleAndTheGroups
 TEST(MeshPieces, ASmallMeshStaysWholeAndInOrder) {
     std::vector<glm::vec3> positions;
     std::vector<std::uint32_t> indices;
-    grid(15, positions, indices);  // 450 triangles, under two pieces' worth
+    grid(10, positions, indices);  // 200 triangles, under two pieces' worth
     const std::vector<std::uint32_t> before = indices;
     const auto pieces = shadow::cutIntoPieces(positions, indices, 0);
     ASSERT_EQ(pieces.size(), 1u);
