@@ -124,13 +124,33 @@ TEST(LightTiles, TilingPaysOnlyForWhatItSkips) {
     everywhere.shadowed = true;
     TileReach tiles;
     cullTiles({everywhere}, kViewFromClip, 512, 512, 64, nullptr, tiles);
-    EXPECT_LE(tilingGainMs(tiles, {everywhere}, 512, 512, 1000), 0.0);  // nothing skipped
+    const TilingGain none = tilingGainMs(tiles, {everywhere}, 512, 512, 1000, 8);
+    EXPECT_LE(none.draws, 0.0);  // nothing skipped
+    EXPECT_LE(none.lists, 0.0);
 
     LightReach spot = downSpot({0.0f, -1.0f, -10.0f}, 20.0f);
     spot.shadowed = true;
-    const std::vector<LightReach> lights(8, spot);
+    const std::vector<LightReach> lights(12, spot);
     cullTiles(lights, kViewFromClip, 512, 512, 64, nullptr, tiles);
-    EXPECT_GT(tilingGainMs(tiles, lights, 512, 512, 100), 0.0);
-    // The same skipping does not pay for drawing a million triangles again per tile.
-    EXPECT_LT(tilingGainMs(tiles, lights, 512, 512, 1000000), 0.0);
+    const TilingGain few = tilingGainMs(tiles, lights, 512, 512, 100, 8);
+    EXPECT_GT(few.draws, 0.0);
+    EXPECT_GT(few.lists, 0.0);
+    // The same skipping does not pay for drawing a million triangles again per tile; lists
+    // draw them once.
+    const TilingGain many = tilingGainMs(tiles, lights, 512, 512, 1000000, 8);
+    EXPECT_LT(many.draws, 0.0);
+    EXPECT_DOUBLE_EQ(many.lists, few.lists);
+}
+
+TEST(LightTiles, EmptyTilesCostNothingEitherWay) {
+    // Nothing drawn anywhere: no light is looked up whether tiled or not.
+    const std::vector<glm::vec2> ranges(4, glm::vec2(1.0f));
+    const DepthCells cells{&ranges, SampleGrid{{128, 128}, 64, {2, 2}}};
+    LightReach spot = downSpot({0.0f, -1.0f, -10.0f}, 20.0f);
+    spot.shadowed = true;
+    const std::vector<LightReach> lights(12, spot);
+    TileReach tiles;
+    cullTiles(lights, kViewFromClip, 128, 128, 64, &cells, tiles);
+    EXPECT_EQ(tiles.empty, std::vector<std::uint8_t>(4, 1));
+    EXPECT_DOUBLE_EQ(tilingGainMs(tiles, lights, 128, 128, 0, 8).lists, 0.0);
 }
