@@ -228,11 +228,20 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 // KIND) is BODY(first + i, LOOKUP, KIND) for each of its i). llvmpipe keeps every value a
 // loop changes in memory, per pixel, behind the loop's mask, and the compiler does not
 // unroll a loop whose body holds a lookup (docs/results/performance.md, "Many lights").
+// Otherwise each loop tests its end after a light, inside a test for none at all: llvmpipe
+// leaves a loop only when, at the loop's end, no pixel of the block is left in it, so a loop
+// that tested first ran its body once more than its lights, every pixel masked off.
 #ifdef UNROLLED_LIGHTS
 #define EACH_LIGHT(NAME, first, last, BODY, LOOKUP, KIND) NAME(BODY, first, LOOKUP, KIND)
 #else
 #define EACH_LIGHT(NAME, first, last, BODY, LOOKUP, KIND) \
-    for (int k = first; k < last; ++k) BODY(k, LOOKUP, KIND)
+    {                                                     \
+        int k = first, end = last;                        \
+        if (k < end) do {                                 \
+                BODY(k, LOOKUP, KIND)                     \
+                ++k;                                      \
+            } while (k < end);                            \
+    }
 #endif
 
 // Declares `light` (record k of the light order), `toLight` and `falloff` at this fragment.
