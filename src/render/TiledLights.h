@@ -46,9 +46,9 @@ public:
     // Plans one frame. `records` and `ranges` as shadow::FramePlan makes them (world-space records,
     // the ends of each kind), seen through `viewFromWorld` and `clipFromView`; `triangles`: what
     // one more drawing of the scene costs. `mode` (--light-tiles; Off where tiles would not be
-    // exact): Auto draws tiles where the cost model (shadow::tilingGainMs) expects a gain; Lists
-    // and Draws take the grid it expects to gain most from. `depth`: the view's reduced depth,
-    // which bounds each tile's volume (null: none).
+    // exact): Auto takes the way and grid the cost model (shadow::tilingGainMs) expects to gain
+    // most, if any; Lists and Draws the grid it expects to gain most from. `depth`: the view's
+    // reduced depth, which bounds each tile's volume (null: none).
     void plan(const std::vector<GpuLight>& records, glm::ivec4 ranges,
               const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, int width, int height,
               std::uint64_t triangles, LightTiles mode, const shadow::DepthCells* depth);
@@ -65,16 +65,25 @@ public:
     glm::ivec4 ranges() const { return mRanges; }
 
 private:
-    void buildTiles(int width, int height);
-    bool buildLists();
+    bool buildTiles(const shadow::TileReach& grid, int width, int height);
+    bool buildLists(const shadow::TileReach& grid);
     // The order's entries for the lights `reach` marks, appended by kind: its range.
     LightTile appendLights(const std::uint8_t* reach);
+
+    // A way of tiling one of mGrids and its expected gain (shadow::tilingGainMs).
+    struct Candidate {
+        double gain = 0.0;
+        std::size_t grid = 0;
+        bool lists = false;
+    };
 
     std::vector<std::int32_t> mOrder;
     std::vector<LightTile> mTiles;
     LightLists mLists;
-    std::vector<shadow::LightReach> mReach;              // reused every frame
-    shadow::TileReach mCull, mBest;                      // reused every frame
+    // Reused every frame: the lights' reach, the grids from the finest tiles up, the ways.
+    std::vector<shadow::LightReach> mReach;
+    std::vector<shadow::TileReach> mGrids;
+    std::vector<Candidate> mCandidates;
     std::unordered_map<std::string, LightTile> mShared;  // lists: tiles with the same lights
     glm::ivec4 mRanges{0};
 };

@@ -15,10 +15,11 @@ constexpr double kShadowedNsPerPixel = 20.0;
 constexpr double kUnshadowedNsPerPixel = 4.0;
 constexpr double kTriangleNs = 150.0;
 constexpr double kDrawMs = 0.03;
-// Loops instead of lookups written out: each light's share again per pixel, and the light
-// lists' fetch of the pixel's tile (not measured yet: none).
-constexpr double kLoopNsPerLight = 0.0;
-constexpr double kListNsPerPixel = 0.0;
+// Loops instead of lookups written out: this share more per light, from the local-lights
+// sweep's 8 lights in loops and written out. The light lists' fetch of the pixel's tile, per
+// pixel drawn: bounded by the main pass of a build whose every list is empty.
+constexpr double kLoopShare = 0.05;
+constexpr double kListNsPerPixel = 2.0;
 
 // One pixel's lights (those `reach` marks; null: all) in ns, in loops when more than
 // `maxWrittenOut` (negative: always in loops).
@@ -31,7 +32,7 @@ double pixelNs(const std::vector<LightReach>& lights, const std::uint8_t* reach,
         ++count;
         ns += lights[l].shadowed ? kShadowedNsPerPixel : kUnshadowedNsPerPixel;
     }
-    return count > maxWrittenOut ? ns + count * kLoopNsPerLight : ns;
+    return count > maxWrittenOut ? ns * (1.0 + kLoopShare) : ns;
 }
 
 struct Plane {
@@ -144,7 +145,7 @@ void cullTiles(const std::vector<LightReach>& lights, const glm::mat4& viewFromC
     out.columns = (width + size - 1) / size;
     out.rows = (height + size - 1) / size;
     out.reaches.assign(std::size_t(out.columns * out.rows) * lights.size(), 1);
-    out.empty.assign(std::size_t(out.columns * out.rows), 0);
+    out.drawn.assign(std::size_t(out.columns * out.rows), 0);
     for (int r = 0; r < out.rows; ++r) {
         for (int c = 0; c < out.columns; ++c) {
             const int x0 = c * size, y0 = r * size;
@@ -158,7 +159,7 @@ void cullTiles(const std::vector<LightReach>& lights, const glm::mat4& viewFromC
                 tileCorners(viewFromClip, width, height, x0, y0, x1, y1, range.x, range.y);
             const std::array<Plane, 6> planes = framePlanes(corners);
             const std::size_t tile = std::size_t(r * out.columns + c);
-            out.empty[tile] = empty ? 1 : 0;
+            out.drawn[tile] = empty ? 0 : (x1 - x0) * (y1 - y0);
             for (std::size_t l = 0; l < lights.size(); ++l) {
                 out.reaches[tile * lights.size() + l] =
                     !empty && mayReachWithin(lights[l], corners, planes) ? 1 : 0;
@@ -167,8 +168,26 @@ void cullTiles(const std::vector<LightReach>& lights, const glm::mat4& viewFromC
     }
 }
 
-TilingGain tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& lights, int width,
-                        int height, std::uint64_t triangles, int maxWrittenOut) {
+void coarsenTiles(const TileReach& fine, int factor, int width, int height, std::size_t lights,
+                  TileReach& out) {
+    out.size = fine.size * factor;
+    out.columns = (width + out.size - 1) / out.size;
+    out.rows = (height + out.size - 1) / out.size;
+    out.reaches.assign(std::size_t(out.columns * out.rows) * lights, 0);
+    out.drawn.assign(std::size_t(out.columns * out.rows), 0);
+    for (int r = 0; r < fine.rows; ++r) {
+        for (int c = 0; c < fine.columns; ++c) {
+            const std::size_t from = std::size_t(r * fine.columns + c);
+            const std::size_t to = std::size_t((r / factor) * out.columns + c / factor);
+            out.drawn[to] += fine.drawn[from];
+            for (std::size_t l = 0; l < lights; ++l)
+                out.reaches[to * lights + l] |= fine.reaches[from * lights + l];
+        }
+    }
+}
+
+TilingGain tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& lights,
+                        std::uint64_t triangles, int maxWrittenOut) {
     const std::size_t n = lights.size();
     double noneNs = 0.0, drawsNs = 0.0, listsNs = 0.0;
     int draws = 0;
@@ -178,9 +197,7 @@ TilingGain tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& l
             const std::uint8_t* reach = tiles.reaches.data() + tile * n;
             // Neighbours in a row with the same lights share one draw.
             if (c == 0 || n == 0 || std::memcmp(reach, reach - n, n) != 0) ++draws;
-            if (!tiles.empty.empty() && tiles.empty[tile]) continue;  // nothing shaded there
-            const double pixels = double(std::min(width, (c + 1) * tiles.size) - c * tiles.size) *
-                                  double(std::min(height, (r + 1) * tiles.size) - r * tiles.size);
+            const double pixels = double(tiles.drawn[tile]);  // where something is shaded
             noneNs += pixels * pixelNs(lights, nullptr, maxWrittenOut);
             drawsNs += pixels * pixelNs(lights, reach, maxWrittenOut);
             listsNs += pixels * (pixelNs(lights, reach, -1) + kListNsPerPixel);
