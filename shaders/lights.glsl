@@ -23,3 +23,28 @@ layout(location = 10) uniform int uLightFirst;
 int lightRecord(int k) {
     return uLightOrder[k >> 2][k & 3];
 }
+
+#ifdef LIGHT_LISTS
+// One draw for the whole view: each pixel reads its screen tile's ranges of the order from a
+// texel of uLightLists (render/TiledLights.h, LightLists): first, then the ends of the
+// unshadowed, map and cube lights; the cascaded lights, in every tile, follow the cubes.
+// Tiles are whole blocks of the pixels llvmpipe shades together, so the loops run as often
+// for every pixel of a block and a light no pixel there needs costs nothing.
+layout(binding = 9) uniform highp isampler2D uLightLists;
+layout(location = 0) uniform int uTileShift;  // log2 of a tile's side in pixels
+#endif
+
+// This fragment's range of the light order: its unshadowed lights start at `first`, and its
+// unshadowed, map, cube and cascaded lights end at `ends`.
+struct LightRange {
+    int first;
+    ivec4 ends;
+};
+LightRange lightRange() {
+#ifdef LIGHT_LISTS
+    ivec4 t = texelFetch(uLightLists, ivec2(gl_FragCoord.xy) >> uTileShift, 0);
+    return LightRange(t.x, ivec4(t.yzw, t.w + uLightRanges.w - uLightRanges.z));
+#else
+    return LightRange(uLightFirst, uLightRanges);
+#endif
+}

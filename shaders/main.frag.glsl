@@ -17,7 +17,8 @@
 // (transmittance_lookup.glsl). DITHER_LINEAR / DITHER_SRGB: ordered dithering of the output.
 // STAND_IN_LIFT: shadow passes draw stand-in casters; their objects' lookups start off the
 // surface by the stand-in's error (shadow_lookup.glsl). UNROLLED_LIGHTS: the light loops
-// written out per light (below). SHADOW_RAYS: every shadowed light's lookup is a ray through
+// written out per light (below). LIGHT_LISTS: the loops run over the lights of the pixel's
+// screen tile (lights.glsl). SHADOW_RAYS: every shadowed light's lookup is a ray through
 // the casters' BVH instead (shadow_rays.glsl).
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
@@ -215,8 +216,8 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 #define LIGHT_THROUGH(shadow) vec3(shadow.visibility)
 #endif
 
-// One loop per kind of light, over its range of the light order (uLightRanges: ends of the
-// unshadowed, single-map, cube and cascaded ranges; a screen tile's ranges hold only the
+// One loop per kind of light, over its range of the light order (main()'s `range`: ends of
+// the unshadowed, single-map, cube and cascaded ranges; a screen tile's ranges hold only the
 // lights that reach it). llvmpipe runs both sides of every branch
 // it cannot prove uniform, so a single loop would pay for every kind's lookup on every light;
 // separate loops run each light's own lookup only, and lights that are off are not in any.
@@ -227,11 +228,20 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 // KIND) is BODY(first + i, LOOKUP, KIND) for each of its i). llvmpipe keeps every value a
 // loop changes in memory, per pixel, behind the loop's mask, and the compiler does not
 // unroll a loop whose body holds a lookup (docs/results/performance.md, "Many lights").
+// Otherwise each loop tests its end after a light, inside a test for none at all: llvmpipe
+// leaves a loop only when, at the loop's end, no pixel of the block is left in it, so a loop
+// that tested first ran its body once more than its lights, every pixel masked off.
 #ifdef UNROLLED_LIGHTS
 #define EACH_LIGHT(NAME, first, last, BODY, LOOKUP, KIND) NAME(BODY, first, LOOKUP, KIND)
 #else
 #define EACH_LIGHT(NAME, first, last, BODY, LOOKUP, KIND) \
-    for (int k = first; k < last; ++k) BODY(k, LOOKUP, KIND)
+    {                                                     \
+        int k = first, end = last;                        \
+        if (k < end) do {                                 \
+                BODY(k, LOOKUP, KIND)                     \
+                ++k;                                      \
+            } while (k < end);                            \
+    }
 #endif
 
 // Declares `light` (record k of the light order), `toLight` and `falloff` at this fragment.
@@ -304,29 +314,29 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 // then each kind of shadowed light this frame has, through LOOP(NAME, first, last, LOOKUP,
 // KIND) (NAME: the kind's macro under UNROLLED_LIGHTS).
 #ifdef SHADOWS_OFF
-#define UNSHADOWED_END uLightRanges.w
+#define UNSHADOWED_END range.ends.w
 #define SHADOWED_KINDS(LOOP)
 #else
-#define UNSHADOWED_END uLightRanges.x
+#define UNSHADOWED_END range.ends.x
 // (SHADOW_RAYS: each kind's lookup is the ray's, LOOKUP_OF.)
 #if defined(POINT_FACES)
 #define CUBE_KIND(LOOP) \
-    LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, LOOKUP_OF(faceVisibility), kPoint)
+    LOOP(CUBE_LIGHTS, range.ends.y, range.ends.z, LOOKUP_OF(faceVisibility), kPoint)
 #elif defined(HAS_CUBES)
 #define CUBE_KIND(LOOP) \
-    LOOP(CUBE_LIGHTS, uLightRanges.y, uLightRanges.z, LOOKUP_OF(cubeVisibility), kPoint)
+    LOOP(CUBE_LIGHTS, range.ends.y, range.ends.z, LOOKUP_OF(cubeVisibility), kPoint)
 #else
 #define CUBE_KIND(LOOP)
 #endif
 #ifdef HAS_CASCADES
 #define CASCADE_KIND(LOOP)                                                               \
-    LOOP(CASCADED_LIGHTS, uLightRanges.z, uLightRanges.w, LOOKUP_OF(cascadeVisibility), \
+    LOOP(CASCADED_LIGHTS, range.ends.z, range.ends.w, LOOKUP_OF(cascadeVisibility), \
          kDirectional)
 #else
 #define CASCADE_KIND(LOOP)
 #endif
 #define SHADOWED_KINDS(LOOP)                                                                    \
-    LOOP(MAP_LIGHTS, uLightRanges.x, uLightRanges.y, LOOKUP_OF(mapVisibility), kSingleMapKind) \
+    LOOP(MAP_LIGHTS, range.ends.x, range.ends.y, LOOKUP_OF(mapVisibility), kSingleMapKind) \
     CUBE_KIND(LOOP) CASCADE_KIND(LOOP)
 #endif
 
@@ -392,7 +402,8 @@ void main() {
     Receiver receiver = receiverOf(n, planeNormal);
     vec3 lit = uAmbient;
     vec3 unused;
-    EACH_LIGHT(UNSHADOWED_LIGHTS, uLightFirst, UNSHADOWED_END, FLOOR_UNSHADOWED, _, _)
+    LightRange range = lightRange();
+    EACH_LIGHT(UNSHADOWED_LIGHTS, range.first, UNSHADOWED_END, FLOOR_UNSHADOWED, _, _)
     SHADOWED_KINDS(FLOOR_LOOP)
     fragColour = vec4(lit * vIn.colour, 1.0);
 }
@@ -471,7 +482,8 @@ void main() {
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
     vec3 factor = vec3(1.0);
-    EACH_LIGHT(UNSHADOWED_LIGHTS, uLightFirst, UNSHADOWED_END, UNSHADOWED_LIGHT, _, _)
+    LightRange range = lightRange();
+    EACH_LIGHT(UNSHADOWED_LIGHTS, range.first, UNSHADOWED_END, UNSHADOWED_LIGHT, _, _)
     SHADOWED_KINDS(SHADOWED_LOOP)
     vec3 colour = lit * factor;
 #ifdef DEBUG_CASCADES

@@ -146,11 +146,13 @@ int runRender(const RenderArgs& args, bool verbose) {
         const gnomon::FrameStats stats = renderer.lastFrameStats();
         std::fprintf(stderr,
                      "gnomon: %d shadow map(s), %d shadow pass(es) drawing %llu triangles "
-                     "(%d caster draws culled), main pass %llu triangles in %d light tile(s)%s, "
+                     "(%d caster draws culled), main pass %llu triangles in %d light tile(s)%s%s, "
                      "%.1f MiB of shadow maps\n",
                      stats.shadowMaps, stats.shadowPasses,
                      (unsigned long long)stats.shadowTriangles, stats.castersCulled,
-                     (unsigned long long)stats.mainTriangles, std::max(1, stats.lightTiles),
+                     (unsigned long long)stats.mainTriangles,
+                     std::max({1, stats.lightTiles, stats.lightLists}),
+                     stats.lightLists > 0 ? " of light lists in one draw" : "",
                      stats.mainFromViewDepth ? " from the view's depth" : "",
                      double(stats.shadowMapBytes) / (1024.0 * 1024.0));
         if (stats.momentPasses > 0) {

@@ -44,6 +44,9 @@ struct OptionSpec {
     const char* zeroName = "";              // Integer: how 0 is spelled ("auto"); "" = "0"
     bool odd = false;                       // Integer: odd values only
     std::vector<std::string> choices = {};  // Choice
+    // Choice that was once a Switch: the choice `on` (scene files: true) still names; `off`
+    // (false) is a choice of its own. "" for the others.
+    const char* formerOn = "";
     const char* defaultNote = "";  // instead of the library default in help ("the scene's")
     // The value as a number: Switch 0/1, Choice its index. Null for Size, whose value is
     // two numbers (width and height: formatOption and parseOption handle it).

@@ -197,6 +197,15 @@ enum class DebugView {
     Rays,         // tint the pixels where a shadow ray decided (--shadow-rays) in magenta
 };
 
+// How the main pass leaves out the lights that cannot reach part of the screen (tiled forward
+// shading): each way gives the same image.
+enum class LightTiles {
+    Auto,   // the cheapest of the three below by a cost model of llvmpipe (--light-tiles on)
+    Lists,  // one draw; each pixel reads its screen tile's list of lights from a texture
+    Draws,  // one draw per screen tile, each with the lights that reach it
+    Off,    // one draw, every light on every pixel
+};
+
 // How computed colours are stored in the output image.
 enum class OutputEncoding {
     Linear,  // as computed, no transfer function: the textbooks' programs (built-in scenes)
@@ -211,7 +220,7 @@ struct ShadingOptions {
     bool dither = true;
     // Main pass in screen tiles, each looking up only the lights that can reach it (tiled
     // forward shading): the same image, fewer lookups where spots or ranged lights are.
-    bool lightTiles = true;
+    LightTiles lightTiles = LightTiles::Auto;
     // The main pass starts from the view depth pass's depth, where that pass is drawn for
     // this view anyway, and shades only the surface nearest in each pixel: the same image,
     // no shading of surfaces that a nearer one covers later.
@@ -248,6 +257,7 @@ const char* toString(ShadowRayMode v);
 const char* toString(FitTo v);
 const char* toString(PointMaps v);
 const char* toString(OutputEncoding v);
+const char* toString(LightTiles v);
 std::optional<ShadowedRule> parseShadowedRule(const std::string& s);
 std::optional<OutsidePolicy> parseOutsidePolicy(const std::string& s);
 std::optional<CullMode> parseCullMode(const std::string& s);

@@ -64,6 +64,7 @@ struct FrameStats {
     std::uint64_t mainTriangles = 0;    // triangles submitted to the main pass
     int castersCulled = 0;              // caster draws skipped as outside a light's volume
     int lightTiles = 0;                 // screen tiles of the main pass (0: drawn untiled)
+    int lightLists = 0;  // screen tiles whose lights one main-pass draw reads (0: no lists)
     // --shadow-rays all: the casters' BVH was built this frame (1), or kept (0: casters unchanged).
     int shadowRayBuilds = 0;
     // The main pass started from the view depth pass's depth (depth-prepass): each pixel

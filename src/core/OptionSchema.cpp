@@ -100,11 +100,14 @@ void addShading(std::vector<OptionSpec>& s) {
          .onlyWith = "--shadowed factor"});
     add({.name = "light-tiles",
          .group = G::Shading,
-         .doc = "draw the main pass in screen tiles, each with only the lights that reach it "
-                "(the same image; off: every light on every pixel)",
-         .kind = K::Switch,
-         .max = 1,
-         NUMBER(shading.lightTiles, bool)});
+         .doc = "leave out of each screen tile the lights that cannot reach it: lists (one draw, "
+                "each pixel reads its tile's lights from a texture), draws (one draw per tile), "
+                "auto (a cost model picks either or neither; on: the same), or off (every light "
+                "on every pixel); the same image",
+         .kind = K::Choice,
+         .choices = namesOf<LightTiles>(),
+         .formerOn = "auto",
+         ENUM(shading.lightTiles, LightTiles)});
     add({.name = "depth-prepass",
          .group = G::Shading,
          .doc = "start the main pass from the view's depth pass where one is drawn for the "

@@ -77,7 +77,8 @@ std::optional<std::string> parseOption(const OptionSpec& spec, const std::string
             return std::nullopt;
         case OptionKind::Choice:
             for (std::size_t i = 0; i < spec.choices.size(); ++i) {
-                if (text == spec.choices[i]) {
+                if (text == spec.choices[i] ||
+                    (*spec.formerOn && text == "on" && spec.choices[i] == spec.formerOn)) {
                     spec.set(o, double(i));
                     return std::nullopt;
                 }
@@ -257,6 +258,8 @@ std::string jsonType(const OptionSpec& spec) {
             std::string out;
             for (const std::string& c : spec.choices)
                 out += (out.empty() ? "`" : ", `") + c + "`";
+            if (*spec.formerOn)
+                out += " (or `true`: " + std::string(spec.formerOn) + ", `false`: off)";
             return out;
         }
     }

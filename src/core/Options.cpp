@@ -74,6 +74,11 @@ const std::pair<const char*, PointMaps> kPointMaps[] = {{"faces", PointMaps::Fac
 const std::pair<const char*, OutputEncoding> kOutputs[] = {{"linear", OutputEncoding::Linear},
                                                            {"srgb", OutputEncoding::Srgb}};
 
+const std::pair<const char*, LightTiles> kLightTiles[] = {{"auto", LightTiles::Auto},
+                                                          {"lists", LightTiles::Lists},
+                                                          {"draws", LightTiles::Draws},
+                                                          {"off", LightTiles::Off}};
+
 }  // namespace
 
 const char* toString(ShadowedRule v) {
@@ -150,6 +155,9 @@ std::optional<PointMaps> parsePointMaps(const std::string& s) {
 }
 const char* toString(OutputEncoding v) {
     return nameOf(v, kOutputs);
+}
+const char* toString(LightTiles v) {
+    return nameOf(v, kLightTiles);
 }
 std::optional<OutputEncoding> parseOutputEncoding(const std::string& s) {
     return lookup(s, kOutputs);

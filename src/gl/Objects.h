@@ -115,6 +115,12 @@ public:
                              int rowTexels);
     // New contents for a texelRows texture: `texels` texels (at most its width x height).
     void writeTexelRows(const float* rgba, std::size_t texels);
+    // RGBA32I texels for texelFetch (integer textures are never filtered): width x height
+    // from `rgba`, the row at y = 0 first.
+    static Texture integers2D(const std::string& label, const std::int32_t* rgba, int width,
+                              int height);
+    // New contents for an integers2D texture, all of its texels.
+    void writeIntegers2D(const std::int32_t* rgba);
     // A 2D-array view of `source`'s layers (a cube-map array's faces as stored), sharing its
     // storage.
     static Texture layersView(const std::string& label, const Texture& source);

@@ -309,6 +309,26 @@ void Texture::writeTexelRows(const float* rgba, std::size_t texels) {
     write(int(full), rest, 1, rgba + full * w * 4);
 }
 
+Texture Texture::integers2D(const std::string& label, const std::int32_t* rgba, int width,
+                            int height) {
+    Texture t(create(GL_TEXTURE_2D), GL_TEXTURE_2D, GL_RGBA32I, width, height, 1);
+    storage(t.id(), GL_TEXTURE_2D, 1, GL_RGBA32I, width, height, 1);
+    t.writeIntegers2D(rgba);
+    t.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    t.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    setLabel(GL_TEXTURE, t.id(), label);
+    return t;
+}
+
+void Texture::writeIntegers2D(const std::int32_t* rgba) {
+    if (dsa()) {
+        glTextureSubImage2D(id(), 0, 0, 0, mWidth, mHeight, GL_RGBA_INTEGER, GL_INT, rgba);
+    } else {
+        glBindTexture(GL_TEXTURE_2D, id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, mWidth, mHeight, GL_RGBA_INTEGER, GL_INT, rgba);
+    }
+}
+
 void bindTexture(int unit, const Texture& texture) {
     if (dsa()) {
         glBindTextureUnit(GLuint(unit), texture.id());

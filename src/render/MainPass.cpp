@@ -63,6 +63,22 @@ void MainPass::uploadLights(const std::vector<GpuLight>& lights,
     glBindBufferBase(GL_UNIFORM_BUFFER, 2, mOrder.id());
 }
 
+int MainPass::bindLists(const LightLists& lists) {
+    if (!mLists || mLists.width() != lists.columns || mLists.height() != lists.rows) {
+        mLists =
+            gl::Texture::integers2D("light lists", &lists.texels[0].x, lists.columns, lists.rows);
+        mUploadedLists = lists.texels;
+    } else if (lists.texels != mUploadedLists) {
+        mLists.writeIntegers2D(&lists.texels[0].x);
+        mUploadedLists = lists.texels;
+    }
+    gl::bindTexture(9, mLists);
+    int shift = 0;
+    while ((1 << shift) < lists.size)
+        ++shift;
+    return shift;
+}
+
 // The maps and their samplers on units 0 (2D) and 1 (cubes), and on 2 and 3 without
 // comparison when the lookups read stored depth; true in that case.
 bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
@@ -151,6 +167,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     gl::uniform(5, u.eye);
     gl::uniform(6, u.ranges);
     gl::uniform(10, u.first);
+    if (u.tileShift >= 0) gl::uniform(0, u.tileShift);
     gl::uniform(7, u.depthAware);
     if (u.in->hasCascades) gl::uniform(11, u.in->cascadeDepth);
     if (u.in->viewDepth) {
@@ -172,7 +189,10 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
 void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
                          const FrameUniforms& u, bool visibilityPass, bool floor) {
     const MainPassInputs& in = *u.in;
-    const glm::ivec4 counts = unrolledCounts(u.ranges, u.first, options.shadow.enabled);
+    // Light lists vary per tile: loops, never written out.
+    const bool lists = u.tileShift >= 0;
+    const glm::ivec4 counts =
+        lists ? glm::ivec4(-1) : unrolledCounts(u.ranges, u.first, options.shadow.enabled);
     bool culling = true, material = false;
     // Receives shadows and casts none (a ground added by --ground, glmark2's); has no
     // highlight (gnomon's ground under a glTF model, whose materials all have one): each
@@ -190,16 +210,16 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     }
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    useProgram(program(options, in, counts, visibilityPass, false, floor, variant), u);
+    useProgram(program(options, in, counts, visibilityPass, false, floor, variant, lists), u);
     GLuint texture = ~0u;
     // Sets the state `item` needs.
     auto setState = [&](const DrawItem& item) {
         if (item.materialPath != material || !(variantOf(item) == variant)) {
             material = item.materialPath;
             variant = variantOf(item);
-            useProgram(
-                program(options, in, counts, visibilityPass, material && !floor, floor, variant),
-                u);
+            useProgram(program(options, in, counts, visibilityPass, material && !floor, floor,
+                               variant, lists),
+                       u);
         }
         if (material && scene.textureOf(item) != texture) {
             texture = scene.textureOf(item);
@@ -288,6 +308,8 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
                       const VisibilityTarget* visibility, bool floor) {
     const TiledLights& tiled = *in.tiled;
     uploadLights(*in.lights, tiled.order());
+    // Before the maps: on ES a texture is made and written through the active unit's binding.
+    const int tileShift = tiled.lists().size > 0 ? bindLists(tiled.lists()) : -1;
     const bool rawDepths = bindMaps(in, options.shadow);
 
     const DepthFormat cubeFormat = isColourFormat(options.shadow.depthFormat)
@@ -314,7 +336,12 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     glDepthFunc(in.depthReady ? GL_LEQUAL : GL_LESS);
     glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);
     glCullFace(GL_BACK);
-    if (tiled.tiles().empty()) {
+    if (tiled.lists().size > 0) {
+        // One draw; each pixel reads its tile's ranges of the order (main.frag.glsl).
+        u.tileShift = tileShift;
+        drawItems(scene, options, u, false, floor);
+        u.tileShift = -1;
+    } else if (tiled.tiles().empty()) {
         drawItems(scene, options, u, false, floor);
     } else {
         // Each pixel lies in one tile: drawn there once, blended surfaces in the same order.

@@ -17,6 +17,7 @@
 namespace gnomon::render {
 
 class RayScene;
+struct LightLists;
 class TiledLights;
 class TransmittancePass;
 class VisibilityTarget;
@@ -90,6 +91,7 @@ private:
         glm::ivec4 ranges{0};        // the light order's range: every light, or one tile's
         int first = 0;
         int recordLight = -1;  // ES visibility passes: the scene light recorded
+        int tileShift = -1;    // light lists: log2 of their tiles' side (-1: no lists)
     };
     void useProgram(const gl::Program& p, const FrameUniforms& u);
     void recordVisibilityByLight(const GpuScene& scene, const RenderOptions& options,
@@ -103,11 +105,14 @@ private:
         bool operator==(const ItemVariant&) const = default;
     };
     // `material`: the MATERIAL_PATH variant (textures, masks, blending). `counts`: the draw's
-    // lights of each kind when its loops are written out per light, or all -1.
+    // lights of each kind when its loops are written out per light, or all -1. `lists`: the
+    // draw reads each pixel's lights from the light lists (LIGHT_LISTS).
     const gl::Program& program(const RenderOptions& options, const MainPassInputs& in,
                                glm::ivec4 counts, bool visibilityPass, bool material, bool floor,
-                               ItemVariant item);
+                               ItemVariant item, bool lists);
     void uploadLights(const std::vector<GpuLight>& lights, const std::vector<std::int32_t>& order);
+    // The light lists' texture on unit 9, uploaded when it changed; the shift of their tiles.
+    int bindLists(const LightLists& lists);
     bool bindMaps(const MainPassInputs& in, const ShadowOptions& so);
 
     std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
@@ -116,6 +121,8 @@ private:
     std::vector<GpuLight> mUploaded;
     gl::Buffer mOrder;  // the light order (kLightOrderCapacity entries), updated on change
     std::vector<std::int32_t> mUploadedOrder;
+    gl::Texture mLists;  // the light lists' tiles (TiledLights.h, LightLists), updated on change
+    std::vector<glm::ivec4> mUploadedLists;
     // Unit 0 (2D maps): compares for native formats, filters encoded depth for colour ones.
     // Unit 1 (cubes): always compares. Rebuilt only when the options they follow change.
     gl::Sampler mMapSampler, mCubeSampler;

@@ -12,7 +12,7 @@ namespace gnomon::render {
 
 const gl::Program& MainPass::program(const RenderOptions& options, const MainPassInputs& in,
                                      glm::ivec4 counts, bool visibilityPass, bool material,
-                                     bool floor, ItemVariant item) {
+                                     bool floor, ItemVariant item, bool lists) {
     // Looking a program up packs the variant's fields (no allocation); the defines are
     // spelled out only to build a new one.
     MainVariant v = variantOf(options, floor, item.receiverOnly);
@@ -27,6 +27,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     if (!in.rays) v.shadowRays = 0;  // no caster to trace (shadows off, an empty scene)
     v.singleMapKind = MainVariant::Bits(in.singleMapKind + 1);
     v.noSpecular = item.noSpecular;
+    v.lightLists = lists;
     static_assert(kMaxUnrolledLights < 16, "a count must fit its four bits");
     if (counts.x >= 0) {
         v.unrolled = 1;

@@ -88,6 +88,7 @@ std::vector<std::string> choiceDefines(const MainVariant& v) {
     if (v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain))
         d.push_back("SHADOW_RAYS_UNCERTAIN");
     if (v.debugRays) d.push_back("DEBUG_RAYS");
+    if (v.lightLists) d.push_back("LIGHT_LISTS");
     return d;
 }
 

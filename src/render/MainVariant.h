@@ -49,7 +49,8 @@ struct MainVariant {
     Bits cascadedCount : 4 = 0;
     Bits shadowRays : 2 = 0;  // ShadowRayMode when rays are traced (tracesShadowRays), else 0
     Bits debugRays : 1 = 0;   // --debug-view rays
-    Bits unused : 5 = 0;
+    Bits lightLists : 1 = 0;  // each pixel reads its tile's lights (TiledLights' lists)
+    Bits unused : 4 = 0;
 
     // The bits as one number (memcpy: libc++ 14, the web build's, has no std::bit_cast).
     std::uint64_t key() const {

@@ -249,13 +249,16 @@ struct Renderer::Impl {
         // The view's depth bounds each tile's volume, when blended surfaces (not in it) do
         // not lie over it.
         const shadow::DepthCells cells = viewDepth.cells();
-        tiled.plan(plan.records(), plan.ranges(), in.viewFromWorld, in.clipFromView, options.width,
-                   options.height, stats.mainTriangles,
-                   options.shading.lightTiles && !fitCamera &&
-                       options.shading.shadowedRule != ShadowedRule::Factor && !scene.hasUnlit(),
-                   samples && !scene.hasBlended() ? &cells : nullptr);
+        tiled.plan(
+            plan.records(), plan.ranges(), in.viewFromWorld, in.clipFromView, options.width,
+            options.height, stats.mainTriangles,
+            !fitCamera && options.shading.shadowedRule != ShadowedRule::Factor && !scene.hasUnlit()
+                ? options.shading.lightTiles
+                : LightTiles::Off,
+            samples && !scene.hasBlended() ? &cells : nullptr);
         in.tiled = &tiled;
         stats.lightTiles = int(tiled.tiles().size());
+        stats.lightLists = int(tiled.lists().texels.size());
         in.hasCascades = plan.hasCascades();
         in.pointFaces = plan.hasPointFaces();
         in.singleMapKind = plan.singleMapKind();

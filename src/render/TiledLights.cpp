@@ -8,6 +8,12 @@
 namespace gnomon::render {
 
 namespace {
+// Tiles' sides, in pixels: lists go down to the finest, draws to kSmallestDrawnTile (each
+// draw costs the scene's triangles again).
+constexpr int kCoarsestTile = 256;
+constexpr int kSmallestDrawnTile = 64;
+constexpr std::int64_t kMaxTiles = 4096;
+
 // A record's reach (shaders/main.frag.glsl, lightAt): spots end at their outer cone, point
 // and spot lights with a range at that range; directional and area lights reach everywhere.
 shadow::LightReach reachOf(const GpuLight& g, bool shadowed, const glm::mat4& viewFromWorld) {
@@ -26,6 +32,15 @@ shadow::LightReach reachOf(const GpuLight& g, bool shadowed, const glm::mat4& vi
         r.shape = shadow::LightReach::Shape::Sphere;
     }
     return r;
+}
+// The finest tiles: 16 pixels, or the least power of two that keeps their count within
+// kMaxTiles (culling costs each tile and light on the CPU every frame).
+int finestTile(int width, int height) {
+    int size = 16;
+    while (size < kCoarsestTile &&
+           std::int64_t((width + size - 1) / size) * ((height + size - 1) / size) > kMaxTiles)
+        size *= 2;
+    return size;
 }
 }  // namespace
 
@@ -46,14 +61,15 @@ bool TiledLights::wantsDepth(const Scene& s, const RenderOptions& options) {
 
 void TiledLights::plan(const std::vector<GpuLight>& records, glm::ivec4 ranges,
                        const glm::mat4& viewFromWorld, const glm::mat4& clipFromView, int width,
-                       int height, std::uint64_t triangles, bool allowed,
+                       int height, std::uint64_t triangles, LightTiles mode,
                        const shadow::DepthCells* depth) {
     mRanges = ranges;
     mTiles.clear();
+    mLists = {};
     mOrder.resize(std::size_t(ranges.w));
     for (int i = 0; i < ranges.w; ++i)
         mOrder[std::size_t(i)] = i;
-    if (!allowed || ranges.w == 0) return;
+    if (mode == LightTiles::Off || ranges.w == 0) return;
 
     mReach.clear();
     bool anyBounded = false;
@@ -61,53 +77,102 @@ void TiledLights::plan(const std::vector<GpuLight>& records, glm::ivec4 ranges,
         mReach.push_back(reachOf(records[std::size_t(i)], i >= ranges.x, viewFromWorld));
         anyBounded = anyBounded || mReach.back().shape != shadow::LightReach::Shape::Everywhere;
     }
-    if (!anyBounded) return;
+    if (!anyBounded && mode == LightTiles::Auto) return;
 
-    // The grid with the largest expected gain, if any gains.
-    const glm::mat4 viewFromClip = glm::inverse(clipFromView);
-    double best = 0.0;
-    for (int size : {64, 128, 256}) {
-        shadow::cullTiles(mReach, viewFromClip, width, height, size, depth, mCull);
-        const double gain = shadow::tilingGainMs(mCull, mReach, width, height, triangles);
-        if (gain > best) {
-            best = gain;
-            std::swap(mBest, mCull);
+    // Every grid from the finest to the coarsest tiles, the finest culled and the others made
+    // from it; each way and grid with its expected gain, tried from the best down until the
+    // order holds one: in Auto only those that gain, otherwise the way asked for, whatever it
+    // gains.
+    const int finest = finestTile(width, height);
+    std::size_t grids = 0;
+    for (int size = finest; size <= kCoarsestTile; size *= 2)
+        ++grids;
+    mGrids.resize(grids);
+    shadow::cullTiles(mReach, glm::inverse(clipFromView), width, height, finest, depth, mGrids[0]);
+    mCandidates.clear();
+    for (std::size_t g = 0; g < grids; ++g) {
+        const int size = finest << g;
+        if (g > 0) {
+            shadow::coarsenTiles(mGrids[0], size / finest, width, height, mReach.size(), mGrids[g]);
         }
+        const shadow::TilingGain gain =
+            shadow::tilingGainMs(mGrids[g], mReach, triangles, MainPass::kMaxUnrolledLights);
+        if (mode != LightTiles::Draws) mCandidates.push_back({gain.lists, g, true});
+        if (mode != LightTiles::Lists && size >= kSmallestDrawnTile)
+            mCandidates.push_back({gain.draws, g, false});
     }
-    if (best > 0.0) buildTiles(width, height);
+    std::sort(mCandidates.begin(), mCandidates.end(),
+              [](const Candidate& a, const Candidate& b) { return a.gain > b.gain; });
+    for (const Candidate& c : mCandidates) {
+        if (mode == LightTiles::Auto && !(c.gain > 0.0)) return;
+        if (c.lists ? buildLists(mGrids[c.grid]) : buildTiles(mGrids[c.grid], width, height))
+            return;
+    }
 }
 
-// One tile per run of neighbours in a row that the same lights reach.
-void TiledLights::buildTiles(int width, int height) {
-    const std::size_t n = mReach.size();
+// The order's entries for the lights `reach` marks, by kind, after those it holds.
+LightTile TiledLights::appendLights(const std::uint8_t* reach) {
     const int ends[4] = {mRanges.x, mRanges.y, mRanges.z, mRanges.w};
-    for (int r = 0; r < mBest.rows; ++r) {
-        for (int c = 0; c < mBest.columns;) {
-            const std::uint8_t* reach =
-                mBest.reaches.data() + std::size_t(r * mBest.columns + c) * n;
+    LightTile tile;
+    tile.first = int(mOrder.size());
+    int start = 0;
+    for (int kind = 0; kind < 4; ++kind) {
+        for (int i = start; i < ends[kind]; ++i)
+            if (reach[i]) mOrder.push_back(i);
+        tile.ends[kind] = int(mOrder.size());
+        start = ends[kind];
+    }
+    return tile;
+}
+
+// One tile per run of neighbours in a row that the same lights reach. False when the order
+// cannot hold them.
+bool TiledLights::buildTiles(const shadow::TileReach& grid, int width, int height) {
+    const std::size_t n = mReach.size();
+    for (int r = 0; r < grid.rows; ++r) {
+        for (int c = 0; c < grid.columns;) {
+            const std::uint8_t* reach = grid.reaches.data() + std::size_t(r * grid.columns + c) * n;
             int run = 1;
-            while (c + run < mBest.columns && std::memcmp(reach, reach + run * n, n) == 0)
+            while (c + run < grid.columns && std::memcmp(reach, reach + run * n, n) == 0)
                 ++run;
-            LightTile tile;
-            const int x0 = c * mBest.size, y0 = r * mBest.size;
-            tile.scissor = {x0, y0, std::min(width, (c + run) * mBest.size) - x0,
-                            std::min(height, (r + 1) * mBest.size) - y0};
-            tile.first = int(mOrder.size());
-            int start = 0;
-            for (int kind = 0; kind < 4; ++kind) {
-                for (int i = start; i < ends[kind]; ++i)
-                    if (reach[i]) mOrder.push_back(i);
-                tile.ends[kind] = int(mOrder.size());
-                start = ends[kind];
-            }
+            LightTile tile = appendLights(reach);
+            const int x0 = c * grid.size, y0 = r * grid.size;
+            tile.scissor = {x0, y0, std::min(width, (c + run) * grid.size) - x0,
+                            std::min(height, (r + 1) * grid.size) - y0};
             mTiles.push_back(tile);
             c += run;
         }
     }
-    if (mOrder.size() > std::size_t(kLightOrderCapacity)) {  // too many: draw untiled
-        mOrder.resize(std::size_t(mRanges.w));
-        mTiles.clear();
+    if (mOrder.size() <= std::size_t(kLightOrderCapacity)) return true;
+    mOrder.resize(std::size_t(mRanges.w));
+    mTiles.clear();
+    return false;
+}
+
+// One texel per tile; tiles that the same lights reach share their entries of the order.
+// False when the order cannot hold them.
+bool TiledLights::buildLists(const shadow::TileReach& grid) {
+    const std::size_t n = mReach.size();
+    mShared.clear();
+    mLists.size = grid.size;
+    mLists.columns = grid.columns;
+    mLists.rows = grid.rows;
+    mLists.texels.resize(std::size_t(grid.columns * grid.rows));
+    std::string reach;
+    for (std::size_t t = 0; t < mLists.texels.size(); ++t) {
+        reach.assign(reinterpret_cast<const char*>(grid.reaches.data() + t * n), n);
+        // The cascaded end is implied (LightLists): every tile holds every cascaded light,
+        // also one where the view's depth shows nothing drawn.
+        std::fill(reach.begin() + mRanges.z, reach.end(), char(1));
+        auto [it, added] = mShared.try_emplace(reach);
+        if (added) it->second = appendLights(reinterpret_cast<const std::uint8_t*>(reach.data()));
+        const LightTile& tile = it->second;
+        mLists.texels[t] = {tile.first, tile.ends.x, tile.ends.y, tile.ends.z};
     }
+    if (mOrder.size() <= std::size_t(kLightOrderCapacity)) return true;
+    mOrder.resize(std::size_t(mRanges.w));
+    mLists = {};
+    return false;
 }
 
 }  // namespace gnomon::render

@@ -362,7 +362,8 @@ Camera readCamera(const Reader& r, const Json& j, const std::string& path, const
 }
 
 // One option of the schema from its JSON value: switches as true/false, numbers as numbers
-// (integers whole; a named 0 such as "auto" as that string), choices and the size as strings.
+// (integers whole; a named 0 such as "auto" as that string), choices and the size as strings
+// (a choice that was once a switch also as true/false).
 void readOption(const Reader& r, const OptionSpec& spec, const Json& v, const std::string& at,
                 RenderOptions& o) {
     switch (spec.kind) {
@@ -385,6 +386,10 @@ void readOption(const Reader& r, const OptionSpec& spec, const Json& v, const st
             return;
         case OptionKind::Choice:
         case OptionKind::Size:
+            if (v.is_boolean() && *spec.formerOn) {  // written when the option was a switch
+                parseOption(spec, v.get<bool>() ? "on" : "off", o);
+                return;
+            }
             if (!v.is_string() || parseOption(spec, v.get<std::string>(), o)) {
                 r.fail(at, spec.kind == OptionKind::Size
                                ? "expected \"WIDTHxHEIGHT\" such as \"512x512\", got " + preview(v)

@@ -15,6 +15,25 @@ constexpr double kShadowedNsPerPixel = 20.0;
 constexpr double kUnshadowedNsPerPixel = 4.0;
 constexpr double kTriangleNs = 150.0;
 constexpr double kDrawMs = 0.03;
+// Loops instead of lookups written out: this share more per light, from the local-lights
+// sweep's 8 lights in loops and written out. The light lists' fetch of the pixel's tile, per
+// pixel drawn: bounded by the main pass of a build whose every list is empty.
+constexpr double kLoopShare = 0.05;
+constexpr double kListNsPerPixel = 2.0;
+
+// One pixel's lights (those `reach` marks; null: all) in ns, in loops when more than
+// `maxWrittenOut` (negative: always in loops).
+double pixelNs(const std::vector<LightReach>& lights, const std::uint8_t* reach,
+               int maxWrittenOut) {
+    int count = 0;
+    double ns = 0.0;
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        if (reach && !reach[l]) continue;
+        ++count;
+        ns += lights[l].shadowed ? kShadowedNsPerPixel : kUnshadowedNsPerPixel;
+    }
+    return count > maxWrittenOut ? ns * (1.0 + kLoopShare) : ns;
+}
 
 struct Plane {
     glm::vec3 normal;  // outward
@@ -87,14 +106,20 @@ std::array<glm::vec3, 8> tileCorners(const glm::mat4& viewFromClip, int width, i
     return corners;
 }
 
-bool mayReach(const LightReach& light, const std::array<glm::vec3, 8>& corners) {
+namespace {
+bool mayReachWithin(const LightReach& light, const std::array<glm::vec3, 8>& corners,
+                    const std::array<Plane, 6>& planes) {
     if (light.shape == LightReach::Shape::Everywhere) return true;
-    const std::array<Plane, 6> planes = framePlanes(corners);
     if (light.range > 0.0f) {
         for (const Plane& plane : planes)
             if (plane.distance(light.position) > light.range) return false;
     }
     return light.shape != LightReach::Shape::Cone || coneMayReach(light, corners, planes);
+}
+}  // namespace
+
+bool mayReach(const LightReach& light, const std::array<glm::vec3, 8>& corners) {
+    return mayReachWithin(light, corners, framePlanes(corners));
 }
 
 namespace {
@@ -120,6 +145,7 @@ void cullTiles(const std::vector<LightReach>& lights, const glm::mat4& viewFromC
     out.columns = (width + size - 1) / size;
     out.rows = (height + size - 1) / size;
     out.reaches.assign(std::size_t(out.columns * out.rows) * lights.size(), 1);
+    out.drawn.assign(std::size_t(out.columns * out.rows), 0);
     for (int r = 0; r < out.rows; ++r) {
         for (int c = 0; c < out.columns; ++c) {
             const int x0 = c * size, y0 = r * size;
@@ -131,19 +157,39 @@ void cullTiles(const std::vector<LightReach>& lights, const glm::mat4& viewFromC
             range = glm::clamp(range + glm::vec2(-1e-5f, 1e-5f), 0.0f, 1.0f);
             const auto corners =
                 tileCorners(viewFromClip, width, height, x0, y0, x1, y1, range.x, range.y);
+            const std::array<Plane, 6> planes = framePlanes(corners);
             const std::size_t tile = std::size_t(r * out.columns + c);
+            out.drawn[tile] = empty ? 0 : (x1 - x0) * (y1 - y0);
             for (std::size_t l = 0; l < lights.size(); ++l) {
                 out.reaches[tile * lights.size() + l] =
-                    !empty && mayReach(lights[l], corners) ? 1 : 0;
+                    !empty && mayReachWithin(lights[l], corners, planes) ? 1 : 0;
             }
         }
     }
 }
 
-double tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& lights, int width,
-                    int height, std::uint64_t triangles) {
+void coarsenTiles(const TileReach& fine, int factor, int width, int height, std::size_t lights,
+                  TileReach& out) {
+    out.size = fine.size * factor;
+    out.columns = (width + out.size - 1) / out.size;
+    out.rows = (height + out.size - 1) / out.size;
+    out.reaches.assign(std::size_t(out.columns * out.rows) * lights, 0);
+    out.drawn.assign(std::size_t(out.columns * out.rows), 0);
+    for (int r = 0; r < fine.rows; ++r) {
+        for (int c = 0; c < fine.columns; ++c) {
+            const std::size_t from = std::size_t(r * fine.columns + c);
+            const std::size_t to = std::size_t((r / factor) * out.columns + c / factor);
+            out.drawn[to] += fine.drawn[from];
+            for (std::size_t l = 0; l < lights; ++l)
+                out.reaches[to * lights + l] |= fine.reaches[from * lights + l];
+        }
+    }
+}
+
+TilingGain tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& lights,
+                        std::uint64_t triangles, int maxWrittenOut) {
     const std::size_t n = lights.size();
-    double savedNs = 0.0;
+    double noneNs = 0.0, drawsNs = 0.0, listsNs = 0.0;
     int draws = 0;
     for (int r = 0; r < tiles.rows; ++r) {
         for (int c = 0; c < tiles.columns; ++c) {
@@ -151,18 +197,14 @@ double tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& light
             const std::uint8_t* reach = tiles.reaches.data() + tile * n;
             // Neighbours in a row with the same lights share one draw.
             if (c == 0 || n == 0 || std::memcmp(reach, reach - n, n) != 0) ++draws;
-            const double pixels = double(std::min(width, (c + 1) * tiles.size) - c * tiles.size) *
-                                  double(std::min(height, (r + 1) * tiles.size) - r * tiles.size);
-            for (std::size_t l = 0; l < n; ++l) {
-                if (!reach[l]) {
-                    savedNs +=
-                        pixels * (lights[l].shadowed ? kShadowedNsPerPixel : kUnshadowedNsPerPixel);
-                }
-            }
+            const double pixels = double(tiles.drawn[tile]);  // where something is shaded
+            noneNs += pixels * pixelNs(lights, nullptr, maxWrittenOut);
+            drawsNs += pixels * pixelNs(lights, reach, maxWrittenOut);
+            listsNs += pixels * (pixelNs(lights, reach, -1) + kListNsPerPixel);
         }
     }
-    const double costMs = double(draws - 1) * (double(triangles) * kTriangleNs * 1e-6 + kDrawMs);
-    return savedNs * 1e-6 - costMs;
+    const double drawMs = double(triangles) * kTriangleNs * 1e-6 + kDrawMs;
+    return {(noneNs - drawsNs) * 1e-6 - double(draws - 1) * drawMs, (noneNs - listsNs) * 1e-6};
 }
 
 }  // namespace gnomon::shadow

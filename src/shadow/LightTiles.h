@@ -47,6 +47,9 @@ bool mayReach(const LightReach& light, const std::array<glm::vec3, 8>& corners);
 struct TileReach {
     int size = 0, columns = 0, rows = 0;
     std::vector<std::uint8_t> reaches;  // [tile * lights + light], tile = row * columns + column
+    // [tile]: its pixels, or those of its finer tiles where the view's depth shows something
+    // drawn (0: nothing drawn there).
+    std::vector<std::int32_t> drawn;
 };
 
 // The view's depth reduced to cells (render/ViewDepthPass.h): per cell of grid.block pixels,
@@ -62,10 +65,23 @@ struct DepthCells {
 void cullTiles(const std::vector<LightReach>& lights, const glm::mat4& viewFromClip, int width,
                int height, int size, const DepthCells* depth, TileReach& out);
 
-// What tiling is worth, from costs measured on llvmpipe (2 cores): each light skipped saves
-// its lookup on every pixel of the tile; each extra drawing of the scene costs its
-// triangles' setup again. Positive: tiling at this grid is expected to pay.
-double tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& lights, int width,
-                    int height, std::uint64_t triangles);
+// The grid of `fine` with tiles `factor` times as wide: a light reaches a coarse tile where
+// it reaches one of its fine ones, and a coarse tile's pixels drawn are theirs. As exact as
+// `fine`, and tighter than culling the coarse tiles themselves.
+void coarsenTiles(const TileReach& fine, int factor, int width, int height, std::size_t lights,
+                  TileReach& out);
+
+// What each way of tiling is worth against one draw with every light on every pixel, in ms
+// (positive: expected to pay), from costs measured on llvmpipe (2 cores). Each light a tile
+// leaves out saves its share of the main pass on each of the tile's pixels drawn (where nothing
+// was drawn, nothing is shaded either way). Draws: each extra drawing of the scene costs its
+// triangles' setup again; a draw of up to `maxWrittenOut` lights has its loops written out.
+// Lists: one draw, always in loops, plus each pixel's fetch of its tile's list.
+struct TilingGain {
+    double draws = 0.0;
+    double lists = 0.0;
+};
+TilingGain tilingGainMs(const TileReach& tiles, const std::vector<LightReach>& lights,
+                        std::uint64_t triangles, int maxWrittenOut);
 
 }  // namespace gnomon::shadow

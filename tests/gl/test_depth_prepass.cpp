@@ -69,7 +69,7 @@ TEST(DepthPrepass, NotWhereNoViewDepthIsDrawn) {
     // none is drawn for the main pass alone.
     Scene s = builtinScene("tutorial-room");
     s.options.shadow.fitTo = FitTo::Boxes;
-    s.options.shading.lightTiles = false;
+    s.options.shading.lightTiles = LightTiles::Off;
     EXPECT_FALSE(renderWithPrepass(s, true, 128).fromViewDepth);
 }
 

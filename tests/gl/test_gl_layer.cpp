@@ -117,5 +117,23 @@ TEST(GlLayer, MovedObjectsAreDeletedOnce) {
     EXPECT_FALSE(glIsBuffer(name));
 }
 
+TEST(GlLayer, IntegerTexelsReadBackAsWritten) {
+    // The light lists' texture (render/TiledLights.h): RGBA32I, row y = 0 first, rewritten
+    // whole. ES reads no integer texture back; its lists are checked by their pictures.
+    sharedRenderer().glInfo();
+    if (testsGles()) GTEST_SKIP() << "no integer texture readback on ES";
+    std::vector<std::int32_t> texels(3 * 2 * 4);
+    for (std::size_t i = 0; i < texels.size(); ++i)
+        texels[i] = std::int32_t(i * 37) - 300;
+    gl::Texture t = gl::Texture::integers2D("integers", texels.data(), 3, 2);
+    std::vector<std::int32_t> back(texels.size());
+    t.read(0, 0, 0, 3, 2, GL_RGBA_INTEGER, GL_INT, back.size() * 4, back.data());
+    EXPECT_EQ(back, texels);
+    std::reverse(texels.begin(), texels.end());
+    t.writeIntegers2D(texels.data());
+    t.read(0, 0, 0, 3, 2, GL_RGBA_INTEGER, GL_INT, back.size() * 4, back.data());
+    EXPECT_EQ(back, texels);
+}
+
 }  // namespace
 }  // namespace gnomon::test

@@ -31,7 +31,7 @@ Scene lightsOfEveryKind(int count) {
 Image renderUntiled(const Scene& s) {
     RenderOptions o = s.options;
     o.width = o.height = 128;
-    o.shading.lightTiles = false;  // one draw, with every light
+    o.shading.lightTiles = LightTiles::Off;  // one draw, with every light
     return sharedRenderer().render(s, o);
 }
 

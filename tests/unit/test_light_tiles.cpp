@@ -124,13 +124,81 @@ TEST(LightTiles, TilingPaysOnlyForWhatItSkips) {
     everywhere.shadowed = true;
     TileReach tiles;
     cullTiles({everywhere}, kViewFromClip, 512, 512, 64, nullptr, tiles);
-    EXPECT_LE(tilingGainMs(tiles, {everywhere}, 512, 512, 1000), 0.0);  // nothing skipped
+    const TilingGain none = tilingGainMs(tiles, {everywhere}, 1000, 8);
+    EXPECT_LE(none.draws, 0.0);  // nothing skipped
+    EXPECT_LE(none.lists, 0.0);
 
     LightReach spot = downSpot({0.0f, -1.0f, -10.0f}, 20.0f);
     spot.shadowed = true;
-    const std::vector<LightReach> lights(8, spot);
+    const std::vector<LightReach> lights(12, spot);
     cullTiles(lights, kViewFromClip, 512, 512, 64, nullptr, tiles);
-    EXPECT_GT(tilingGainMs(tiles, lights, 512, 512, 100), 0.0);
-    // The same skipping does not pay for drawing a million triangles again per tile.
-    EXPECT_LT(tilingGainMs(tiles, lights, 512, 512, 1000000), 0.0);
+    const TilingGain few = tilingGainMs(tiles, lights, 100, 8);
+    EXPECT_GT(few.draws, 0.0);
+    EXPECT_GT(few.lists, 0.0);
+    // The same skipping does not pay for drawing a million triangles again per tile; lists
+    // draw them once.
+    const TilingGain many = tilingGainMs(tiles, lights, 1000000, 8);
+    EXPECT_LT(many.draws, 0.0);
+    EXPECT_DOUBLE_EQ(many.lists, few.lists);
+}
+
+TEST(LightTiles, EmptyTilesCostNothingEitherWay) {
+    // Nothing drawn anywhere: no light is looked up whether tiled or not.
+    const std::vector<glm::vec2> ranges(4, glm::vec2(1.0f));
+    const DepthCells cells{&ranges, SampleGrid{{128, 128}, 64, {2, 2}}};
+    LightReach spot = downSpot({0.0f, -1.0f, -10.0f}, 20.0f);
+    spot.shadowed = true;
+    const std::vector<LightReach> lights(12, spot);
+    TileReach tiles;
+    cullTiles(lights, kViewFromClip, 128, 128, 64, &cells, tiles);
+    EXPECT_EQ(tiles.drawn, std::vector<std::int32_t>(4, 0));
+    EXPECT_DOUBLE_EQ(tilingGainMs(tiles, lights, 0, 8).lists, 0.0);
+}
+
+TEST(LightTiles, CoarserGridsAreTheUnionOfTheirFinerTiles) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<LightReach> lights;
+    for (int i = 0; i < 24; ++i) {
+        LightReach l = downSpot({6.0f * u(rng), 4.0f * u(rng), -12.0f + 8.0f * u(rng)}, 25.0f);
+        if (i % 2) {
+            l.shape = LightReach::Shape::Sphere;
+            l.range = 2.0f;
+        }
+        lights.push_back(l);
+    }
+    // 200 x 120 pixels: 16-pixel tiles, 4 x 4 of them to a coarse one, the last column and
+    // row of both narrower.
+    const std::vector<glm::vec2> depths(50 * 30, glm::vec2(0.3f, 0.9f));
+    std::vector<glm::vec2> cells = depths;
+    for (int cx = 0; cx < 100; ++cx)
+        cells[std::size_t(28 * 50 + cx)] = glm::vec2(1.0f);  // nothing drawn in the top 8 rows
+    const DepthCells depth{&cells, SampleGrid{{200, 120}, 4, {50, 30}}};
+    TileReach fine, coarse;
+    cullTiles(lights, kViewFromClip, 200, 120, 16, &depth, fine);
+    coarsenTiles(fine, 4, 200, 120, lights.size(), coarse);
+    ASSERT_EQ(coarse.size, 64);
+    ASSERT_EQ(coarse.columns, 4);
+    ASSERT_EQ(coarse.rows, 2);
+    int reached = 0;
+    for (int r = 0; r < coarse.rows; ++r) {
+        for (int c = 0; c < coarse.columns; ++c) {
+            for (std::size_t l = 0; l < lights.size(); ++l) {
+                std::uint8_t any = 0;
+                for (int fr = r * 4; fr < std::min(fine.rows, r * 4 + 4); ++fr)
+                    for (int fc = c * 4; fc < std::min(fine.columns, c * 4 + 4); ++fc)
+                        any |=
+                            fine.reaches[std::size_t(fr * fine.columns + fc) * lights.size() + l];
+                const std::size_t at = std::size_t(r * coarse.columns + c) * lights.size() + l;
+                EXPECT_EQ(coarse.reaches[at], any) << "tile " << c << ", " << r << " light " << l;
+                reached += any;
+            }
+            // Drawn where its fine tiles are: all but the top row of fine tiles.
+            const int w = std::min(200, (c + 1) * 64) - c * 64;
+            const int h = r == 0 ? 64 : 112 - 64;
+            EXPECT_EQ(coarse.drawn[std::size_t(r * coarse.columns + c)], w * h);
+        }
+    }
+    EXPECT_GT(reached, 0);
+    EXPECT_EQ(fine.drawn[std::size_t(7 * fine.columns)], 0);  // the top row of 16-pixel tiles
 }

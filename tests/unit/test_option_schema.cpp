@@ -83,6 +83,20 @@ TEST(OptionSchema, RulesComeWithTheirConditionAndTechniqueOptionsNeedShadows) {
     EXPECT_EQ(optionAt(o, &o.shadow.enabled).matters, nullptr);
 }
 
+TEST(OptionSchema, AChoiceThatWasASwitchTakesOnAsBefore) {
+    RenderOptions o;
+    const OptionSpec& tiles = optionAt(o, &o.shading.lightTiles);
+    EXPECT_EQ(parseOption(tiles, "off", o), std::nullopt);
+    EXPECT_EQ(o.shading.lightTiles, LightTiles::Off);
+    EXPECT_EQ(parseOption(tiles, "on", o), std::nullopt);
+    EXPECT_EQ(o.shading.lightTiles, LightTiles::Auto);
+    EXPECT_EQ(formatOption(tiles, o), "auto");
+    EXPECT_EQ(parseOption(tiles, "lists", o), std::nullopt);
+    EXPECT_EQ(o.shading.lightTiles, LightTiles::Lists);
+    // Other choices take no "on".
+    EXPECT_NE(parseOption(optionAt(o, &o.shadow.filter), "on", o), std::nullopt);
+}
+
 TEST(OptionSchema, GroupsAreTheHelpSectionsInOrder) {
     int last = -1;
     for (const OptionSpec& spec : optionSchema()) {

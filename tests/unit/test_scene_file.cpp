@@ -222,5 +222,21 @@ TEST(SceneFile, SaveRefusesNumbersJsonCannotHold) {
     EXPECT_FALSE(fs::exists(p));
 }
 
+TEST(SceneFile, LightTilesReadAsTheSwitchTheyWere) {
+    // Files written when --light-tiles was on|off keep their meaning: true is auto.
+    ScopedTempDir dir;
+    const std::pair<const char*, LightTiles> cases[] = {{"true", LightTiles::Auto},
+                                                        {"false", LightTiles::Off},
+                                                        {"\"lists\"", LightTiles::Lists},
+                                                        {"\"draws\"", LightTiles::Draws}};
+    for (const auto& [value, mode] : cases) {
+        const fs::path p = dir.path() / "tiles.json";
+        writeText(p, std::string(R"({"gnomon-scene": 1, "include": [{"scene": "tutorial-room"}],
+                                    "options": {"light-tiles": )") +
+                         value + "}}");
+        EXPECT_EQ(loadSceneFile(p.string()).options.shading.lightTiles, mode) << value;
+    }
+}
+
 }  // namespace
 }  // namespace gnomon
