@@ -3,8 +3,9 @@
 // Eurographics 2012 short papers), done on the CPU
 // with the view volume of each screen tile. llvmpipe runs every light's shadow lookup on
 // every pixel (it executes both sides of any branch whose condition varies between pixels,
-// so "outside this spot's cone" saves nothing in the shader); drawing the screen in tiles,
-// each with only the lights that reach it, turns that condition into a uniform one.
+// so "outside this spot's cone" saves nothing in the shader); giving each tile only the lights
+// that reach it, in a draw of its own or in a list its pixels read, turns that condition into
+// one shared by every pixel llvmpipe shades together.
 // Exact: a skipped light adds nothing where it was skipped (outside its outer cone a spot's
 // falloff is 0, beyond its range a point light's window is 0). No GL here.
 #pragma once
