@@ -309,15 +309,22 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
         // Clear this map's square only (clears ignore the viewport but not the scissor):
         // the other maps of the layer stay. Lookups never leave the square, so no stale
         // depth is read. Encoded depth clears to all ones, which every packing decodes as
-        // >= 1 (far).
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
-        fb.clearDepth(one);
-        if (colour) {
-            const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-            fb.clearColour(white);
+        // >= 1 (far). A layer whose every map is drawn again is cleared whole, once.
+        LayerClear& clear = mLayerClears[size_t(light.layer)];
+        const bool square = clear == LayerClear::Squares;
+        if (clear != LayerClear::Done) {
+            if (square) {
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
+            }
+            fb.clearDepth(one);
+            if (colour) {
+                const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+                fb.clearColour(white);
+            }
+            if (square) glDisable(GL_SCISSOR_TEST);
+            if (!square) clear = LayerClear::Done;
         }
-        glDisable(GL_SCISSOR_TEST);
         drawCasters(scene, plan, light, options, variant, 1, [&] { gl::uniform(1, m[0]); });
     } else {
         // Only this light's six faces are cleared; other cubes keep their maps. Without
@@ -352,14 +359,29 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
     }
 }
 
+std::size_t ShadowPass::orderPasses(const std::vector<ShadowedLight>& lights) {
+    mPasses.clear();
+    mLayerClears.assign(mFramebuffers.size(), LayerClear::Whole);
+    std::size_t count2D = 0;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const ShadowedLight& light = lights[i];
+        const bool cube = light.frame.kind == shadow::FrameKind::Cube;
+        mPasses.push_back(
+            {i, cube ? std::size_t(light.layer) : count2D++, cube ? -1 : light.layer});
+        // A map kept from an earlier frame keeps its layer's other squares from a whole clear.
+        if (!cube && !light.redraw) mLayerClears[size_t(light.layer)] = LayerClear::Squares;
+    }
+    std::stable_sort(mPasses.begin(), mPasses.end(),
+                     [](const Pass& a, const Pass& b) { return a.layer < b.layer; });
+    return count2D;
+}
+
 ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePlan& plan,
                                    const ShadowOptions& options, PassClock* clock,
                                    std::vector<PassTiming>* timings) {
     allocate(plan.layout());
     const std::vector<ShadowedLight>& lights = plan.shadowed();
-    std::size_t count2D = 0;
-    for (const ShadowedLight& light : lights)
-        count2D += light.frame.kind == shadow::FrameKind::Cube ? 0 : 1;
+    const std::size_t count2D = orderPasses(lights);
     mHeld.maps2D.resize(count2D);
     mHeld.drawn2D.resize(count2D);
     ++mHeld.frame;
@@ -367,12 +389,11 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePla
     ShadowPassStats stats;
     stats.culled = plan.castersCulled();
     bool any = false;
-    std::size_t index2D = 0;
     mDrawn.clear();
-    for (std::size_t li = 0; li < lights.size(); ++li) {
+    for (const Pass& pass : mPasses) {
+        const std::size_t li = pass.light, slot = pass.slot;
         const ShadowedLight& light = lights[li];
         const bool cube = light.frame.kind == shadow::FrameKind::Cube;
-        const std::size_t slot = cube ? std::size_t(light.layer) : index2D++;
         if (!light.redraw) continue;  // nothing changed (or it waits): keep the map
         if (!cube) forgetOverlapping(light.key, slot);
         (cube ? mHeld.cubes : mHeld.maps2D)[slot] = light.key;

@@ -114,7 +114,21 @@ private:
     void forgetOverlapping(const shadow::MapKey& key, std::size_t slot);
     std::vector<char> mHoldsLight;  // per item: its box holds the light (no face culling)
     std::vector<int> mDrawn;        // reused every frame
-    gl::Texture mBareDepth;         // bareDepthPass's target
+    // The order maps are drawn in: cubes, then 2D maps layer by layer, so one layer's passes
+    // bind its framebuffer once and the driver bins them together. `slot`: the map's place in
+    // mHeld (2D maps counted in the plan's order). Returns the number of 2D maps.
+    struct Pass {
+        std::size_t light = 0, slot = 0;
+        int layer = -1;  // 2D maps' layer; -1 for cubes (first)
+    };
+    std::vector<Pass> mPasses;
+    std::size_t orderPasses(const std::vector<ShadowedLight>& lights);
+    // How each 2D layer is cleared this frame: whole, once, when every map in it is drawn again
+    // (a whole clear costs drivers next to nothing; a scissored one is a drawn square on some,
+    // llvmpipe among them), else square by square.
+    enum class LayerClear : std::uint8_t { Whole, Done, Squares };
+    std::vector<LayerClear> mLayerClears;
+    gl::Texture mBareDepth;  // bareDepthPass's target
     gl::Framebuffer mBareFramebuffer;
     int mGeneration = 0;
 };
