@@ -163,6 +163,35 @@ int FramePlan::wantedSize(const Light& light, const RenderOptions& options) cons
     return std::min(need > 0 ? need : shadowMapSizeOf(light, options.shadow), mSizeCap);
 }
 
+int FramePlan::windowSize(std::size_t index, const Light& light, const RenderOptions& options,
+                          int wanted) {
+    if (wanted <= 0 || (light.type != LightType::Spot && light.type != LightType::Point))
+        return wanted;
+    // A probe without the held extent (a fit at another size would replace it); a cube's
+    // faces are sized one by one (planFaces).
+    int size = 0;
+    const LightCameraFrame probe =
+        sizedLightCameraFrame(light, options.shadow, mFitCamera, mFit, size, nullptr, wanted);
+    if (!probe.valid || probe.kind != FrameKind::Perspective) return wanted;
+    const float whole =
+        light.type == LightType::Point
+            ? 2.0f / float(size)
+            : 2.0f * std::tan(glm::radians(std::clamp(light.outerConeDegrees, 1.0f, 89.0f))) /
+                  float(size);
+    const Held* h = held(index);
+    const int kept = h && h->maps[0].valid ? h->maps[0].mapSize : 0;
+    return windowMapSize(probe.texelWorldSize, whole, size, kept);
+}
+
+bool FramePlan::withinRange(const Light& light, const ViewSamples* samples) {
+    mFit.samples = samples;
+    const float reach = lightReach(light);
+    if (!(reach > 0.0f) || !samples || samples->empty()) return true;
+    samplesWithin(*samples, light.position, reach, mWithin);
+    mFit.samples = &mWithin;
+    return !mWithin.empty();
+}
+
 void FramePlan::planLights(const Scene& s, const RenderOptions& options, const PlanScene& scene,
                            const ViewSamples* samples, bool faces) {
     mShadowed.clear();
@@ -220,11 +249,14 @@ void FramePlan::planLights(const Scene& s, const RenderOptions& options, const P
         }
         if (cascadable && cascades > 1 && !(samples && samples->empty())) {
             planCascades(s, options, i, direction, mapSize, cascades, aspect, scene.bounds, g);
+        } else if (shadowing && !withinRange(light, samples)) {
+            // Its range holds nothing the view sees: no map.
         } else if (shadowing) {
             Held* h = held(i);
             int size = 0;
             const LightCameraFrame frame = sizedLightCameraFrame(
-                light, options.shadow, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr, wanted);
+                light, options.shadow, mFitCamera, mFit, size, h ? &h->maps[0] : nullptr,
+                windowSize(i, light, options, wanted));
             if (frame.valid && frame.kind == FrameKind::Cube && faces) {
                 planFaces(s, options, i, frame.faces, size, g);
             } else if (frame.valid) {
@@ -238,6 +270,7 @@ void FramePlan::planLights(const Scene& s, const RenderOptions& options, const P
                      .record = int(i)});
             }
         }
+        mFit.samples = samples;  // withinRange may have pointed it at mWithin
         mLights.push_back(g);
     }
 }
@@ -403,8 +436,18 @@ void FramePlan::planFaces(const Scene& s, const RenderOptions& options, std::siz
         int slot = 7;
         if ((faces >> face) & 1u) {
             Held* h = held(lightIndex);
-            const LightCameraFrame frame = pointFaceFrame(
-                light, face, options.shadow, mFit, mapSize, h ? &h->maps[1 + face] : nullptr);
+            HeldExtent* kept = h ? &h->maps[1 + face] : nullptr;
+            int size = mapSize;
+            if (light.shadowMapSize <= 0 && options.shadow.mapSize <= 0) {
+                // Probed without the held extent, which a fit at another size would replace.
+                const LightCameraFrame probe =
+                    pointFaceFrame(light, face, options.shadow, mFit, mapSize, nullptr);
+                size =
+                    windowMapSize(probe.valid ? probe.texelWorldSize : 0.0f, 2.0f / float(mapSize),
+                                  mapSize, kept && kept->valid ? kept->mapSize : 0);
+            }
+            const LightCameraFrame frame =
+                pointFaceFrame(light, face, options.shadow, mFit, size, kept);
             if (frame.valid) {
                 GpuLight c = g;
                 fillShadowRecord(c, frame, light, options.shadow);
@@ -412,7 +455,7 @@ void FramePlan::planFaces(const Scene& s, const RenderOptions& options, std::siz
                 c.mapNear = frame.near;
                 mCascadeRecords.push_back(c);
                 mShadowed.push_back({.light = int(lightIndex),
-                                     .mapSize = mapSize,
+                                     .mapSize = size,
                                      .frame = frame,
                                      .depthClamp = true,
                                      .record = first + count,

@@ -21,6 +21,7 @@
 #include "shadow/MapAtlas.h"
 #include "shadow/PlannedMap.h"
 #include "shadow/ShadowMath.h"
+#include "shadow/ViewSamples.h"
 
 namespace gnomon::shadow {
 
@@ -124,6 +125,12 @@ private:
     void fitBudget(const Scene& s, const RenderOptions& options, const PlanScene& scene,
                    const ViewSamples* samples, bool faces);
     int wantedSize(const Light& light, const RenderOptions& options) const;
+    // Light `index`'s size by need (`wanted`, 0: its own) made smaller where its fitted window
+    // is narrower than its whole cone or face (windowMapSize).
+    int windowSize(std::size_t index, const Light& light, const RenderOptions& options, int wanted);
+    // Points mFit.samples at what `light`'s fits read: with a range, only the samples within
+    // it (mWithin); false when that leaves none (the light lights nothing the view sees).
+    bool withinRange(const Light& light, const ViewSamples* samples);
     // FrameMaps.cpp: the maps' places in their arrays (and the records' map fields), their
     // casters and keys, and which to draw again.
     void layOutMaps(const ShadowOptions& options);
@@ -187,7 +194,8 @@ private:
     };
     std::vector<Waiting> mWaitOrder;
     Camera mFitCamera;
-    FitScene mFit;  // reused every frame
+    FitScene mFit;        // reused every frame
+    ViewSamples mWithin;  // a ranged light's samples (withinRange), storage kept
     MapLayout mLayout;
     std::vector<int> mSizes;      // reused: the 2D maps' sizes for packMaps
     std::vector<MapSlot> mSlots;  // reused: their places

@@ -39,6 +39,15 @@ int neededMapSize(const Light& light, const Camera& view, int width, int height,
     return std::min(size, largest);
 }
 
+int windowMapSize(float fittedTexel, float wholeTexel, int size, int held) {
+    if (!(fittedTexel > 0.0f) || !(wholeTexel > 0.0f) || size <= kMinNeededMapSize) return size;
+    const float want = float(size) * fittedTexel / wholeTexel;  // the window's width in texels
+    int least = kMinNeededMapSize;
+    while (least < size && float(least) < want)
+        least *= 2;
+    return held >= least && held <= size ? held : least;
+}
+
 std::size_t largestArrayBytes(const MapLayout& l) {
     const std::size_t maps = std::size_t(l.size2D) * std::size_t(l.size2D) *
                              std::size_t(l.layers2D) * texelBytes(l.format2D);

@@ -23,6 +23,14 @@ constexpr float kNeededTexelsPerPixel = 2.0f;
 // the sphere. 0 (the light's own size) for other lights and lights without a range.
 int neededMapSize(const Light& light, const Camera& view, int width, int height, int largest);
 
+// A map fitted to part of a face or cone (the part the view sees) keeps the density of the whole
+// face or cone at the needed size with fewer texels: the power-of-two size within
+// [kMinNeededMapSize, size] whose texels are at most `wholeTexel` wide, for a frame fitted at
+// `size` whose texels are `fittedTexel` wide (both in tan units, at distance 1). `held`: the size
+// an earlier frame kept, reused while it lies in that range, so a moving view does not flip
+// between sizes (0: none).
+int windowMapSize(float fittedTexel, float wholeTexel, int size, int held);
+
 // The bytes a layout's two arrays take (2D maps, cubes), the larger of the two.
 std::size_t largestArrayBytes(const MapLayout& layout);
 

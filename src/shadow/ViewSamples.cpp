@@ -22,6 +22,15 @@ float distanceToSegment(const glm::vec3& a, const glm::vec3& b) {
 
 // Does sample i, with the other end of its cell's segment when it has one, lie wholly farther
 // than `reach` from `apex` (a spot's or point light's range: unlit there)? Never when reach <= 0.
+// The reach the functions below test samples against: none when `samples` already holds only
+// what lies within it (samplesWithin, for this light: its apex, up to a rounding of the inverse
+// its callers took it from).
+float reachToTest(const ViewSamples& samples, const glm::vec3& apex, float reach) {
+    const bool filtered = samples.filterReach > 0.0f && reach == samples.filterReach &&
+                          glm::length(apex - samples.filterApex) <= 1e-5f * reach;
+    return filtered ? 0.0f : reach;
+}
+
 bool beyondReach(const ViewSamples& samples, std::size_t i, const glm::vec3& apex, float reach) {
     if (!(reach > 0.0f)) return false;
     const std::size_t n = samples.points.size();
@@ -35,6 +44,25 @@ bool beyondReach(const ViewSamples& samples, std::size_t i, const glm::vec3& ape
     const glm::vec4& q = samples.points[j];
     const float pad = std::max(samples.pad(p.w), samples.pad(q.w));
     return distanceToSegment(glm::vec3(p) - apex, glm::vec3(q) - apex) - pad > reach;
+}
+
+void chunkSamples(ViewSamples& s) {
+    const std::size_t n = s.points.size(), count = (n + kSampleChunk - 1) / kSampleChunk;
+    s.chunks.assign(count, Aabb{});
+    s.chunkPads.assign(count, 0.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+        // A pair's second point also counts in the chunk its first lies in.
+        const std::size_t c = (i > 0 && s.farthestNext[i - 1] ? i - 1 : i) / kSampleChunk;
+        for (std::size_t k : {c, i / kSampleChunk}) {
+            s.chunks[k].extend(glm::vec3(s.points[i]));
+            s.chunkPads[k] = std::max(s.chunkPads[k], s.pad(s.points[i].w));
+        }
+    }
+}
+
+// Distance from `p` to `box` (0 inside).
+float distanceToBox(const glm::vec3& p, const Aabb& box) {
+    return glm::length(glm::max(glm::max(box.min - p, p - box.max), glm::vec3(0.0f)));
 }
 
 }  // namespace
@@ -52,6 +80,7 @@ void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, c
                  float aspect, ViewSamples& out) {
     static std::atomic<std::uint64_t> fillings{0};
     out.generation = ++fillings;
+    out.filterReach = 0.0f;
     out.points.clear();
     out.farthestNext.clear();
     out.padConstant = out.padPerDepth = 0.0f;
@@ -98,6 +127,7 @@ void viewSamples(const std::vector<glm::vec2>& ranges, const SampleGrid& grid, c
         }
     }
     if (out.points.empty()) out.nearest = 0.0f;
+    chunkSamples(out);
 }
 
 Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld, float depthFrom,
@@ -116,14 +146,59 @@ Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld,
 }
 
 bool anySampleWithin(const ViewSamples& samples, const glm::vec3& apex, float reach) {
+    reach = reachToTest(samples, apex, reach);
     for (std::size_t i = 0; i < samples.points.size(); ++i) {
         if (!beyondReach(samples, i, apex, reach)) return true;
     }
     return false;
 }
 
+void samplesWithin(const ViewSamples& samples, const glm::vec3& apex, float reach,
+                   ViewSamples& out) {
+    out.points.clear();
+    out.farthestNext.clear();
+    out.chunks.clear();  // walked point by point: a light's subset is small
+    out.chunkPads.clear();
+    out.filterApex = apex;
+    out.filterReach = reach;
+    out.padConstant = samples.padConstant;
+    out.padPerDepth = samples.padPerDepth;
+    out.generation = samples.generation;
+    out.nearest = std::numeric_limits<float>::max();
+    out.farthest = 0.0f;
+    const std::size_t n = samples.points.size();
+    const bool chunked = samples.chunks.size() == (n + kSampleChunk - 1) / kSampleChunk &&
+                         samples.farthestNext.size() == n;
+    std::size_t chunk = ~std::size_t(0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (chunked && i / kSampleChunk != chunk) {
+            chunk = i / kSampleChunk;
+            // Every segment starting in the chunk lies in its box: wholly beyond, skip them all.
+            if (distanceToBox(apex, samples.chunks[chunk]) - samples.chunkPads[chunk] > reach) {
+                i = (chunk + 1) * kSampleChunk;
+                if (i < n && samples.farthestNext[i - 1]) ++i;  // the last pair's second point
+                --i;
+                continue;
+            }
+        }
+        // A cell's pair is beyond reach or not as one (beyondReach tests their segment).
+        const bool pair = i + 1 < n && i < samples.farthestNext.size() && samples.farthestNext[i];
+        if (!beyondReach(samples, i, apex, reach)) {
+            for (std::size_t k = i; k <= (pair ? i + 1 : i); ++k) {
+                out.points.push_back(samples.points[k]);
+                out.farthestNext.push_back(pair && k == i);
+                out.nearest = std::min(out.nearest, samples.points[k].w);
+                out.farthest = std::max(out.farthest, samples.points[k].w);
+            }
+        }
+        if (pair) ++i;
+    }
+    if (out.points.empty()) out.nearest = 0.0f;
+}
+
 bool samplesDirection(const ViewSamples& samples, const glm::vec3& apex, glm::vec3& direction,
                       float reach) {
+    reach = reachToTest(samples, apex, reach);
     glm::dvec3 sum(0.0);
     for (std::size_t i = 0; i < samples.points.size(); ++i) {
         const glm::vec4& p = samples.points[i];
@@ -145,6 +220,7 @@ bool samplesWindow(const ViewSamples& samples, const glm::mat4& lightFromWorld,
     window.farthest = 0.0f;
     bool any = false;
     const glm::vec3 apex = reach > 0.0f ? glm::vec3(glm::inverse(lightFromWorld)[3]) : glm::vec3(0);
+    reach = reachToTest(samples, apex, reach);
     for (std::size_t i = 0; i < samples.points.size(); ++i) {
         const glm::vec4& p = samples.points[i];
         if (beyondReach(samples, i, apex, reach)) continue;
@@ -265,6 +341,7 @@ std::uint8_t cubeFacesSeen(const ViewSamples& samples, const glm::vec3& lightPos
     // Past a tenth of a radian the widening below stops being a bound.
     constexpr float kMaxAngle = 0.1f;
     if (!(marginRadians >= 0.0f && marginRadians < kMaxAngle)) return kAllCubeFaces;
+    reach = reachToTest(samples, lightPosition, reach);
     std::uint8_t faces = 0;
     const std::size_t n = samples.points.size();
     for (std::size_t i = 0; i < n; ++i) {

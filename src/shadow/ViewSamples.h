@@ -16,6 +16,8 @@
 
 namespace gnomon::shadow {
 
+constexpr std::size_t kSampleChunk = 64;
+
 struct ViewSamples {
     // World position of each covered sample; w: its view depth (distance along the view
     // axis, what cascade splits are measured in).
@@ -28,6 +30,16 @@ struct ViewSamples {
     // World distance between neighbouring samples at view depth d is padConstant +
     // padPerDepth * d: how far the surface they stand for may reach beyond a sample.
     float padConstant = 0.0f, padPerDepth = 0.0f;
+    // Boxes of kSampleChunk points each (chunk c: points from c * kSampleChunk, with the
+    // other end of a cell's pair that starts in it) and the largest pad among them:
+    // samplesWithin skips a chunk wholly beyond a light's range at once. viewSamples fills
+    // them; samples filled another way have none and are walked point by point.
+    std::vector<Aabb> chunks;
+    std::vector<float> chunkPads;
+    // Filled by samplesWithin for a light at filterApex with range filterReach (0: not): the
+    // functions below then take every point as within that range without testing it again.
+    glm::vec3 filterApex{0.0f};
+    float filterReach = 0.0f;
     // Which filling these points are: viewSamples() gives each a value none had before, so a
     // fit made from them can be kept while it is unchanged (0: never filled by viewSamples).
     std::uint64_t generation = 0;
@@ -63,6 +75,11 @@ Aabb samplesInLight(const ViewSamples& samples, const glm::mat4& lightFromWorld,
 // Does some sample lie within `reach` of `apex` (reach <= 0: unbounded, so any sample)? A
 // light with a range that holds none lights nothing the view sees and needs no map.
 bool anySampleWithin(const ViewSamples& samples, const glm::vec3& apex, float reach);
+// Those samples, in their order and with their cells' pairs whole: what a light with a range
+// needs of the view. Its fits (a frustum, a cube, faces) each walk the samples, so on a view
+// with many small lights they walk this subset instead. Fills `out` keeping its storage.
+void samplesWithin(const ViewSamples& samples, const glm::vec3& apex, float reach,
+                   ViewSamples& out);
 
 // For fitting one frustum from a point light over what the view sees (instead of a cube):
 // the samples' mean direction from `apex`; false when there is none or one lies within its

@@ -8,6 +8,7 @@
 #include <array>
 
 #include "ViewSamplesTestUtil.h"
+#include "scene/CameraMath.h"
 #include "shadow/MeshPieces.h"
 #include "shadow/PlannedMap.h"
 #include "shadow/ShadowMath.h"
@@ -151,6 +152,60 @@ TEST(LightReach, APointLightsMapEndsAtItsRangeAndIsNoneWhenItLightsNothing) {
     lamp.position.y = 4.0f;  // 4 above the ground, 1 above the post's top: nothing within 1.5
     lamp.position.x = lamp.position.z = 3.0f;
     EXPECT_FALSE(shadow::lightCameraFrame(lamp, camera, scene, 1024).valid);
+}
+
+// Whether sample i (with its cell's other end) is wholly beyond `reach` of `apex`, tested
+// directly: the segment's nearest point to the apex, less the larger pad.
+bool beyondByHand(const shadow::ViewSamples& s, std::size_t i, const glm::vec3& apex, float reach) {
+    std::size_t j = i;
+    if (i + 1 < s.points.size() && s.farthestNext[i]) j = i + 1;
+    if (i > 0 && s.farthestNext[i - 1]) j = i - 1;
+    const glm::vec3 a = glm::vec3(s.points[i]) - apex,
+                    d = glm::vec3(s.points[j]) - glm::vec3(a + apex);
+    const float t =
+        glm::dot(d, d) > 0.0f ? std::clamp(-glm::dot(a, d) / glm::dot(d, d), 0.0f, 1.0f) : 0.0f;
+    const float pad = std::max(s.pad(s.points[i].w), s.pad(s.points[j].w));
+    return glm::length(a + t * d) - pad > reach;
+}
+
+TEST(LightReach, ALightsSamplesAreThoseWithinItsRangeWithTheirPairsWhole) {
+    shadow::ViewSamples samples;
+    const Camera camera = test::groundCamera();
+    test::groundWithPost(camera, samples);
+    ASSERT_FALSE(samples.chunks.empty());  // viewSamples boxes its points in chunks
+    shadow::ViewSamples within, walked;
+    for (const glm::vec3 apex : {glm::vec3(1, 1, 1), glm::vec3(-4, 0.5f, -6), glm::vec3(0, 9, 0)}) {
+        for (const float reach : {0.5f, 1.5f, 4.0f, 40.0f}) {
+            shadow::samplesWithin(samples, apex, reach, within);
+            std::vector<glm::vec4> expected;
+            for (std::size_t i = 0; i < samples.points.size(); ++i) {
+                if (!beyondByHand(samples, i, apex, reach)) expected.push_back(samples.points[i]);
+            }
+            EXPECT_EQ(within.points, expected) << "reach " << reach;
+            for (std::size_t i = 0; i + 1 < within.points.size(); ++i) {
+                if (within.farthestNext[i]) {
+                    EXPECT_FALSE(within.farthestNext[i + 1]);
+                }
+            }
+            EXPECT_EQ(shadow::anySampleWithin(samples, apex, reach), !expected.empty());
+            // Without the chunks' boxes, point by point: the same points.
+            shadow::ViewSamples plain = samples;
+            plain.chunks.clear();
+            plain.chunkPads.clear();
+            shadow::samplesWithin(plain, apex, reach, walked);
+            EXPECT_EQ(walked.points, within.points);
+            // Fits read the same window from the subset as from all samples with the range.
+            const glm::mat4 look = safeLookAt(apex, glm::vec3(0.0f), glm::vec3(0, 0, 1));
+            shadow::SampleWindow all, some;
+            const bool a = shadow::samplesWindow(samples, look, all, nullptr, reach);
+            ASSERT_EQ(shadow::samplesWindow(within, look, some, nullptr, reach), a);
+            if (a) {
+                EXPECT_EQ(all.lo, some.lo);
+                EXPECT_EQ(all.hi, some.hi);
+                EXPECT_EQ(all.farthest, some.farthest);
+            }
+        }
+    }
 }
 
 }  // namespace

@@ -57,6 +57,21 @@ TEST(MapSizing, SizeFollowsTheReachOnScreen) {
     EXPECT_LE(neededMapSize(spotAt(1.5f, 1.0f), c, 4096, 4096, 512), 512) << "capped";
 }
 
+TEST(MapSizing, AFittedWindowKeepsTheWholeConesDensityWithFewerTexels) {
+    using shadow::windowMapSize;
+    const float whole = 2.0f / 1024.0f;                           // a whole face's texel at 1024
+    EXPECT_EQ(windowMapSize(whole, whole, 1024, 0), 1024);        // the whole face
+    EXPECT_EQ(windowMapSize(0.5f * whole, whole, 1024, 0), 512);  // half of it
+    EXPECT_EQ(windowMapSize(0.3f * whole, whole, 1024, 0), 512);  // 307 texels: 512
+    EXPECT_EQ(windowMapSize(0.2f * whole, whole, 1024, 0), 256);  // 205 texels: 256
+    EXPECT_EQ(windowMapSize(0.01f * whole, whole, 1024, 0), shadow::kMinNeededMapSize);
+    EXPECT_EQ(windowMapSize(0.0f, whole, 1024, 0), 1024);  // no frame: the size asked
+    // A size held from an earlier frame stays while it is fine enough and no larger.
+    EXPECT_EQ(windowMapSize(0.2f * whole, whole, 1024, 512), 512);
+    EXPECT_EQ(windowMapSize(0.5f * whole, whole, 1024, 256), 512);  // too coarse now
+    EXPECT_EQ(windowMapSize(0.2f * whole, whole, 512, 1024), 128);  // held over the size asked
+}
+
 // Ranged spots over a floor, as in gnomon bench's local-lights sweep.
 Scene rangedSpots(int n) {
     Scene s = builtinScene("tutorial-room");
