@@ -213,6 +213,9 @@ void FramePlan::planLights(const Scene& s, const RenderOptions& options, const P
         gnomon::clipFromView(mFitCamera, aspect) * gnomon::viewFromWorld(mFitCamera);
     mFit.samples = samples;
     mFit.stabilise = options.shadow.stabilise;
+    mFit.visibleFilled = false;
+    clipReceivers(mFit, mFit.visibleReceivers);
+    mFit.visibleFilled = true;
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         const Light& light = s.lights[i];
         GpuLight g = gpu::emptyLightRecord();

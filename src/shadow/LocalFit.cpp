@@ -28,8 +28,8 @@ LightCameraFrame fitFrustum(const glm::mat4& lightFromWorld, glm::vec2 lo, glm::
     // The pyramid's four side planes (far pushed out of reach): what the map can see at all.
     const glm::mat4 sides = pyramid(1.0f, 1e30f) * lightFromWorld;
     const bool fromBoxes = !(farthest > 0.0f);
-    for (std::size_t i = 0; fromBoxes && i < boxes.receivers.size(); ++i) {
-        const Aabb& r = boxes.receivers[i];
+    for (std::size_t i = 0; fromBoxes && i < boxes.receivers().size(); ++i) {
+        const Aabb& r = boxes.receivers()[i];
         if (boxes.beyondReach(r) || outsideClipVolume(r, sides, true)) continue;
         float nearest = 0.0f, far = 0.0f;
         depthRange(r, lightFromWorld, nearest, far);
@@ -45,6 +45,11 @@ LightCameraFrame fitFrustum(const glm::mat4& lightFromWorld, glm::vec2 lo, glm::
     float nearestCaster = std::numeric_limits<float>::max();
     for (const Aabb& c : *boxes.casters) {
         if (c.empty() || boxes.beyondReach(c) || outsideClipVolume(c, volume, false)) continue;
+        // Its clipped points lie no nearer than its nearest corner: a box whose corners are
+        // all as far as the nearest caster so far cannot bring near closer.
+        float cornerNearest = 0.0f, cornerFarthest = 0.0f;
+        depthRange(c, lightFromWorld, cornerNearest, cornerFarthest);
+        if (cornerNearest >= nearestCaster) continue;
         const ClippedPoints inside = clipToFrustum(c, volume, volumeCorners);
         for (int i = 0; i < inside.count; ++i) {
             const float d = -(lightFromWorld * glm::vec4(inside.points[size_t(i)], 1.0f)).z;
@@ -72,7 +77,7 @@ LightCameraFrame fitCube(const glm::vec3& position, const FitBoxes& boxes, int m
     f.lightFromWorld = glm::translate(glm::mat4(1.0f), -position);
     f.valid = false;
     float farthest = 0.0f;
-    for (const Aabb& r : boxes.receivers) {
+    for (const Aabb& r : boxes.receivers()) {
         if (boxes.beyondReach(r)) continue;
         for (const glm::vec3& c : r.corners())
             farthest = std::max(farthest, glm::length(c - position));

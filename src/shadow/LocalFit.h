@@ -16,7 +16,10 @@ namespace gnomon::shadow::fit {
 // The boxes Fit works with in one frame: visible receivers (clipped to the view frustum's
 // box) and all casters.
 struct FitBoxes {
-    std::vector<Aabb> receivers;
+    // The frame's (FitScene::visibleReceivers, when filled) or this fit's own.
+    const std::vector<Aabb>* shared = nullptr;
+    std::vector<Aabb> own;
+    const std::vector<Aabb>& receivers() const { return shared ? *shared : own; }
     const std::vector<Aabb>* casters = nullptr;
     bool snap = false;           // the fit follows the view: keep it steady
     HeldExtent* held = nullptr;  // with snap: the extent kept from the previous frame

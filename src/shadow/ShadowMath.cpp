@@ -78,24 +78,37 @@ LightCameraFrame fromNumbers(const ShadowCamera& c, const glm::mat4& lightFromWo
     return f;
 }
 
+}  // namespace
+
+void clipReceivers(const FitScene& scene, std::vector<Aabb>& out) {
+    out.clear();
+    std::array<glm::vec3, 8> frustum{};
+    if (scene.viewKnown) frustum = frustumCorners(scene.viewClipFromWorld);
+    for (const Aabb& r : scene.receivers) {
+        if (r.empty()) continue;
+        if (!scene.viewKnown) {
+            out.push_back(r);
+            continue;
+        }
+        // Rounding must not grow the box, nor empty a flat one (a ground plane has no
+        // thickness: its clipped points may all round to one side of it).
+        const Aabb clipped = clipToFrustum(r, scene.viewClipFromWorld, frustum).box();
+        if (!clipped.empty()) out.push_back(clampInto(clipped, r));
+    }
+}
+
+namespace {
+
 // `receivers` false: only the casters (a fit to view samples needs no receiver boxes).
 FitBoxes visibleReceivers(const FitScene& scene, bool receivers = true) {
     FitBoxes f;
     f.casters = &scene.casters;
     f.snap = scene.viewKnown && scene.stabilise;
     if (!receivers) return f;
-    std::array<glm::vec3, 8> frustum{};
-    if (scene.viewKnown) frustum = frustumCorners(scene.viewClipFromWorld);
-    for (const Aabb& r : scene.receivers) {
-        if (r.empty()) continue;
-        if (!scene.viewKnown) {
-            f.receivers.push_back(r);
-            continue;
-        }
-        // Rounding must not grow the box, nor empty a flat one (a ground plane has no
-        // thickness: its clipped points may all round to one side of it).
-        const Aabb clipped = clipToFrustum(r, scene.viewClipFromWorld, frustum).box();
-        if (!clipped.empty()) f.receivers.push_back(clampInto(clipped, r));
+    if (scene.visibleFilled) {
+        f.shared = &scene.visibleReceivers;
+    } else {
+        clipReceivers(scene, f.own);
     }
     return f;
 }
@@ -223,7 +236,7 @@ Aabb receiversInLight(const FitScene& scene, const FitBoxes& boxes, const glm::v
     const glm::mat4 rotation = lightRotation(direction);
     if (scene.samples) return samplesInLight(*scene.samples, rotation, depthFrom, depthTo);
     Aabb receivers;
-    for (const Aabb& r : boxes.receivers)
+    for (const Aabb& r : boxes.receivers())
         receivers.extend(r.transformed(rotation));
     return receivers;
 }

@@ -71,7 +71,13 @@ struct FitScene {
     glm::mat4 viewClipFromWorld{1.0f};
     const ViewSamples* samples = nullptr;
     bool stabilise = true;  // with viewKnown: square, quantise and snap (see below)
+    // The receivers clipped to the view (clipReceivers), when a caller that fits many lights
+    // to one view filled them once (visibleFilled); else each fit clips them again.
+    std::vector<Aabb> visibleReceivers;
+    bool visibleFilled = false;
 };
+// The receivers' boxes clipped to the view's frustum (all of them when the view is unknown).
+void clipReceivers(const FitScene& scene, std::vector<Aabb>& out);
 
 // A stabilised map's extent, kept from one frame of a moving view to the next: an
 // orthographic box in its light space, or a perspective window (lo, hi in tan units, zFar
