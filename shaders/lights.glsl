@@ -14,10 +14,10 @@ layout(std140, binding = 1) uniform Lights {
 layout(location = 6) uniform ivec4 uLightRanges;
 // The loops visit records through this list (render/TiledLights.h), from uLightFirst to the
 // ends in uLightRanges: every record in turn for an untiled draw, or the lights that reach
-// one screen tile. Read at the loop counter, a dynamically uniform index, it costs a scalar
+// one screen tile. ORDER_SLOTS: as many as the driver's uniform block holds, up to 4096. Read at the loop counter, a dynamically uniform index, it costs a scalar
 // load per light.
 layout(std140, binding = 2) uniform LightOrder {
-    ivec4 uLightOrder[1024];  // 4096 entries, four to a std140 slot
+    ivec4 uLightOrder[ORDER_SLOTS];  // four entries to a std140 slot
 };
 layout(location = 10) uniform int uLightFirst;
 int lightRecord(int k) {

@@ -42,8 +42,9 @@ MainPass::MainPass() {
     mMaxLights = std::min(256, blockBytes / int(sizeof(GpuLight)));
     mLights = gl::Buffer("lights", std::size_t(mMaxLights) * sizeof(GpuLight), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
-    mOrder = gl::Buffer("light order", std::size_t(kLightOrderCapacity) * sizeof(std::int32_t),
-                        nullptr, GL_DYNAMIC_STORAGE_BIT);
+    mOrderCapacity = std::clamp(blockBytes / 16 * 4, kLeastLightOrderCapacity, kLightOrderCapacity);
+    mOrder = gl::Buffer("light order", std::size_t(mOrderCapacity) * sizeof(std::int32_t), nullptr,
+                        GL_DYNAMIC_STORAGE_BIT);
 }
 
 // Lights and their order: uploaded only when they differ from what the GPU holds.

@@ -74,6 +74,8 @@ public:
                 const VisibilityTarget* visibility = nullptr, bool floor = false);
     // Lights one frame can hold: the uniform block size limit / the record size, at most 256.
     int maxLights() const { return mMaxLights; }
+    // Entries the light order holds (the uniform block's size allows).
+    int orderCapacity() const { return mOrderCapacity; }
     // Draws with at most this many lights get a program whose light loops are written out
     // (main.frag.glsl, UNROLLED_LIGHTS); more would make a long program to build for each
     // count of each kind a frame or tile has (15 lights: 12 s to build mixed-lights' tiles).
@@ -116,10 +118,10 @@ private:
     bool bindMaps(const MainPassInputs& in, const ShadowOptions& so);
 
     std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
-    int mMaxLights = 0;
+    int mMaxLights = 0, mOrderCapacity = 4096;
     gl::Buffer mLights;  // sized for mMaxLights once; the used part is updated on change
     std::vector<GpuLight> mUploaded;
-    gl::Buffer mOrder;  // the light order (kLightOrderCapacity entries), updated on change
+    gl::Buffer mOrder;  // the light order (mOrderCapacity entries), updated on change
     std::vector<std::int32_t> mUploadedOrder;
     gl::Texture mLists;  // the light lists' tiles (TiledLights.h, LightLists), updated on change
     std::vector<glm::ivec4> mUploadedLists;

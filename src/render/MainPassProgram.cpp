@@ -42,7 +42,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
         .emplace(key, gl::buildProgram("main [" + v.label() + "]",
                                        {{GL_VERTEX_SHADER, "main.vert.glsl"},
                                         {GL_FRAGMENT_SHADER, "main.frag.glsl"}},
-                                       v.defines(mMaxLights)))
+                                       v.defines(mMaxLights, mOrderCapacity / 4)))
         .first->second;
 }
 

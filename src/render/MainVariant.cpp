@@ -94,8 +94,9 @@ std::vector<std::string> choiceDefines(const MainVariant& v) {
 
 }  // namespace
 
-std::vector<std::string> MainVariant::defines(int maxLights) const {
-    std::vector<std::string> d = {"MAX_LIGHTS " + std::to_string(maxLights)};
+std::vector<std::string> MainVariant::defines(int maxLights, int orderSlots) const {
+    std::vector<std::string> d = {"MAX_LIGHTS " + std::to_string(maxLights),
+                                  "ORDER_SLOTS " + std::to_string(orderSlots)};
     for (std::string& c : choiceDefines(*this))
         d.push_back(std::move(c));
     if (unrolled) {

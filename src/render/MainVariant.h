@@ -59,7 +59,7 @@ struct MainVariant {
         return k;
     }
     // main.frag.glsl's #defines for this variant, after MAX_LIGHTS.
-    std::vector<std::string> defines(int maxLights) const;
+    std::vector<std::string> defines(int maxLights, int orderSlots = 1024) const;
     // The defines without the unrolled loops' bodies, as a program's label.
     std::string label() const;
 };

@@ -249,6 +249,7 @@ struct Renderer::Impl {
         // The view's depth bounds each tile's volume, when blended surfaces (not in it) do
         // not lie over it.
         const shadow::DepthCells cells = viewDepth.cells();
+        tiled.setOrderCapacity(mainPass.orderCapacity());
         tiled.plan(
             plan.records(), plan.ranges(), in.viewFromWorld, in.clipFromView, options.width,
             options.height, stats.mainTriangles,

@@ -12,7 +12,7 @@ namespace {
 // draw costs the scene's triangles again).
 constexpr int kCoarsestTile = 256;
 constexpr int kSmallestDrawnTile = 64;
-constexpr std::int64_t kMaxTiles = 4096;
+constexpr std::int64_t kMaxTiles = 16384;
 
 // A record's reach (shaders/main.frag.glsl, lightAt): spots end at their outer cone, point
 // and spot lights with a range at that range; directional and area lights reach everywhere.
@@ -33,10 +33,11 @@ shadow::LightReach reachOf(const GpuLight& g, bool shadowed, const glm::mat4& vi
     }
     return r;
 }
-// The finest tiles: 16 pixels, or the least power of two that keeps their count within
-// kMaxTiles (culling costs each tile and light on the CPU every frame).
+// The finest tiles: 8 pixels (whole 4 x 4 blocks, what llvmpipe's fragment code shades at a
+// time), or the least power of two that keeps their count within kMaxTiles (culling costs
+// each tile and light on the CPU every frame).
 int finestTile(int width, int height) {
-    int size = 16;
+    int size = 8;
     while (size < kCoarsestTile &&
            std::int64_t((width + size - 1) / size) * ((height + size - 1) / size) > kMaxTiles)
         size *= 2;
@@ -143,7 +144,7 @@ bool TiledLights::buildTiles(const shadow::TileReach& grid, int width, int heigh
             c += run;
         }
     }
-    if (mOrder.size() <= std::size_t(kLightOrderCapacity)) return true;
+    if (mOrder.size() <= std::size_t(mOrderCapacity)) return true;
     mOrder.resize(std::size_t(mRanges.w));
     mTiles.clear();
     return false;
@@ -169,7 +170,7 @@ bool TiledLights::buildLists(const shadow::TileReach& grid) {
         const LightTile& tile = it->second;
         mLists.texels[t] = {tile.first, tile.ends.x, tile.ends.y, tile.ends.z};
     }
-    if (mOrder.size() <= std::size_t(kLightOrderCapacity)) return true;
+    if (mOrder.size() <= std::size_t(mOrderCapacity)) return true;
     mOrder.resize(std::size_t(mRanges.w));
     mLists = {};
     return false;

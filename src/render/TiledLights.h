@@ -20,9 +20,11 @@
 
 namespace gnomon::render {
 
-// Entries the order can hold: the uniform block shaders/lights.glsl declares (16 KiB, the
-// least OpenGL 4.5 guarantees for a uniform block).
-inline constexpr int kLightOrderCapacity = 4096;
+// Entries the order can hold at most: the uniform block shaders/lights.glsl declares, as large
+// as the driver allows up to 64 KiB (MainPass::orderCapacity; 16 KiB, 4096 entries, is the
+// least OpenGL 4.5 and OpenGL ES 3.0 guarantee).
+inline constexpr int kLightOrderCapacity = 16384;
+inline constexpr int kLeastLightOrderCapacity = 4096;
 
 struct LightTile {
     glm::ivec4 scissor{0};  // x, y, width, height in pixels
@@ -55,6 +57,9 @@ public:
     // Is the view depth pass worth drawing for the tiles alone: do two or more shadowed
     // lights that are on have a bounded reach (spots, or point lights with a range)?
     static bool wantsDepth(const Scene& s, const RenderOptions& options);
+    // Entries the main pass's light order holds (MainPass::orderCapacity): finer tiles whose
+    // lists would not fit take coarser ones.
+    void setOrderCapacity(int entries) { mOrderCapacity = entries; }
 
     const std::vector<std::int32_t>& order() const { return mOrder; }
     // Draws, one per tile; empty: one draw (with every light, first 0, ends the frame's ranges,
@@ -65,6 +70,7 @@ public:
     glm::ivec4 ranges() const { return mRanges; }
 
 private:
+    int mOrderCapacity = kLeastLightOrderCapacity;
     bool buildTiles(const shadow::TileReach& grid, int width, int height);
     bool buildLists(const shadow::TileReach& grid);
     // The order's entries for the lights `reach` marks, appended by kind: its range.
