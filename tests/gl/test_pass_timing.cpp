@@ -3,6 +3,8 @@
 // bare depth pass measures something where a 2D map exists.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "GlTest.h"
 
 namespace gnomon::test {
@@ -26,14 +28,19 @@ TEST(PassTiming, ListsEveryPassInOrder) {
     // Nothing in the scene blends: the view's depth draws every triangle the main pass does.
     EXPECT_EQ(stats.passes[0].triangles, stats.mainTriangles);
     EXPECT_GT(stats.passes[0].triangles, 0u);
+    // Each light's map once, cubes first and 2D maps layer by layer (ShadowPass::orderPasses).
     std::uint64_t triangles = 0;
+    std::vector<int> seen(16, 0);
     for (int i = 0; i < 16; ++i) {
         const PassTiming& p = stats.passes[size_t(i) + 1];
-        EXPECT_EQ(p.name, "shadow light " + std::to_string(i));
-        EXPECT_EQ(p.light, i);
+        ASSERT_GE(p.light, 0);
+        ASSERT_LT(p.light, 16);
+        EXPECT_EQ(p.name, "shadow light " + std::to_string(p.light));
         EXPECT_GT(p.milliseconds, 0.0);
+        ++seen[std::size_t(p.light)];
         triangles += p.triangles;
     }
+    EXPECT_EQ(seen, std::vector<int>(16, 1));
     EXPECT_EQ(triangles, stats.shadowTriangles);
     EXPECT_EQ(stats.passes[17].name, "main");
     EXPECT_EQ(stats.passes[17].triangles, stats.mainTriangles);
