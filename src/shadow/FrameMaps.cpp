@@ -1,6 +1,7 @@
 // The maps' side of the frame plan: where each map lies in its array, which casters reach it,
 // the key it is drawn under, and which maps are drawn again this frame.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -43,6 +44,9 @@ void FramePlan::layOutMaps(const ShadowOptions& options) {
         l.frame.texelWorldSize *= float(l.mapSize) / float(layout.sizeCube);
         l.mapSize = layout.sizeCube;
     }
+    // Layers a power of two wide, so that maps sized between powers of two (MapSizing.h) pack
+    // two across the slots of the next.
+    layout.size2D = layout.size2D > 0 ? int(std::bit_ceil(unsigned(layout.size2D))) : 0;
     layout.layers2D = packMaps(mSizes, layout.size2D, mSlots);
     std::size_t next2D = 0;
     for (ShadowedLight& l : mShadowed) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/glm.hpp>
 
@@ -34,17 +35,23 @@ int neededMapSize(const Light& light, const Camera& view, int width, int height,
     const float pixels = std::min(2.0f * radiusPixels, side);
     const float want = kNeededTexelsPerPixel * pixels;
     int size = kMinNeededMapSize;
-    while (size < largest && float(size) < want)
-        size *= 2;
+    for (int k = 1; size < largest && float(size) < want; ++k)
+        size = neededSizeStep(k);
     return std::min(size, largest);
+}
+
+int neededSizeStep(int k) {
+    const int octave = kMinNeededMapSize << (k / 2);
+    if (k % 2 == 0) return octave;
+    return int(float(octave) * std::numbers::sqrt2_v<float>) / 4 * 4;
 }
 
 int windowMapSize(float fittedTexel, float wholeTexel, int size, int held) {
     if (!(fittedTexel > 0.0f) || !(wholeTexel > 0.0f) || size <= kMinNeededMapSize) return size;
     const float want = float(size) * fittedTexel / wholeTexel;  // the window's width in texels
-    int least = kMinNeededMapSize;
-    while (least < size && float(least) < want)
-        least *= 2;
+    int least = size;  // halved while half still holds the window's texels
+    while (least / 2 >= kMinNeededMapSize && float(least / 2) >= want)
+        least /= 2;
     return held >= least && held <= size ? held : least;
 }
 

@@ -17,15 +17,20 @@ constexpr int kMinNeededMapSize = 128;
 // Map texels per picture pixel across the light's reach on screen.
 constexpr float kNeededTexelsPerPixel = 2.0f;
 
+// Sizes by need go up in half octaves from kMinNeededMapSize: 128, 180, 256, 360, 512, 724,
+// 1024... (between powers of two, 2^(k/2) rounded down to a multiple of 4, so two fit the
+// slots of a layer twice their size). Step k's size.
+int neededSizeStep(int k);
+
 // The map size a point or spot light with a range needs in a width x height picture from
 // `view`: kNeededTexelsPerPixel times the pixels its range's sphere spans on screen, rounded up
-// to a power of two, within [kMinNeededMapSize, largest]; `largest` when the camera is inside
-// the sphere. 0 (the light's own size) for other lights and lights without a range.
+// to a step of neededSizeStep, within [kMinNeededMapSize, largest]; `largest` when the camera is
+// inside the sphere. 0 (the light's own size) for other lights and lights without a range.
 int neededMapSize(const Light& light, const Camera& view, int width, int height, int largest);
 
 // A map fitted to part of a face or cone (the part the view sees) keeps the density of the whole
-// face or cone at the needed size with fewer texels: the power-of-two size within
-// [kMinNeededMapSize, size] whose texels are at most `wholeTexel` wide, for a frame fitted at
+// face or cone at the needed size with fewer texels: `size` halved as often as its texels stay
+// at most `wholeTexel` wide and it stays at least kMinNeededMapSize, for a frame fitted at
 // `size` whose texels are `fittedTexel` wide (both in tan units, at distance 1). `held`: the size
 // an earlier frame kept, reused while it lies in that range, so a moving view does not flip
 // between sizes (0: none).

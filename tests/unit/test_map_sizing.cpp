@@ -45,16 +45,30 @@ TEST(MapSizing, SizeFollowsTheReachOnScreen) {
     EXPECT_EQ(neededMapSize(spotAt(1.0f, 2.0f), c, 2048, 2048, 2048), 2048);
     // A sphere of radius 1 at distance 100 spans about 2 / (100 tan 30) * 256 = 8.9 pixels.
     EXPECT_EQ(neededMapSize(spotAt(100.0f, 1.0f), c, 512, 512, 2048), shadow::kMinNeededMapSize);
-    // At distance 10, about 89 pixels: 178 texels wanted, 256 given.
-    EXPECT_EQ(neededMapSize(spotAt(10.0f, 1.0f), c, 512, 512, 2048), 256);
+    // At distance 10, about 89 pixels: 178 texels wanted, 180 given (half an octave above 128).
+    EXPECT_EQ(neededMapSize(spotAt(10.0f, 1.0f), c, 512, 512, 2048), 180);
+    // At distance 6, about 148 pixels: 296 texels wanted, 360 given.
+    EXPECT_EQ(neededMapSize(spotAt(6.0f, 1.0f), c, 512, 512, 2048), 360);
     int previous = 1 << 30;
     for (float d = 2.0f; d < 200.0f; d *= 1.3f) {
         const int size = neededMapSize(spotAt(d, 1.0f), c, 512, 512, 2048);
         EXPECT_LE(size, previous) << "farther never needs more, at " << d;
-        EXPECT_EQ(size & (size - 1), 0) << "a power of two, at " << d;
+        bool step = false;
+        for (int k = 0; k < 12; ++k)
+            step = step || size == shadow::neededSizeStep(k);
+        EXPECT_TRUE(step) << "a step of half an octave, at " << d;
         previous = size;
     }
     EXPECT_LE(neededMapSize(spotAt(1.5f, 1.0f), c, 4096, 4096, 512), 512) << "capped";
+}
+
+TEST(MapSizing, SizesGoUpInHalfOctavesThatPackIntoLayersTwiceTheirSize) {
+    const int steps[] = {128, 180, 256, 360, 512, 724, 1024, 1448, 2048};
+    for (int k = 0; k < 9; ++k)
+        EXPECT_EQ(shadow::neededSizeStep(k), steps[k]) << k;
+    // Two maps between powers of two fit across a layer two steps larger (its halves' slots).
+    for (int k = 1; k < 7; k += 2)
+        EXPECT_LE(2 * shadow::neededSizeStep(k), shadow::neededSizeStep(k + 2)) << k;
 }
 
 TEST(MapSizing, AFittedWindowKeepsTheWholeConesDensityWithFewerTexels) {
@@ -70,6 +84,7 @@ TEST(MapSizing, AFittedWindowKeepsTheWholeConesDensityWithFewerTexels) {
     EXPECT_EQ(windowMapSize(0.2f * whole, whole, 1024, 512), 512);
     EXPECT_EQ(windowMapSize(0.5f * whole, whole, 1024, 256), 512);  // too coarse now
     EXPECT_EQ(windowMapSize(0.2f * whole, whole, 512, 1024), 128);  // held over the size asked
+    EXPECT_EQ(windowMapSize(0.4f * whole, whole, 724, 0), 362);     // halves of a half octave
 }
 
 // Ranged spots over a floor, as in gnomon bench's local-lights sweep.
