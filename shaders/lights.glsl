@@ -14,8 +14,9 @@ layout(std140, binding = 1) uniform Lights {
 layout(location = 6) uniform ivec4 uLightRanges;
 // The loops visit records through this list (render/TiledLights.h), from uLightFirst to the
 // ends in uLightRanges: every record in turn for an untiled draw, or the lights that reach
-// one screen tile. ORDER_SLOTS: as many as the driver's uniform block holds, up to 4096. Read at the loop counter, a dynamically uniform index, it costs a scalar
-// load per light.
+// one screen tile (ORDER_SLOTS: as many slots as the driver's uniform block holds, up to
+// 4096). Read at the loop counter, a dynamically uniform index, it costs a scalar load per
+// light.
 layout(std140, binding = 2) uniform LightOrder {
     ivec4 uLightOrder[ORDER_SLOTS];  // four entries to a std140 slot
 };

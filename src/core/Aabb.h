@@ -26,6 +26,8 @@ struct Aabb {
     glm::vec3 centre() const { return 0.5f * (min + max); }
     glm::vec3 extent() const { return max - min; }
     float radius() const { return 0.5f * glm::length(max - min); }
+    // Distance from `p` to the box's nearest point (0 inside).
+    float distanceTo(const glm::vec3& p) const { return glm::length(glm::clamp(p, min, max) - p); }
     std::array<glm::vec3, 8> corners() const {
         std::array<glm::vec3, 8> c;
         for (int i = 0; i < 8; ++i) {

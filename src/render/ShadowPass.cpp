@@ -311,11 +311,13 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
         // depth is read. Encoded depth clears to all ones, which every packing decodes as
         // >= 1 (far). A layer whose every map is drawn again is cleared whole, once.
         LayerClear& clear = mLayerClears[size_t(light.layer)];
-        const bool square = clear == LayerClear::Squares;
         if (clear != LayerClear::Done) {
+            const bool square = clear == LayerClear::Squares;
             if (square) {
                 glEnable(GL_SCISSOR_TEST);
                 glScissor(light.origin.x, light.origin.y, light.mapSize, light.mapSize);
+            } else {
+                clear = LayerClear::Done;
             }
             fb.clearDepth(one);
             if (colour) {
@@ -323,7 +325,6 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
                 fb.clearColour(white);
             }
             if (square) glDisable(GL_SCISSOR_TEST);
-            if (!square) clear = LayerClear::Done;
         }
         drawCasters(scene, plan, light, options, variant, 1, [&] { gl::uniform(1, m[0]); });
     } else {

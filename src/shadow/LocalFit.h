@@ -27,9 +27,7 @@ struct FitBoxes {
     // samples beyond it are unlit and casters beyond it shadow nothing lit, so neither counts.
     float reach = 0.0f;
     glm::vec3 apex{0.0f};
-    bool beyondReach(const Aabb& box) const {
-        return reach > 0.0f && glm::length(glm::clamp(apex, box.min, box.max) - apex) > reach;
-    }
+    bool beyondReach(const Aabb& box) const { return reach > 0.0f && box.distanceTo(apex) > reach; }
 };
 
 // Depth range of the bounds' corners in front of a light camera (view looks down -z).

@@ -116,8 +116,7 @@ public:
     }
     bool outside(const Aabb& box) const {
         const float reach = mLight.frame.reach;
-        if (reach > 0.0f && glm::length(glm::clamp(mEye, box.min, box.max) - mEye) > reach)
-            return true;
+        if (reach > 0.0f && box.distanceTo(mEye) > reach) return true;
         if (!mCube) return outsideClipVolume(box, mClipFromWorld, mLight.depthClamp);
         if (outsideCube(box, mLight.frame)) return true;
         for (int i = 0; i < mFaceCount; ++i) {

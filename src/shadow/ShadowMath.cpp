@@ -245,9 +245,7 @@ Aabb receiversInLight(const FitScene& scene, const FitBoxes& boxes, const glm::v
 
 bool outsideCube(const Aabb& box, const LightCameraFrame& cube) {
     if (box.empty()) return true;
-    const glm::vec3 eye = glm::vec3(glm::inverse(cube.lightFromWorld)[3]);
-    const glm::vec3 nearest = glm::clamp(eye, box.min, box.max);
-    return glm::length(nearest - eye) > cube.far;
+    return box.distanceTo(glm::vec3(glm::inverse(cube.lightFromWorld)[3])) > cube.far;
 }
 
 glm::mat4 cubeFaceRotation(int face) {

@@ -20,8 +20,6 @@ float distanceToSegment(const glm::vec3& a, const glm::vec3& b) {
     return glm::length(a + t * d);
 }
 
-// Does sample i, with the other end of its cell's segment when it has one, lie wholly farther
-// than `reach` from `apex` (a spot's or point light's range: unlit there)? Never when reach <= 0.
 // The reach the functions below test samples against: none when `samples` already holds only
 // what lies within it (samplesWithin, for this light: its apex, up to a rounding of the inverse
 // its callers took it from).
@@ -31,6 +29,8 @@ float reachToTest(const ViewSamples& samples, const glm::vec3& apex, float reach
     return filtered ? 0.0f : reach;
 }
 
+// Does sample i, with the other end of its cell's segment when it has one, lie wholly farther
+// than `reach` from `apex` (a spot's or point light's range: unlit there)? Never when reach <= 0.
 bool beyondReach(const ViewSamples& samples, std::size_t i, const glm::vec3& apex, float reach) {
     if (!(reach > 0.0f)) return false;
     const std::size_t n = samples.points.size();
@@ -58,11 +58,6 @@ void chunkSamples(ViewSamples& s) {
             s.chunkPads[k] = std::max(s.chunkPads[k], s.pad(s.points[i].w));
         }
     }
-}
-
-// Distance from `p` to `box` (0 inside).
-float distanceToBox(const glm::vec3& p, const Aabb& box) {
-    return glm::length(glm::max(glm::max(box.min - p, p - box.max), glm::vec3(0.0f)));
 }
 
 }  // namespace
@@ -170,28 +165,29 @@ void samplesWithin(const ViewSamples& samples, const glm::vec3& apex, float reac
     const bool chunked = samples.chunks.size() == (n + kSampleChunk - 1) / kSampleChunk &&
                          samples.farthestNext.size() == n;
     std::size_t chunk = ~std::size_t(0);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n;) {
         if (chunked && i / kSampleChunk != chunk) {
             chunk = i / kSampleChunk;
-            // Every segment starting in the chunk lies in its box: wholly beyond, skip them all.
-            if (distanceToBox(apex, samples.chunks[chunk]) - samples.chunkPads[chunk] > reach) {
+            // Every segment starting in the chunk lies in its box: wholly beyond, skip them all
+            // (and the second point of a pair its last point starts).
+            if (samples.chunks[chunk].distanceTo(apex) - samples.chunkPads[chunk] > reach) {
                 i = (chunk + 1) * kSampleChunk;
-                if (i < n && samples.farthestNext[i - 1]) ++i;  // the last pair's second point
-                --i;
+                if (i < n && samples.farthestNext[i - 1]) ++i;
                 continue;
             }
         }
         // A cell's pair is beyond reach or not as one (beyondReach tests their segment).
         const bool pair = i + 1 < n && i < samples.farthestNext.size() && samples.farthestNext[i];
+        const std::size_t next = pair ? i + 2 : i + 1;
         if (!beyondReach(samples, i, apex, reach)) {
-            for (std::size_t k = i; k <= (pair ? i + 1 : i); ++k) {
+            for (std::size_t k = i; k < next; ++k) {
                 out.points.push_back(samples.points[k]);
                 out.farthestNext.push_back(pair && k == i);
                 out.nearest = std::min(out.nearest, samples.points[k].w);
                 out.farthest = std::max(out.farthest, samples.points[k].w);
             }
         }
-        if (pair) ++i;
+        i = next;
     }
     if (out.points.empty()) out.nearest = 0.0f;
 }
