@@ -1,8 +1,8 @@
 // The shadow pass: one depth-only rendering per map the frame plan (shadow::FramePlan) draws
 // again, into the arrays its layout asks for.
 // Single-frustum lights (directional, spot, area, textbook point cameras) each own a square of
-// a layer of a 2D array (layers as large as the largest map; smaller maps share layers,
-// placed by shadow::packMaps);
+// a layer of a 2D array (layers a power of two at least as large as the largest map; maps
+// share layers, placed by shadow::MapPacker);
 // omnidirectional point lights own six layers of a cube-map array, drawn in one instanced
 // pass with gl_Layer from the vertex shader, or six passes where the driver cannot.
 // A map gets the casters the plan found inside its light's volume; the maps the plan keeps are

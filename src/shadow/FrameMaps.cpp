@@ -32,7 +32,6 @@ void FramePlan::layOutMaps(const ShadowOptions& options) {
             layout.sizeCube = std::max(layout.sizeCube, l.mapSize);
             l.layer = layout.cubes++;
         } else {
-            layout.size2D = std::max(layout.size2D, l.mapSize);
             mSizes.push_back(l.mapSize);
         }
     }
@@ -44,21 +43,43 @@ void FramePlan::layOutMaps(const ShadowOptions& options) {
         l.frame.texelWorldSize *= float(l.mapSize) / float(layout.sizeCube);
         l.mapSize = layout.sizeCube;
     }
-    // Layers a power of two wide, so that maps sized between powers of two (MapSizing.h) pack
-    // two across the slots of the next.
-    layout.size2D = layout.size2D > 0 ? int(std::bit_ceil(unsigned(layout.size2D))) : 0;
-    layout.layers2D = packMaps(mSizes, layout.size2D, mSlots);
+    layout.format2D = options.depthFormat;
+    layout.size2D = mPacker.packLeast(mSizes);
+    layout.layers2D = mPacker.layers();
+    keepHeldArray(layout);
     std::size_t next2D = 0;
     for (ShadowedLight& l : mShadowed) {
         if (l.frame.kind == FrameKind::Cube) continue;
-        l.layer = mSlots[next2D].layer;
-        l.origin = mSlots[next2D++].origin;
+        l.layer = mPacker.slots()[next2D].layer;
+        l.origin = mPacker.slots()[next2D++].origin;
     }
-    layout.format2D = options.depthFormat;
     // Cubes of colour formats store native depth.
     layout.formatCube =
         isColourFormat(options.depthFormat) ? DepthFormat::Depth32F : options.depthFormat;
     mLayout = layout;
+}
+
+// The 2D maps' array as earlier frames left it, when this frame's maps fit it and its layers
+// take at most a quarter more texels than the best size's: lights that move change their
+// sizes from frame to frame, and a new array each time would drop every map it held.
+void FramePlan::keepHeldArray(MapLayout& layout) {
+    const MapLayout& held = mHeldLayout;
+    if (layout.layers2D == 0 || held.layers2D == 0 || held.format2D != layout.format2D ||
+        (held.size2D == layout.size2D && held.layers2D == layout.layers2D)) {
+        return;
+    }
+    auto texels = [](int size, int layers) { return double(size) * double(size) * layers; };
+    const int largest = *std::max_element(mSizes.begin(), mSizes.end());
+    if (held.size2D < largest ||
+        texels(held.size2D, held.layers2D) > 1.25 * texels(layout.size2D, layout.layers2D)) {
+        return;
+    }
+    if (mPacker.pack(mSizes, held.size2D) <= held.layers2D) {
+        layout.size2D = held.size2D;
+        layout.layers2D = held.layers2D;
+        return;
+    }
+    mPacker.pack(mSizes, layout.size2D);  // back to the best size's places
 }
 
 // The records' map fields from where the maps went.
@@ -83,6 +104,7 @@ void FramePlan::planMaps(const std::vector<ShadowedLight>& maps, const PlanScene
     mRanges = glm::ivec4(0);
     mHasCascades = mHasFaces = false;
     mShadowed = maps;
+    mHeldLayout = held.layout;
     layOutMaps(options);
     collectCasters(scene, options);
     chooseRedraws(held, options.mapRedraws);

@@ -91,6 +91,7 @@ void FramePlan::plan(const Scene& s, const RenderOptions& options, const PlanSce
                      const ViewSamples* samples, const Camera* fitCamera, const HeldMaps& held) {
     if (!unchanged(s, options, scene, samples, fitCamera)) {
         mMade.valid = false;  // until this plan is whole
+        mHeldLayout = held.layout;
         mFitCamera = fitCamera ? *fitCamera : s.camera;
         // Faces of their own only with the view's samples to fit them to (a face fitted to
         // boxes is no finer than the cube's), and while their records fit the main pass. Not

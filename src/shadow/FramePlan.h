@@ -35,7 +35,7 @@ struct PlanScene {
 };
 
 // The arrays the maps live in: 2D maps share square layers of `size2D` texels a side (smaller
-// maps packed by packMaps), each cube takes six layers of a cube-map array. Cubes of colour
+// maps packed by MapPacker), each cube takes six layers of a cube-map array. Cubes of colour
 // formats store native depth.
 struct MapLayout {
     int size2D = 0, layers2D = 0, sizeCube = 0, cubes = 0;
@@ -134,6 +134,7 @@ private:
     // FrameMaps.cpp: the maps' places in their arrays (and the records' map fields), their
     // casters and keys, and which to draw again.
     void layOutMaps(const ShadowOptions& options);
+    void keepHeldArray(MapLayout& layout);
     void fillMapRecords();
     void collectCasters(const PlanScene& scene, const ShadowOptions& options);
     void chooseRedraws(const HeldMaps& held, int budget);
@@ -197,8 +198,9 @@ private:
     FitScene mFit;        // reused every frame
     ViewSamples mWithin;  // a ranged light's samples (withinRange), storage kept
     MapLayout mLayout;
-    std::vector<int> mSizes;      // reused: the 2D maps' sizes for packMaps
-    std::vector<MapSlot> mSlots;  // reused: their places
+    MapLayout mHeldLayout;    // the arrays' layout when this plan began (HeldMaps::layout)
+    std::vector<int> mSizes;  // reused: the 2D maps' sizes for mPacker
+    MapPacker mPacker;
     std::vector<std::uint32_t> mCasters;
     std::vector<std::uint8_t> mHoldsLight;
     int mCulled = 0;

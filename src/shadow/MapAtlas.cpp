@@ -1,54 +1,59 @@
 #include "shadow/MapAtlas.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace gnomon::shadow {
 
-namespace {
-constexpr int kMaxSplit = 6;  // slots down to 1/64 of a layer's side
-
-// The k-th slot of a layer split 2^level times per side, in Z order: bits of k alternate
-// between x and y, so slots of one level fill the same area as the larger slot they replace.
-glm::ivec2 zOrder(int k) {
-    glm::ivec2 p(0);
-    for (int bit = 0; bit < kMaxSplit; ++bit) {
-        p.x |= ((k >> (2 * bit)) & 1) << bit;
-        p.y |= ((k >> (2 * bit + 1)) & 1) << bit;
+int MapPacker::pack(const std::vector<int>& sizes, int layerSize) {
+    mSlots.assign(sizes.size(), MapSlot{});
+    mShelves.clear();
+    mTops.clear();
+    mOrder.resize(sizes.size());
+    for (std::uint32_t i = 0; i < mOrder.size(); ++i)
+        mOrder[i] = i;
+    std::sort(mOrder.begin(), mOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return sizes[a] > sizes[b] || (sizes[a] == sizes[b] && a < b);
+    });
+    for (std::uint32_t i : mOrder) {
+        const int size = sizes[i];
+        // Beside the maps of a shelf at least as tall (maps come largest first, so every
+        // shelf is).
+        auto shelf = std::find_if(mShelves.begin(), mShelves.end(),
+                                  [&](const Shelf& s) { return s.used + size <= layerSize; });
+        if (shelf == mShelves.end()) {
+            // A new shelf over the first layer's others that leave room, else a new layer.
+            auto top = std::find_if(mTops.begin(), mTops.end(),
+                                    [&](int t) { return t + size <= layerSize; });
+            if (top == mTops.end()) top = mTops.insert(mTops.end(), 0);
+            mShelves.push_back({int(top - mTops.begin()), *top, size, 0});
+            *top += size;
+            shelf = mShelves.end() - 1;
+        }
+        mSlots[i] = {shelf->layer, glm::ivec2(shelf->used, shelf->y)};
+        shelf->used += size;
     }
-    return p;
+    return layers();
 }
-}  // namespace
 
-int packMaps(const std::vector<int>& sizes, int layerSize, std::vector<MapSlot>& slots) {
-    slots.assign(sizes.size(), MapSlot{});
-    if (sizes.empty()) return 0;
-    // Each map's level: the most times the layer's side halves and still holds it.
-    auto levelOf = [&](int size) {
-        int k = 0;
-        while (k < kMaxSplit && (layerSize >> (k + 1)) >= size)
-            ++k;
-        return k;
-    };
-    // Largest slots first, maps of one level in their given order: one pass per level
-    // instead of a sorted copy of the indices (this runs every frame; no allocation).
-    int layer = 0, level = 0, cursor = 0;  // cursor: the next free slot of this level
-    for (int k = 0; k <= kMaxSplit; ++k) {
-        for (std::size_t i = 0; i < sizes.size(); ++i) {
-            if (levelOf(sizes[i]) != k) continue;
-            for (; level < k; ++level)
-                cursor *= 4;  // the same position in slots a quarter the area
-            if (cursor >= (1 << (2 * level))) {
-                ++layer;
-                cursor = 0;
-            }
-            // Slot c of a level spans [c * size / 2^level, (c + 1) * size / 2^level) rounded
-            // down: every slot is at least size >> level wide, and a slot's four quarters
-            // lie exactly inside it even when the layer's size is not a power of two.
-            slots[i] = {layer, zOrder(cursor) * layerSize / (1 << level)};
-            ++cursor;
+int MapPacker::packLeast(const std::vector<int>& sizes) {
+    if (sizes.empty()) {
+        pack(sizes, 0);
+        return 0;
+    }
+    const int least = int(std::bit_ceil(unsigned(*std::max_element(sizes.begin(), sizes.end()))));
+    int best = least;
+    long long bestTexels = -1;
+    for (int size = least; size == least || size <= std::min(4 * least, kLargestChosenLayer);
+         size *= 2) {
+        const long long texels = (long long)pack(sizes, size) * size * size;
+        if (bestTexels < 0 || texels < bestTexels) {
+            best = size;
+            bestTexels = texels;
         }
     }
-    return layer + 1;
+    pack(sizes, best);
+    return best;
 }
 
 }  // namespace gnomon::shadow

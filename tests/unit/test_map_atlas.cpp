@@ -1,5 +1,5 @@
-// shadow::packMaps: smaller maps share layers, no two maps overlap, every map lies inside its
-// layer, and a map's slot is the smallest power-of-two split that holds it.
+// shadow::MapPacker: maps share layers, no two maps overlap, every map lies inside its layer,
+// and the layer size chosen takes the fewest texels.
 #include <gtest/gtest.h>
 
 #include "shadow/MapAtlas.h"
@@ -27,34 +27,60 @@ void expectDisjointInside(const std::vector<int>& sizes, int layerSize,
 }
 
 TEST(MapAtlas, SmallerMapsShareLayers) {
-    std::vector<shadow::MapSlot> slots;
+    shadow::MapPacker packer;
     const std::vector<int> sizes = {512, 4096, 512, 1024, 512, 512, 2048, 1024};
-    // 4096: a layer; 2048, 1024, 1024 and four 512s fit in a second (1/4 + 2/16 + 4/64).
-    EXPECT_EQ(shadow::packMaps(sizes, 4096, slots), 2);
-    expectDisjointInside(sizes, 4096, slots);
-    EXPECT_EQ(slots[1].layer, 0);
-    EXPECT_EQ(slots[1].origin, glm::ivec2(0));
+    // 4096: a layer; 2048, 1024, 1024 and four 512s fit beside each other in a second.
+    EXPECT_EQ(packer.pack(sizes, 4096), 2);
+    expectDisjointInside(sizes, 4096, packer.slots());
+    EXPECT_EQ(packer.slots()[1].layer, 0);
+    EXPECT_EQ(packer.slots()[1].origin, glm::ivec2(0));
 }
 
 TEST(MapAtlas, EqualSizesTakeALayerEach) {
-    std::vector<shadow::MapSlot> slots;
+    shadow::MapPacker packer;
     const std::vector<int> sizes(5, 1024);
-    EXPECT_EQ(shadow::packMaps(sizes, 1024, slots), 5);
+    EXPECT_EQ(packer.pack(sizes, 1024), 5);
     for (int i = 0; i < 5; ++i)
-        EXPECT_EQ(slots[std::size_t(i)].layer, i);
+        EXPECT_EQ(packer.slots()[std::size_t(i)].layer, i);
 }
 
 TEST(MapAtlas, SizesThatAreNotPowersOfTwo) {
-    std::vector<shadow::MapSlot> slots;
+    shadow::MapPacker packer;
     const std::vector<int> sizes = {1386, 693, 692, 600, 100, 100, 100, 100, 100, 64, 1000};
-    const int layers = shadow::packMaps(sizes, 1386, slots);
-    expectDisjointInside(sizes, 1386, slots);
+    const int layers = packer.pack(sizes, 1386);
+    expectDisjointInside(sizes, 1386, packer.slots());
     EXPECT_LE(layers, 3);
     // 257 maps of 64² in layers of 1024²: 16 x 16 per layer, so two layers.
     const std::vector<int> many(257, 64);
-    EXPECT_EQ(shadow::packMaps(many, 1024, slots), 2);
-    expectDisjointInside(many, 1024, slots);
-    EXPECT_TRUE(shadow::packMaps({}, 1024, slots) == 0 && slots.empty());
+    EXPECT_EQ(packer.pack(many, 1024), 2);
+    expectDisjointInside(many, 1024, packer.slots());
+    EXPECT_TRUE(packer.pack({}, 1024) == 0 && packer.slots().empty());
+}
+
+// Maps between powers of two: 25 of 360² fill one 2048² layer five by five, where slots of
+// 512² would take two; 724² maps leave room beside them for 512² maps.
+TEST(MapAtlas, LayerSizeWithTheFewestTexels) {
+    shadow::MapPacker packer;
+    const std::vector<int> threeSixty(25, 360);
+    EXPECT_EQ(packer.packLeast(threeSixty), 2048);
+    EXPECT_EQ(packer.layers(), 1);
+    expectDisjointInside(threeSixty, 2048, packer.slots());
+    std::vector<int> mixed(4, 724);
+    mixed.insert(mixed.end(), 3, 512);
+    EXPECT_EQ(packer.packLeast(mixed), 2048);
+    EXPECT_EQ(packer.layers(), 1);
+    expectDisjointInside(mixed, 2048, packer.slots());
+    // Few small maps keep small layers: three 512² maps take three 512² layers, not a 1024²
+    // one; on a tie (four) the smaller size too.
+    EXPECT_EQ(packer.packLeast(std::vector<int>(3, 512)), 512);
+    EXPECT_EQ(packer.layers(), 3);
+    EXPECT_EQ(packer.packLeast(std::vector<int>(4, 512)), 512);
+    // A map larger than the largest chosen layer gets its own size, the small one a layer of
+    // that size too.
+    EXPECT_EQ(packer.packLeast({4096, 512}), 4096);
+    EXPECT_EQ(packer.layers(), 2);
+    EXPECT_EQ(packer.packLeast({}), 0);
+    EXPECT_EQ(packer.layers(), 0);
 }
 
 }  // namespace
