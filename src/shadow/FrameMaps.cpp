@@ -60,21 +60,20 @@ void FramePlan::layOutMaps(const ShadowOptions& options) {
 }
 
 // The 2D maps' array as earlier frames left it, when this frame's maps fit it and its layers
-// take at most a quarter more texels than the best size's: lights that move change their
-// sizes from frame to frame, and a new array each time would drop every map it held.
+// take at most a quarter more texels than the best size's, each map kept where it was while
+// its size is: lights that move change their sizes from frame to frame, and a new array or
+// new places would drop the maps they held.
 void FramePlan::keepHeldArray(MapLayout& layout) {
     const MapLayout& held = mHeldLayout;
-    if (layout.layers2D == 0 || held.layers2D == 0 || held.format2D != layout.format2D ||
-        (held.size2D == layout.size2D && held.layers2D == layout.layers2D)) {
-        return;
-    }
+    if (layout.layers2D == 0 || held.layers2D == 0 || held.format2D != layout.format2D) return;
     auto texels = [](int size, int layers) { return double(size) * double(size) * layers; };
     const int largest = *std::max_element(mSizes.begin(), mSizes.end());
     if (held.size2D < largest ||
         texels(held.size2D, held.layers2D) > 1.25 * texels(layout.size2D, layout.layers2D)) {
         return;
     }
-    if (mPacker.pack(mSizes, held.size2D) <= held.layers2D) {
+    // Maps whose size did not change stay where they were.
+    if (mPacker.pack(mSizes, held.size2D, true) <= held.layers2D) {
         layout.size2D = held.size2D;
         layout.layers2D = held.layers2D;
         return;
@@ -106,6 +105,7 @@ void FramePlan::planMaps(const std::vector<ShadowedLight>& maps, const PlanScene
     mShadowed = maps;
     mHeldLayout = held.layout;
     layOutMaps(options);
+    mPacker.keep();
     collectCasters(scene, options);
     chooseRedraws(held, options.mapRedraws);
 }

@@ -103,6 +103,7 @@ void FramePlan::plan(const Scene& s, const RenderOptions& options, const PlanSce
         mSizeCap = 0;
         planWithin(s, options, scene, samples, faces);
         fitBudget(s, options, scene, samples, faces);
+        mPacker.keep();  // the places the next plan keeps
         fillMapRecords();
         collectCasters(scene, options.shadow);
         mMade.geometry = scene.revision;

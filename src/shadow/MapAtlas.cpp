@@ -5,35 +5,84 @@
 
 namespace gnomon::shadow {
 
-int MapPacker::pack(const std::vector<int>& sizes, int layerSize) {
+int MapPacker::footprint(int size) const {
+    const int rounded = (size + kMapAlignment - 1) / kMapAlignment * kMapAlignment;
+    return rounded <= mLayerSize ? rounded : size;
+}
+
+bool MapPacker::isFree(const MapSlot& at, int size) const {
+    if (at.origin.x + size > mLayerSize || at.origin.y + size > mLayerSize) return false;
+    if (at.layer >= mLayers) return true;
+    const int x0 = at.origin.x / kMapAlignment, y0 = at.origin.y / kMapAlignment;
+    const int x1 = (at.origin.x + size - 1) / kMapAlignment;
+    const int y1 = (at.origin.y + size - 1) / kMapAlignment;
+    const std::uint8_t* layer = &mTaken[std::size_t(at.layer) * std::size_t(mCells * mCells)];
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x)
+            if (layer[y * mCells + x]) return false;
+    return true;
+}
+
+void MapPacker::take(const MapSlot& at, int size) {
+    if (at.layer >= mLayers) {
+        mLayers = at.layer + 1;
+        mTaken.resize(std::size_t(mLayers) * std::size_t(mCells * mCells), 0);
+    }
+    std::uint8_t* layer = &mTaken[std::size_t(at.layer) * std::size_t(mCells * mCells)];
+    for (int y = at.origin.y / kMapAlignment; y <= (at.origin.y + size - 1) / kMapAlignment; ++y)
+        for (int x = at.origin.x / kMapAlignment; x <= (at.origin.x + size - 1) / kMapAlignment;
+             ++x)
+            layer[y * mCells + x] = 1;
+}
+
+// The first free place on the grid of `size` (a footprint), from where the last map of that
+// size went: places only fill up, so none before it has room.
+MapSlot MapPacker::firstFree(int size) {
+    auto cursor = std::find_if(mCursors.begin(), mCursors.end(),
+                               [&](const Cursor& c) { return c.size == size; });
+    if (cursor == mCursors.end()) cursor = mCursors.insert(mCursors.end(), Cursor{size, 0, 0});
+    const int across = std::max(mLayerSize / size, 1);
+    for (;; ++cursor->index) {
+        if (cursor->index == across * across) {
+            cursor->index = 0;
+            ++cursor->layer;
+        }
+        const MapSlot at{cursor->layer,
+                         glm::ivec2(cursor->index % across, cursor->index / across) * size};
+        if (isFree(at, size)) return at;
+    }
+}
+
+int MapPacker::pack(const std::vector<int>& sizes, int layerSize, bool keep) {
+    mLayerSize = layerSize;
+    mCells = (layerSize + kMapAlignment - 1) / kMapAlignment;
+    mLayers = 0;
+    mTaken.clear();
+    mCursors.clear();
+    mSizes = sizes;
     mSlots.assign(sizes.size(), MapSlot{});
-    mShelves.clear();
-    mTops.clear();
-    mOrder.resize(sizes.size());
-    for (std::uint32_t i = 0; i < mOrder.size(); ++i)
-        mOrder[i] = i;
+    mPlaced.assign(sizes.size(), 0);
+    if (keep && mKeptLayerSize == layerSize) {
+        for (std::size_t i = 0; i < sizes.size() && i < mKeptSizes.size(); ++i) {
+            const int size = footprint(sizes[i]);
+            if (size != footprint(mKeptSizes[i]) || !isFree(mKeptSlots[i], size)) continue;
+            mSlots[i] = mKeptSlots[i];
+            take(mSlots[i], size);
+            mPlaced[i] = 1;
+        }
+    }
+    mOrder.clear();
+    for (std::uint32_t i = 0; i < sizes.size(); ++i)
+        if (!mPlaced[i]) mOrder.push_back(i);
     std::sort(mOrder.begin(), mOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
         return sizes[a] > sizes[b] || (sizes[a] == sizes[b] && a < b);
     });
     for (std::uint32_t i : mOrder) {
-        const int size = sizes[i];
-        // Beside the maps of a shelf at least as tall (maps come largest first, so every
-        // shelf is).
-        auto shelf = std::find_if(mShelves.begin(), mShelves.end(),
-                                  [&](const Shelf& s) { return s.used + size <= layerSize; });
-        if (shelf == mShelves.end()) {
-            // A new shelf over the first layer's others that leave room, else a new layer.
-            auto top = std::find_if(mTops.begin(), mTops.end(),
-                                    [&](int t) { return t + size <= layerSize; });
-            if (top == mTops.end()) top = mTops.insert(mTops.end(), 0);
-            mShelves.push_back({int(top - mTops.begin()), *top, size, 0});
-            *top += size;
-            shelf = mShelves.end() - 1;
-        }
-        mSlots[i] = {shelf->layer, glm::ivec2(shelf->used, shelf->y)};
-        shelf->used += size;
+        const int size = footprint(sizes[i]);
+        mSlots[i] = firstFree(size);
+        take(mSlots[i], size);
     }
-    return layers();
+    return mLayers;
 }
 
 int MapPacker::packLeast(const std::vector<int>& sizes) {
@@ -54,6 +103,12 @@ int MapPacker::packLeast(const std::vector<int>& sizes) {
     }
     pack(sizes, best);
     return best;
+}
+
+void MapPacker::keep() {
+    mKeptLayerSize = mLayerSize;
+    mKeptSlots = mSlots;
+    mKeptSizes = mSizes;
 }
 
 }  // namespace gnomon::shadow

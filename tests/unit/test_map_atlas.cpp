@@ -1,5 +1,6 @@
 // shadow::MapPacker: maps share layers, no two maps overlap, every map lies inside its layer,
-// and the layer size chosen takes the fewest texels.
+// the layer size chosen takes the fewest texels, and maps keep their places from one packing
+// to the next while their sizes do.
 #include <gtest/gtest.h>
 
 #include "shadow/MapAtlas.h"
@@ -47,14 +48,49 @@ TEST(MapAtlas, EqualSizesTakeALayerEach) {
 TEST(MapAtlas, SizesThatAreNotPowersOfTwo) {
     shadow::MapPacker packer;
     const std::vector<int> sizes = {1386, 693, 692, 600, 100, 100, 100, 100, 100, 64, 1000};
-    const int layers = packer.pack(sizes, 1386);
+    packer.pack(sizes, 1386);
     expectDisjointInside(sizes, 1386, packer.slots());
-    EXPECT_LE(layers, 3);
+    const std::vector<int> steps = {724, 360, 512, 180, 724, 360, 360, 128, 256, 512, 1024};
+    packer.pack(steps, 2048);
+    expectDisjointInside(steps, 2048, packer.slots());
+    // Maps start on tile corners.
+    for (const shadow::MapSlot& slot : packer.slots()) {
+        EXPECT_EQ(slot.origin.x % shadow::kMapAlignment, 0);
+        EXPECT_EQ(slot.origin.y % shadow::kMapAlignment, 0);
+    }
     // 257 maps of 64² in layers of 1024²: 16 x 16 per layer, so two layers.
     const std::vector<int> many(257, 64);
     EXPECT_EQ(packer.pack(many, 1024), 2);
     expectDisjointInside(many, 1024, packer.slots());
     EXPECT_TRUE(packer.pack({}, 1024) == 0 && packer.slots().empty());
+}
+
+// One map's new size moves no other map: the others keep their places, the changed one
+// goes where there is room.
+TEST(MapAtlas, MapsKeepTheirPlacesWhileTheirSizesDo) {
+    shadow::MapPacker packer;
+    std::vector<int> sizes = {360, 512, 360, 724, 180, 512, 360, 256};
+    packer.pack(sizes, 2048);
+    const std::vector<shadow::MapSlot> before = packer.slots();
+    packer.keep();
+    sizes[1] = 724;  // a light came closer
+    packer.pack(sizes, 2048, true);
+    expectDisjointInside(sizes, 2048, packer.slots());
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+        if (i == 1) continue;
+        EXPECT_EQ(packer.slots()[i].layer, before[i].layer) << i;
+        EXPECT_EQ(packer.slots()[i].origin, before[i].origin) << i;
+    }
+    // Without keeping, the larger map goes first and others move.
+    packer.pack(sizes, 2048);
+    expectDisjointInside(sizes, 2048, packer.slots());
+    bool moved = false;
+    for (std::size_t i = 0; i < sizes.size(); ++i)
+        moved = moved || packer.slots()[i].origin != before[i].origin;
+    EXPECT_TRUE(moved);
+    // Kept places are for the kept layer size only.
+    packer.pack(sizes, 4096, true);
+    expectDisjointInside(sizes, 4096, packer.slots());
 }
 
 // Maps between powers of two: 25 of 360² fill one 2048² layer five by five, where slots of
