@@ -6,6 +6,7 @@
 namespace gnomon::shadow {
 
 int MapPacker::footprint(int size) const {
+    size = std::max(size, 1);
     const int rounded = (size + kMapAlignment - 1) / kMapAlignment * kMapAlignment;
     return rounded <= mLayerSize ? rounded : size;
 }
@@ -29,9 +30,10 @@ void MapPacker::take(const MapSlot& at, int size) {
         mTaken.resize(std::size_t(mLayers) * std::size_t(mCells * mCells), 0);
     }
     std::uint8_t* layer = &mTaken[std::size_t(at.layer) * std::size_t(mCells * mCells)];
-    for (int y = at.origin.y / kMapAlignment; y <= (at.origin.y + size - 1) / kMapAlignment; ++y)
-        for (int x = at.origin.x / kMapAlignment; x <= (at.origin.x + size - 1) / kMapAlignment;
-             ++x)
+    const int x1 = std::min((at.origin.x + size - 1) / kMapAlignment, mCells - 1);
+    const int y1 = std::min((at.origin.y + size - 1) / kMapAlignment, mCells - 1);
+    for (int y = at.origin.y / kMapAlignment; y <= y1; ++y)
+        for (int x = at.origin.x / kMapAlignment; x <= x1; ++x)
             layer[y * mCells + x] = 1;
 }
 
@@ -41,7 +43,10 @@ MapSlot MapPacker::firstFree(int size) {
     auto cursor = std::find_if(mCursors.begin(), mCursors.end(),
                                [&](const Cursor& c) { return c.size == size; });
     if (cursor == mCursors.end()) cursor = mCursors.insert(mCursors.end(), Cursor{size, 0, 0});
-    const int across = std::max(mLayerSize / size, 1);
+    // A map larger than the layer (outside pack's contract) gets a layer of its own, at its
+    // corner, rather than a search without end.
+    if (size > mLayerSize) return MapSlot{std::max(mLayers, cursor->layer), glm::ivec2(0)};
+    const int across = mLayerSize / size;
     for (;; ++cursor->index) {
         if (cursor->index == across * across) {
             cursor->index = 0;

@@ -25,8 +25,8 @@ struct MapSlot {
 constexpr int kLargestChosenLayer = 2048;
 
 // Maps start on multiples of this many texels (where the layer holds the rounded size):
-// llvmpipe rasterises and clears in tiles of 64 x 64 pixels, and a tile two maps share is
-// drawn, and cleared through a scissor, pixel by pixel for each.
+// llvmpipe rasterises and clears in tiles of 64 x 64 pixels, so no tile holds parts of two
+// maps.
 constexpr int kMapAlignment = 64;
 
 // Places maps; its storage is reused from call to call (it runs whenever a plan changes).

@@ -63,6 +63,10 @@ TEST(MapAtlas, SizesThatAreNotPowersOfTwo) {
     EXPECT_EQ(packer.pack(many, 1024), 2);
     expectDisjointInside(many, 1024, packer.slots());
     EXPECT_TRUE(packer.pack({}, 1024) == 0 && packer.slots().empty());
+    // Outside the contract (a map larger than the layer): a layer of its own, no endless search.
+    EXPECT_EQ(packer.pack({512, 2048, 0}, 1024), 2);
+    EXPECT_NE(packer.slots()[1].layer, packer.slots()[0].layer);
+    EXPECT_NE(packer.slots()[1].layer, packer.slots()[2].layer);
 }
 
 // One map's new size moves no other map: the others keep their places, the changed one
