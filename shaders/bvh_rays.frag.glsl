@@ -13,5 +13,6 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     int k = p.y * textureSize(uRayOrigins, 0).x + p.x;
     vec4 o = bvhTexel(uRayOrigins, k), d = bvhTexel(uRayDirections, k);
-    fHit = vec4(bvhTrace(o.xyz, d.xyz, 0.0, o.w, d.w > 0.5), 0.0, 0.0, 1.0);
+    int hit;
+    fHit = vec4(bvhTrace(o.xyz, d.xyz, 0.0, o.w, d.w > 0.5, -1, hit), 0.0, 0.0, 1.0);
 }

@@ -118,9 +118,11 @@ bool bvhTexelBlocks(int tri, vec3 b) {
     return alpha >= t1.z;
 }
 
-// The nearest hit's distance (when `anyCaster`: the first caster's) within (tnear, tfar];
-// -1 for none.
-float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster) {
+// The nearest hit's distance (when `anyCaster`: the first caster's) within (tnear, tfar],
+// passing through triangle `skip` (-1: none); -1 for none. `hit`: its triangle (-1: none).
+float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, int skip,
+               out int hit) {
+    hit = -1;
     if (textureSize(uBvhNodes, 0).x < 2) return -1.0;  // an empty hierarchy
     BvhRayFrame r = bvhFrame(origin, dir);
     float best = -1.0;
@@ -157,13 +159,14 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster) {
         } else {
             for (int i = first; i < first + count; ++i) {
                 int flags = int(bvhTexel(uBvhTriangles, 3 * i + 2).w);
-                if (anyCaster && (flags & 1) == 0) continue;
+                if ((anyCaster && (flags & 1) == 0) || i == skip) continue;
                 vec3 bary;
                 float t = bvhHitTriangle(r, i, tnear, tfar, bary);
                 if (t < 0.0) continue;
                 if (anyCaster && (flags & 2) != 0 && !bvhTexelBlocks(i, bary)) continue;
                 best = t;
                 tfar = t;
+                hit = i;
                 if (anyCaster) return best;
             }
         }

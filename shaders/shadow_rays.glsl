@@ -12,20 +12,63 @@
 const float kRayEdgeOn = 1e-3;
 // Shading and plane normals closer than this (sine of their angle): a flat face.
 const float kFlatFaceSine = 3e-4;
-// The margin of rayLead, as shares of the casters' extent and of the position's size.
+// The margin of rayLead, as shares of the casters' extent (their box's diagonal) and of the
+// position's size: twice the reference's (truth::ShadowRays::lead, of the radius), for the
+// interpolated position rounds more than the reference's, taken from its triangle's corners.
 const float kRayMarginOfExtent = 2e-6;
 const float kRayMarginOfPosition = 1e-6;
+// Within this cosine of edge-on, the ray leaves from the surface's own triangle, as the
+// reference's does (truth::Reference): its normal from the corners, which puts a face all but
+// edge-on to the light on the reference's side of kRayEdgeOn (interpolated and derived normals
+// round by 1e-5..1e-4), the point moved onto its plane, and the lead as short as the
+// reference's, so a ray all but along the surface still meets a caster a few centimetres off
+// (a ledge over a wall 0.06 degrees from the sun's plane, in Sponza's atrium).
+const float kOwnTriangleCosine = 0.03;
 
-// How far along the ray its start is skipped: the stretch within a margin of the surface's
-// plane, for the rounding of the interpolated position (it grows with the casters' extent, the
-// root's box, and with the position's own size). The ray keeps to the line through the point,
-// as the reference's does (truth::ShadowRays::lead): a start pushed off along the normal would
-// move the whole ray sideways, past the edges of the casters near it (leaks along every
-// shadow's edge under a low light).
-float rayLead(vec3 p, vec3 n, vec3 dir) {
+// Where a shadow ray leaves: the point, its normal on the side the camera sees, the margin
+// its lead follows, and the triangle it leaves (-1: not known).
+struct RayStart {
+    vec3 point, normal;
+    float margin;
+    int triangle;
+};
+
+float rayMargin(vec3 p, float ofExtent) {
     vec3 lo = bvhTexel(uBvhNodes, 0).xyz, hi = bvhTexel(uBvhNodes, 1).xyz;
-    float margin = kRayMarginOfExtent * length(hi - lo) + kRayMarginOfPosition * length(p);
-    return margin / max(dot(n, dir), kRayEdgeOn);
+    return kRayMarginOfExtent * ofExtent * length(hi - lo) + kRayMarginOfPosition * length(p);
+}
+
+// The start at `r` with normal `n`; near edge-on to `wsToLight`, on the triangle the camera's
+// ray meets at the point, as the reference's does (found by a short stretch of that ray around
+// the point), where the hierarchy holds one there (not under a receiver that casts no shadow).
+RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight) {
+    RayStart s = RayStart(r.position, n, rayMargin(r.position, 1.0), -1);
+    if (abs(dot(n, wsToLight)) < kOwnTriangleCosine) {
+        float h = 64.0 * s.margin;
+        vec3 view = normalize(r.position - uEye);
+        int tri;
+        if (bvhTrace(s.point - h * view, view, 0.0, 2.0 * h, false, -1, tri) >= 0.0) {
+            vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz;
+            vec3 g = cross(bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - a,
+                           bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - a);
+            if (length(g) > 0.0) {
+                s.normal = normalize(g);
+                s.point -= dot(s.point - a, s.normal) * s.normal;
+                s.margin = rayMargin(s.point, 0.5);
+                s.triangle = tri;
+            }
+        }
+    }
+    if (dot(s.normal, uEye - r.position) < 0.0) s.normal = -s.normal;  // the side seen
+    return s;
+}
+
+// How far along the ray its start is skipped: the stretch within the margin of the surface's
+// plane, for the rounding of the position. The ray keeps to the line through the point, as the
+// reference's does: a start pushed off along the normal would move the whole ray sideways, past
+// the edges of the casters near it (leaks along every shadow's edge under a low light).
+float rayLead(RayStart s, vec3 dir) {
+    return s.margin / max(dot(s.normal, dir), kRayEdgeOn);
 }
 
 // The light's visibility at `r` along `wsToLight` (lightAt's direction): 0 when a caster lies
@@ -39,12 +82,12 @@ ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     // light (a wall under a sun at a right angle to it) on one side of kRayEdgeOn throughout.
     vec3 n = r.planeNormal;
     if (length(cross(n, r.normal)) < kFlatFaceSine) n = r.normal;
-    if (dot(n, uEye - r.position) < 0.0) n = -n;  // the side the camera sees
-    if (dot(n, wsToLight) <= kRayEdgeOn) {
+    RayStart start = rayStart(r, n, wsToLight);
+    if (dot(start.normal, wsToLight) <= kRayEdgeOn) {
         result.visibility = 0.0;
         return result;
     }
-    vec3 origin = r.position;
+    vec3 origin = start.point;
     vec3 dir = wsToLight;
     float reach = 1e30;
     if (light.type == kArea) {
@@ -54,9 +97,11 @@ ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
         reach = length(d);
         dir = d / reach;
     }
-    float lead = rayLead(origin, n, dir);
+    float lead = rayLead(start, dir);
     if (!(reach > lead)) return result;  // the light lies within the margin: nothing to cross
-    result.visibility = bvhTrace(origin, dir, lead, reach, true) >= 0.0 ? 0.0 : 1.0;
+    int hit;  // the ray leaves start.triangle: not a caster of its own point
+    result.visibility =
+        bvhTrace(origin, dir, lead, reach, true, start.triangle, hit) >= 0.0 ? 0.0 : 1.0;
     return result;
 }
 

@@ -10,6 +10,7 @@
 #include "RayTest.h"
 #include "ShadowCheck.h"
 #include "render/RayScene.h"
+#include "scene/MeshBuilder.h"
 
 namespace gnomon::test {
 namespace {
@@ -52,6 +53,30 @@ TEST(ShadowRays, BeatACoarseMap) {
                 100.0 * r.overall.misclassified);
     EXPECT_GT(m.overall.misclassified, 0.001);
     EXPECT_LT(r.overall.misclassified, m.overall.misclassified);
+    expectNearlyExact(r);
+}
+
+// A floor all but edge-on to a low sun: its triangles' normals, from their corners, put the
+// sun 1.2e-3 (cosine) above it, the edge-on bound being 1e-3; its vertex normals lean 2.5e-4
+// away from the sun, under the bound. The reference takes the triangles' normals; the rays
+// must too, or the whole floor turns dark where the reference lights it.
+TEST(ShadowRays, AFloorAllButEdgeOnFollowsItsTriangles) {
+    Scene s;
+    s.name = "edge-on-floor";
+    s.materials.push_back(Material{});
+    Mesh floor = mesh::quad("floor", {-10, 0, -10}, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10});
+    for (glm::vec3& n : floor.normals)
+        n = glm::normalize(glm::vec3(0.0f, 1.0f, 2.5e-4f));
+    s.meshes.push_back(floor);
+    s.objects.push_back({"floor", 0, 0, glm::mat4(1.0f), {}, true, true});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = -glm::normalize(glm::vec3(0.0f, 1.2e-3f, -1.0f));
+    s.lights.push_back(sun);
+    s.camera.eye = {0.0f, 12.0f, 4.0f};
+    s.camera.centre = {0.0f, 0.0f, 0.0f};
+    const ScoreResult r = score(sharedRenderer(), s, traced(s, 64));
+    ASSERT_GT(r.overall.pixels, 1000);
     expectNearlyExact(r);
 }
 
