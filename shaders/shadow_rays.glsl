@@ -20,9 +20,9 @@ const float kRayMarginOfPosition = 1e-6;
 // Within this cosine of edge-on, the ray leaves from the surface's own triangle, as the
 // reference's does (truth::Reference): its normal from the corners, which puts a face all but
 // edge-on to the light on the reference's side of kRayEdgeOn (interpolated and derived normals
-// round by 1e-5..1e-4), the point moved onto its plane, and the lead as short as the
-// reference's, so a ray all but along the surface still meets a caster a few centimetres off
-// (a ledge over a wall 0.06 degrees from the sun's plane, in Sponza's atrium).
+// round by 1e-5..1e-4: a wall 0.06 degrees from the sun's plane in Sponza's atrium fell either
+// side), and the point moved onto its plane. The lead keeps the renderer's margin: the
+// reference's shorter one put false shadows on creases (glmark2's cat on a ground).
 const float kOwnTriangleCosine = 0.03;
 
 // Where a shadow ray leaves: the point, its normal on the side the camera sees, the margin
@@ -33,16 +33,16 @@ struct RayStart {
     int triangle;
 };
 
-float rayMargin(vec3 p, float ofExtent) {
+float rayMargin(vec3 p) {
     vec3 lo = bvhTexel(uBvhNodes, 0).xyz, hi = bvhTexel(uBvhNodes, 1).xyz;
-    return kRayMarginOfExtent * ofExtent * length(hi - lo) + kRayMarginOfPosition * length(p);
+    return kRayMarginOfExtent * length(hi - lo) + kRayMarginOfPosition * length(p);
 }
 
 // The start at `r` with normal `n`; near edge-on to `wsToLight`, on the triangle the camera's
 // ray meets at the point, as the reference's does (found by a short stretch of that ray around
 // the point), where the hierarchy holds one there (not under a receiver that casts no shadow).
 RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight) {
-    RayStart s = RayStart(r.position, n, rayMargin(r.position, 1.0), -1);
+    RayStart s = RayStart(r.position, n, rayMargin(r.position), -1);
     if (abs(dot(n, wsToLight)) < kOwnTriangleCosine) {
         float h = 64.0 * s.margin;
         vec3 view = normalize(r.position - uEye);
@@ -54,7 +54,6 @@ RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight) {
             if (length(g) > 0.0) {
                 s.normal = normalize(g);
                 s.point -= dot(s.point - a, s.normal) * s.normal;
-                s.margin = rayMargin(s.point, 0.5);
                 s.triangle = tri;
             }
         }
