@@ -25,6 +25,10 @@
 #include "gnomon/Scene.h"
 #include "truth/Tracer.h"
 
+namespace bvh_layout {
+#include "bvh_layout.glsl"  // NOLINT(bugprone-suspicious-include): shared with GLSL
+}  // namespace bvh_layout
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -184,7 +188,7 @@ int main(int argc, char** argv) {
                     path.c_str(), tree.triangles().size(), tree.nodes().size(), buildSeconds, width,
                     height);
         namespace gl = gnomon::gl;
-        const int rowTexels = 4096;
+        const int rowTexels = bvh_layout::kBvhRowTexels;
         gl::Texture nodes = gl::Texture::texelRows("bvh nodes", &tree.nodes()[0].lo.x,
                                                    tree.nodes().size() * 2, rowTexels);
         gl::Texture triangles = gl::Texture::texelRows("bvh triangles", &tree.triangles()[0].p0.x,

@@ -1,9 +1,9 @@
 // Rays through the project's own BVH (src/bvh/Bvh.h), read from two RGBA32F textures with
 // texelFetch so it runs on WebGL2 as on OpenGL 4.5: node i is texels 2i, 2i+1 of uBvhNodes,
-// triangle j texels 3j..3j+2 of uBvhTriangles, texel k of a texture at (k mod width,
-// k / width). The same traversal as the C++ (front to back, a stack of deferred siblings,
+// triangle j texels 3j..3j+2 of uBvhTriangles, rows of kBvhRowTexels texels (bvh_layout.glsl). The same traversal as the C++ (front to back, a stack of deferred siblings,
 // box exits widened as Ize 2013 shows) and the watertight triangle test of Woop, Benthin and
 // Wald 2013, without the C++'s double-precision retry of an area of exactly 0.
+#include "bvh_layout.glsl"
 layout(binding = 12) uniform highp sampler2D uBvhNodes;
 layout(binding = 13) uniform highp sampler2D uBvhTriangles;
 // Masked and blended casters' cut-outs (render/RayMasks.h): texture coordinates and rules per
@@ -15,8 +15,7 @@ const float kBvhWiden = 1.0 + 2.0 * (3.0 * 5.9604645e-8) / (1.0 - 3.0 * 5.960464
 const int kBvhStack = 64;
 
 vec4 bvhTexel(highp sampler2D s, int k) {
-    int w = textureSize(s, 0).x;
-    return texelFetch(s, ivec2(k % w, k / w), 0);
+    return texelFetch(s, ivec2(k & (kBvhRowTexels - 1), k >> kBvhRowLog2), 0);
 }
 
 // A ray in the form both tests use: the inverse direction for slabs, the shear for triangles.
@@ -76,12 +75,13 @@ float bvhHitTriangle(BvhRayFrame r, int tri, float tnear, float tfar, out vec3 b
 }
 
 // A texel index wrapped into 0..n-1 as the texture's sampler wraps it (mode: 0 repeat,
-// 1 clamp to edge, 2 mirrored repeat).
+// 1 clamp to edge, 2 mirrored repeat). The remainder in floats, exact for indices and sizes
+// under 2^24: an integer one is a division a lane on a CPU driver, paid by every pixel.
 int bvhWrap(int i, int n, int mode) {
     if (mode == 1) return clamp(i, 0, n - 1);
-    int period = mode == 2 ? 2 * n : n;
-    int m = ((i % period) + period) % period;
-    return m < n ? m : period - 1 - m;
+    float period = float(mode == 2 ? 2 * n : n);
+    int m = clamp(int(float(i) - period * floor(float(i) / period)), 0, int(period) - 1);
+    return m < n ? m : int(period) - 1 - m;
 }
 
 // Alpha of texel `p` of a texture whose first alpha is byte `first` of uBvhAlphas.

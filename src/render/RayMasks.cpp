@@ -13,7 +13,6 @@ namespace {
 // `first` is stored as first / kFirstSplit and first mod kFirstSplit: each part a whole
 // number a float holds exactly.
 constexpr std::size_t kFirstSplit = 4096;
-constexpr int kRowTexels = 4096;
 }  // namespace
 
 RayCaster rayCaster(const Scene& scene, const Object& object, const ShadowOptions& options) {
@@ -68,8 +67,10 @@ void RayMasks::build(const Scene& scene, const std::vector<RayCaster>& casters,
     }
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     if (first.empty()) {
-        mUvs = gl::Texture::texelRows("shadow-ray uvs", none, 1, 1);
-        mAlphas = gl::Texture::display2D("shadow-ray alphas", Image(1, 1, 4));
+        // A row each, as the shader reads them: its reads run for every pixel on a CPU driver,
+        // masked off, and stay inside the texture.
+        mUvs = gl::Texture::texelRows("shadow-ray uvs", none, 1, rowTexels);
+        mAlphas = gl::Texture::display2D("shadow-ray alphas", Image(rowTexels, 1, 4));
         return;
     }
     std::vector<float> uvs(triangles.size() * 12, 0.0f);
@@ -97,7 +98,7 @@ void RayMasks::build(const Scene& scene, const std::vector<RayCaster>& casters,
         out[11] = float(tex.height);
     }
     const int maxSize = gl::activeCaps().maxTextureSize;
-    const int width = std::min(kRowTexels, maxSize);
+    const int width = rowTexels;
     const std::size_t texels = (bytes.size() + 3) / 4;
     const std::size_t rows = (texels + std::size_t(width) - 1) / std::size_t(width);
     if (rows > std::size_t(maxSize)) {

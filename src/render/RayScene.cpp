@@ -9,11 +9,6 @@
 
 namespace gnomon::render {
 
-namespace {
-// Texels a row: wide rows keep the rows few (a driver's texture height is its limit too).
-constexpr int kRowTexels = 4096;
-}  // namespace
-
 void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision,
                       std::uint64_t geometry, const ShadowOptions& options) {
     if (mValid && revision == mRevision && options.blendShadows == mBlend) return;
@@ -72,10 +67,10 @@ void RayScene::build(const Scene& scene, double seconds) {
                 {p[idx[t]], float(o), p[idx[t + 1]], float(t / 3), p[idx[t + 2]], float(flags)});
         }
     }
-    // Rows of kRowTexels (or the driver's widest) texels: three a triangle, two a node (under
+    // Rows of kBvhRowTexels texels (bvh_layout.glsl): three a triangle, two a node (under
     // twice as many nodes as triangles).
     const int maxSize = gl::activeCaps().maxTextureSize;
-    const int row = std::min(kRowTexels, maxSize);
+    const int row = kBvhRowTexels;
     const std::size_t limit = std::size_t(row) * std::size_t(maxSize) / 4;
     if (triangles.size() > std::min(limit, bvh::kBvhMaxTriangles)) {
         throw Error(ErrorKind::InvalidInput,

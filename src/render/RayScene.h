@@ -17,6 +17,8 @@
 
 namespace gnomon::render {
 
+#include "bvh_layout.glsl"  // NOLINT(bugprone-suspicious-include): shared with GLSL
+
 class RayScene {
 public:
     // Makes the textures hold `scene`'s casters at `seconds`. `revision` and `geometry`: the
