@@ -19,7 +19,8 @@
 // surface by the stand-in's error (shadow_lookup.glsl). UNROLLED_LIGHTS: the light loops
 // written out per light (below). LIGHT_LISTS: the loops run over the lights of the pixel's
 // screen tile (lights.glsl). SHADOW_RAYS: every shadowed light's lookup is a ray through
-// the casters' BVH instead (shadow_rays.glsl).
+// the casters' BVH instead (shadow_rays.glsl). SHADOW_RAYS_MARK: the maps' answers, alpha 0
+// where a ray must decide (render/RayMarks.h).
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
@@ -303,8 +304,9 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 #else
 #define NOTE_CASCADE(shadow)
 #endif
-#ifdef DEBUG_RAYS
-// main()'s `traced`: whether a ray decided some light's visibility, for the debug tint.
+#if defined(DEBUG_RAYS) || defined(SHADOW_RAYS_MARK)
+// main()'s `traced`: whether a ray decided (SHADOW_RAYS_MARK: must decide) some light's
+// visibility, for the debug tint or the mark.
 #define NOTE_TRACED(shadow) traced = traced || shadow.traced
 #else
 #define NOTE_TRACED(shadow)
@@ -493,6 +495,9 @@ void main() {
 #endif
 #ifdef DEBUG_RAYS
     if (traced) colour = mix(colour, vec3(1.0, 0.0, 1.0), 0.6);
+#endif
+#ifdef SHADOW_RAYS_MARK
+    if (traced) alpha = 0.0;  // drawn again with its rays (render/RayMarks.h)
 #endif
     fragColour = vec4(dither(colour), alpha);
 }

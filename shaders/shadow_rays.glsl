@@ -117,11 +117,18 @@ ShadowSample rayAfterMap(ShadowSample s, LightRecord light, Receiver r, vec3 wsT
 // the footprint) and where the receiver's plane lies within kUnsureCosine of edge-on to the
 // light, where a caster under a fraction of a texel above the receiver (the tolerance band)
 // hides in the receiver's own depth and the silhouette rule guesses. There one ray decides.
+// SHADOW_RAYS_MARK (the first of render/RayMarks.h's draws): the map's answer, `traced` where
+// a ray must decide, which a later draw of that pixel does.
 const float kUnsureCosine = 0.1;
 ShadowSample raysWhereUnsure(ShadowSample s, LightRecord light, Receiver r, vec3 wsToLight) {
     bool partial = s.visibility > 0.0 && s.visibility < 1.0;
     bool grazing = abs(dot(r.planeNormal, wsToLight)) < kUnsureCosine;
+#ifdef SHADOW_RAYS_MARK
+    s.traced = partial || grazing;
+    return s;
+#else
     return partial || grazing ? rayAfterMap(s, light, r, wsToLight) : s;
+#endif
 }
 #define RAYS_WHERE_UNSURE(sample, light, r, toLight) raysWhereUnsure(sample, light, r, toLight)
 #endif

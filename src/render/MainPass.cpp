@@ -188,7 +188,8 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
 // off in one go, back faces drawn first were shaded and then covered (glmark2's horse: main
 // pass 1.34 times as long). The picture is the same: each face is drawn once either way.
 void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
-                         const FrameUniforms& u, bool visibilityPass, bool floor) {
+                         const FrameUniforms& u, bool visibilityPass, bool floor, Items which,
+                         bool marksRays) {
     const MainPassInputs& in = *u.in;
     // Light lists vary per tile: loops, never written out.
     const bool lists = u.tileShift >= 0;
@@ -199,7 +200,8 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     // highlight (gnomon's ground under a glTF model, whose materials all have one): each
     // drops what it does not need from its program.
     auto variantOf = [&](const DrawItem& item) {
-        return ItemVariant{options.shadow.enabled && item.receives && !item.casts, !item.specular};
+        return ItemVariant{options.shadow.enabled && item.receives && !item.casts, !item.specular,
+                           marksRays};
     };
     // Starts in the first opaque item's variant, so no program is built that nothing draws.
     ItemVariant variant;
@@ -236,8 +238,10 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     mBackFaces.clear();
     const std::vector<DrawItem>& items = scene.items();
     std::uint32_t runStart = 0, runLength = 0;
+    const bool opaque = which != Items::Blended, blended = which != Items::Opaque;
     for (std::uint32_t i = 0; i < items.size(); ++i) {
         if (items[i].alphaMode != AlphaMode::Blend) {
+            if (!opaque) continue;
             const DrawItem& item = items[i];
             const bool differs = item.materialPath != material || !(variantOf(item) == variant) ||
                                  (material && scene.textureOf(item) != texture);
@@ -249,13 +253,13 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
             }
             ++runLength;
             if (item.doubleSided) mBackFaces.push_back(i);
-        } else if (!visibilityPass) {  // scored: the surfaces behind (as the reference)
+        } else if (blended && !visibilityPass) {  // scored: the surfaces behind (as the reference)
             const glm::vec3 c = items[i].bounds.centre();
             mBlended.emplace_back(-glm::length(glm::vec3(in.viewFromWorld * glm::vec4(c, 1.0f))),
                                   i);
         }
     }
-    scene.drawRange(runStart, runLength);
+    if (opaque) scene.drawRange(runStart, runLength);
     if (!mBackFaces.empty()) {
         glCullFace(GL_FRONT);
         // A solid's back faces are hidden behind its front ones wherever the view starts
@@ -285,6 +289,30 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
         glDisable(GL_BLEND);
     }
     glDisable(GL_CULL_FACE);
+}
+
+void MainPass::drawShaded(const GpuScene& scene, const RenderOptions& options,
+                          const FrameUniforms& u, bool floor) {
+    const MainPassInputs& in = *u.in;
+    if (!in.rays || options.shadow.shadowRays != ShadowRayMode::Uncertain || floor ||
+        !in.targetColour || !in.targetDepth) {
+        drawItems(scene, options, u, false, floor);
+        return;
+    }
+    // The opaque items with the maps' answers, marking where a ray must decide; the marked
+    // pixels again, rays and all; the blended items over them (their rays in one draw).
+    drawItems(scene, options, u, false, floor, Items::Opaque, true);
+    GLint frame = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frame);
+    mRayMarks.mark(*in.targetColour, *in.targetDepth);
+    scene.bind();
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    drawItems(scene, options, u, false, floor, Items::Opaque);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frame));
+    glDepthFunc(in.depthReady ? GL_LEQUAL : GL_LESS);
+    glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);
+    drawItems(scene, options, u, false, floor, Items::Blended);
 }
 
 // ES (no image stores): the visibility pass once per light, into that light's layer.
@@ -340,10 +368,10 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     if (tiled.lists().size > 0) {
         // One draw; each pixel reads its tile's ranges of the order (main.frag.glsl).
         u.tileShift = tileShift;
-        drawItems(scene, options, u, false, floor);
+        drawShaded(scene, options, u, floor);
         u.tileShift = -1;
     } else if (tiled.tiles().empty()) {
-        drawItems(scene, options, u, false, floor);
+        drawShaded(scene, options, u, floor);
     } else {
         // Each pixel lies in one tile: drawn there once, blended surfaces in the same order.
         glEnable(GL_SCISSOR_TEST);
@@ -351,7 +379,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
             glScissor(tile.scissor.x, tile.scissor.y, tile.scissor.z, tile.scissor.w);
             u.ranges = tile.ends;
             u.first = tile.first;
-            drawItems(scene, options, u, false, floor);
+            drawShaded(scene, options, u, floor);
         }
         glDisable(GL_SCISSOR_TEST);
         u.ranges = tiled.ranges();

@@ -11,6 +11,7 @@
 #include "gl/Objects.h"
 #include "gnomon/Options.h"
 #include "render/GpuScene.h"
+#include "render/RayMarks.h"
 #include "render/ShadowPass.h"
 #include "shadow/LightRecord.h"
 
@@ -61,6 +62,10 @@ struct MainPassInputs {
     // pass tests LEQUAL, which only the surface kept there passes (nothing lies nearer), and
     // writes none, so each pixel is shaded once.
     bool depthReady = false;
+    // The frame's target, bound: under --shadow-rays uncertain the pixels the maps were unsure
+    // of are drawn again into it (RayMarks.h). Null: rays in the one draw.
+    const gl::Texture* targetColour = nullptr;
+    const gl::Texture* targetDepth = nullptr;
 };
 
 class MainPass {
@@ -98,12 +103,20 @@ private:
     void useProgram(const gl::Program& p, const FrameUniforms& u);
     void recordVisibilityByLight(const GpuScene& scene, const RenderOptions& options,
                                  FrameUniforms u, const VisibilityTarget& visibility, bool floor);
+    // Which of the items a draw takes: every one, or the opaque (and masked) or blended ones.
+    enum class Items { All, Opaque, Blended };
+    // `marksRays`: the maps' answers, and alpha 0 where a ray must decide (RayMarks.h).
     void drawItems(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
-                   bool visibilityPass, bool floor);
+                   bool visibilityPass, bool floor, Items which = Items::All,
+                   bool marksRays = false);
+    // The frame's items; under --shadow-rays uncertain the pixels a ray decides drawn again.
+    void drawShaded(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
+                    bool floor);
     // What an item's own content leaves out of its program, beyond what the frame's does.
     struct ItemVariant {
         bool receiverOnly = false;  // receives shadows, casts none (RECEIVER_ONLY)
         bool noSpecular = false;    // its material has no highlight (NO_SPECULAR)
+        bool marksRays = false;     // marks where a ray must decide (SHADOW_RAYS_MARK)
         bool operator==(const ItemVariant&) const = default;
     };
     // `material`: the MATERIAL_PATH variant (textures, masks, blending). `counts`: the draw's
@@ -136,6 +149,7 @@ private:
     gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame
     std::vector<std::uint32_t> mBackFaces;  // opaque double-sided items: reused per frame
+    RayMarks mRayMarks;
 };
 
 }  // namespace gnomon::render

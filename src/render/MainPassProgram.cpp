@@ -25,6 +25,8 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     v.pointFaces = in.pointFaces;
     v.constantFalloff = in.constantFalloff;
     if (!in.rays) v.shadowRays = 0;  // no caster to trace (shadows off, an empty scene)
+    if (item.marksRays && v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain))
+        v.shadowRays = MainVariant::kRaysMarked;
     v.singleMapKind = MainVariant::Bits(in.singleMapKind + 1);
     v.noSpecular = item.noSpecular;
     v.lightLists = lists;

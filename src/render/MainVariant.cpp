@@ -85,8 +85,10 @@ std::vector<std::string> choiceDefines(const MainVariant& v) {
     if (v.singleMapKind > 0) d.push_back("SINGLE_MAP_KIND " + std::to_string(v.singleMapKind - 1));
     if (v.shadowedFactor) d.push_back("SHADOWED_FACTOR");
     if (v.shadowRays) d.push_back("SHADOW_RAYS");
-    if (v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain))
+    if (v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain) ||
+        v.shadowRays == MainVariant::kRaysMarked)
         d.push_back("SHADOW_RAYS_UNCERTAIN");
+    if (v.shadowRays == MainVariant::kRaysMarked) d.push_back("SHADOW_RAYS_MARK");
     if (v.debugRays) d.push_back("DEBUG_RAYS");
     if (v.lightLists) d.push_back("LIGHT_LISTS");
     return d;

@@ -17,6 +17,10 @@ namespace gnomon::render {
 
 struct MainVariant {
     using Bits = std::uint64_t;
+    // shadowRays of an uncertain draw that marks where a ray must decide and traces none
+    // (SHADOW_RAYS_MARK, render/RayMarks.h).
+    static constexpr Bits kRaysMarked = 3;
+    static_assert(int(ShadowRayMode::Uncertain) < 3, "kRaysMarked follows the modes");
     Bits visibilityPass : 1 = 0;   // stores each light's visibility (gnomon score)
     Bits shadowsOff : 1 = 0;       // --shadows off: no lookups at all
     Bits outsideClamp : 1 = 0;     // --outside clamp
@@ -47,7 +51,8 @@ struct MainVariant {
     Bits mapCount : 4 = 0;
     Bits cubeCount : 4 = 0;
     Bits cascadedCount : 4 = 0;
-    Bits shadowRays : 2 = 0;  // ShadowRayMode when rays are traced (tracesShadowRays), else 0
+    // ShadowRayMode when rays are traced (tracesShadowRays), else 0; or kRaysMarked.
+    Bits shadowRays : 2 = 0;
     Bits debugRays : 1 = 0;   // --debug-view rays
     Bits lightLists : 1 = 0;  // each pixel reads its tile's lights (TiledLights' lists)
     Bits unused : 4 = 0;

@@ -120,6 +120,10 @@ struct Renderer::Impl {
         }
         // The view depth pass's format, so its depth can be copied in (bindClearedTarget).
         depth = gl::Texture::plain2D("output depth", GL_DEPTH_COMPONENT32F, width, height);
+        // Read by texelFetch (RayMarks): ES counts a depth texture filtered LINEAR without
+        // comparison as incomplete.
+        depth.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        depth.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         target = gl::Framebuffer("output");
         target.attach(GL_COLOR_ATTACHMENT0, colour);
         target.attach(GL_DEPTH_ATTACHMENT, depth);
@@ -266,6 +270,8 @@ struct Renderer::Impl {
         in.constantFalloff = plan.constantFalloff();
         in.viewDepth = contact ? &viewDepth.depth() : nullptr;
         in.rays = rays.forFrame(s, options, scene, stats.shadowRayBuilds);
+        in.targetColour = &colour;
+        in.targetDepth = &depth;
         if (timer) timer->start();
         drawMain(s, options, in, visibility != nullptr);
         if (timer) stats.passes.push_back(timer->stop("main", -1, stats.mainTriangles));

@@ -307,7 +307,13 @@ TEST(GlesPrograms, MainPassShadowRays) {
         o.debugView = DebugView::Rays;
         checkMain(frameVariant(o, true, false));
         checkMain(render::variantOf(o, true, false));
+        // The first draw, which marks where rays must decide (render/RayMarks.h).
+        render::MainVariant marks = frameVariant(o, false, false);
+        marks.shadowRays = render::MainVariant::kRaysMarked;
+        checkMain(marks);
     }
+    checkProgram(
+        {"shadow-ray marks", {kFullscreen, {GL_FRAGMENT_SHADER, "ray_marks.frag.glsl"}}, {}});
     RenderOptions o;
     o.shadow.shadowRays = ShadowRayMode::All;
     render::MainVariant receiverOnly = render::variantOf(o, false, true);
@@ -386,7 +392,7 @@ TEST(GlesPrograms, EveryRootShaderIsBuilt) {
         "fullscreen.vert.glsl",  "depth_reduce.frag.glsl", "transmittance.frag.glsl",
         "moments.frag.glsl",     "debug_maps.frag.glsl",   "debug_lines.vert.glsl",
         "debug_lines.frag.glsl", "main.vert.glsl",         "main.frag.glsl",
-        "depth_cube.vert.glsl",  "bvh_rays.frag.glsl"};
+        "depth_cube.vert.glsl",  "bvh_rays.frag.glsl",     "ray_marks.frag.glsl"};
     for (const std::string& name : gl::embeddedShaderNames()) {
         if (name.ends_with(".vert.glsl") || name.ends_with(".frag.glsl")) {
             EXPECT_EQ(built.count(name), 1u) << name;

@@ -66,6 +66,48 @@ TEST(ShadowRaysUncertain, FixACoarseMapsEdges) {
     EXPECT_LT(r.overall.traced, 0.5);
 }
 
+// Pixels whose colour differs between `a` and `b`; `opaque`: whether every alpha of `a` is 1.
+long differing(const Image& a, const Image& b, bool& opaque) {
+    long n = 0;
+    opaque = true;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            const std::uint8_t *p = a.at(x, y), *q = b.at(x, y);
+            n += p[0] != q[0] || p[1] != q[1] || p[2] != q[2];
+            opaque = opaque && p[3] == 255;
+        }
+    }
+    return n;
+}
+
+// The picture is the rays' where the map is unsure: the pixels marked in the first draw are
+// drawn again with their rays (render/RayMarks.h), and none is left marked. A 64-texel map
+// with one comparison, against every lookup traced: the map alone differs along every edge,
+// `uncertain` where it misclassifies at most.
+TEST(ShadowRaysUncertain, PaintsTheRaysWhereTheMapIsUnsure) {
+    for (const char* name : {"tutorial-room", "tutorial-point"}) {
+        SCOPED_TRACE(name);
+        const Scene s = builtinScene(name);
+        RenderOptions o = uncertain(s, 128);
+        o.shadow.mapSize = 64;
+        o.shadow.filter = ShadowFilter::None;
+        Renderer& renderer = sharedRenderer();
+        const Image rays = renderer.render(s, o);
+        const ScoreResult r = score(renderer, s, o);
+        o.shadow.shadowRays = ShadowRayMode::All;
+        const Image all = renderer.render(s, o);
+        o.shadow.shadowRays = ShadowRayMode::Off;
+        const Image map = renderer.render(s, o);
+        bool opaque = false, mapOpaque = false;
+        const long wrong = differing(rays, all, opaque), mapWrong = differing(map, all, mapOpaque);
+        std::printf("differ from all: map %ld pixels, uncertain %ld (%.0f pairs misclassified)\n",
+                    mapWrong, wrong, wrongPairs(r));
+        EXPECT_GT(mapWrong, 20);
+        EXPECT_LE(double(wrong), wrongPairs(r) + 2.0);
+        EXPECT_TRUE(opaque);
+    }
+}
+
 // PCSS and the moment filters keep their penumbra: no hierarchy, no ray, the same picture.
 TEST(ShadowRaysUncertain, PenumbraFiltersKeepTheirLook) {
     const Scene s = builtinScene("tutorial-room");
