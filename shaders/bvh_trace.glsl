@@ -43,9 +43,8 @@ BvhRayFrame bvhFrame(vec3 origin, vec3 dir) {
     return r;
 }
 
-// Where the ray enters node `node`'s box within (tnear, tfar], or -1 when it misses it.
-float bvhEnter(BvhRayFrame r, int node, float tnear, float tfar) {
-    vec3 lo = bvhTexel(uBvhNodes, 2 * node).xyz, hi = bvhTexel(uBvhNodes, 2 * node + 1).xyz;
+// Where the ray enters the box lo..hi within (tnear, tfar], or -1 when it misses it.
+float bvhEnter(BvhRayFrame r, vec3 lo, vec3 hi, float tnear, float tfar) {
     vec3 t0 = (lo - r.origin) * r.inv, t1 = (hi - r.origin) * r.inv;
     vec3 tn = min(t0, t1), tf = max(t0, t1) * kBvhWiden;
     float enter = max(max(tn.x, tn.y), max(tn.z, tnear));
@@ -53,13 +52,12 @@ float bvhEnter(BvhRayFrame r, int node, float tnear, float tfar) {
     return enter <= leave ? enter : -1.0;
 }
 
-// The distance to triangle `tri` along the ray when it is hit within (tnear, tfar], else -1;
-// `bary` the hit's barycentric weights of the triangle's corners.
-float bvhHitTriangle(BvhRayFrame r, int tri, float tnear, float tfar, out vec3 bary) {
+// The distance to the triangle of corners a0, b0, c0 along the ray when it is hit within
+// (tnear, tfar], else -1; `bary` the hit's barycentric weights of the corners.
+float bvhHitTriangle(BvhRayFrame r, vec3 a0, vec3 b0, vec3 c0, float tnear, float tfar,
+                     out vec3 bary) {
     bary = vec3(0.0);
-    vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz - r.origin;
-    vec3 b = bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - r.origin;
-    vec3 c = bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - r.origin;
+    vec3 a = a0 - r.origin, b = b0 - r.origin, c = c0 - r.origin;
     float ax = a[r.kx] - r.shear.x * a[r.kz], ay = a[r.ky] - r.shear.y * a[r.kz];
     float bx = b[r.kx] - r.shear.x * b[r.kz], by = b[r.ky] - r.shear.y * b[r.kz];
     float cx = c[r.kx] - r.shear.x * c[r.kz], cy = c[r.ky] - r.shear.y * c[r.kz];
@@ -126,42 +124,45 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, i
     if (textureSize(uBvhNodes, 0).x < 2) return -1.0;  // an empty hierarchy
     BvhRayFrame r = bvhFrame(origin, dir);
     float best = -1.0;
-    if (bvhEnter(r, 0, tnear, tfar) < 0.0) return best;
-    int stackNode[kBvhStack];
+    vec4 lo = bvhTexel(uBvhNodes, 0), hi = bvhTexel(uBvhNodes, 1);
+    if (bvhEnter(r, lo.xyz, hi.xyz, tnear, tfar) < 0.0) return best;
+    // A node is its first child or triangle and its info (BvhNode), carried from the texels
+    // its box was tested with: each step reads its two children's boxes and nothing more.
+    int stackFirst[kBvhStack], stackInfo[kBvhStack];
     float stackEnter[kBvhStack];
     int top = 0;
-    int node = 0;
+    int first = int(lo.w), info = int(hi.w);
     for (;;) {
-        vec4 info = bvhTexel(uBvhNodes, 2 * node + 1);
-        int first = int(bvhTexel(uBvhNodes, 2 * node).w);
-        int count = int(info.w) >> 1;
+        int count = info >> 1;
         bool descended = false;
         if (count == 0) {
-            int near = first, far = first + 1;
-            float e0 = bvhEnter(r, near, tnear, tfar), e1 = bvhEnter(r, far, tnear, tfar);
+            vec4 lo0 = bvhTexel(uBvhNodes, 2 * first), hi0 = bvhTexel(uBvhNodes, 2 * first + 1);
+            vec4 lo1 = bvhTexel(uBvhNodes, 2 * first + 2), hi1 = bvhTexel(uBvhNodes, 2 * first + 3);
+            float e0 = bvhEnter(r, lo0.xyz, hi0.xyz, tnear, tfar);
+            float e1 = bvhEnter(r, lo1.xyz, hi1.xyz, tnear, tfar);
             if (e0 >= 0.0 && e1 >= 0.0) {
-                if (e1 < e0) {
-                    near = far;
-                    far = first;
-                    float e = e0;
-                    e0 = e1;
-                    e1 = e;
-                }
-                stackNode[top] = far;
-                stackEnter[top] = e1;
+                bool secondNearer = e1 < e0;  // front to back: the farther one waits
+                stackFirst[top] = int(secondNearer ? lo0.w : lo1.w);
+                stackInfo[top] = int(secondNearer ? hi0.w : hi1.w);
+                stackEnter[top] = max(e0, e1);
                 top = min(top + 1, kBvhStack - 1);
-                node = near;
+                first = int(secondNearer ? lo1.w : lo0.w);
+                info = int(secondNearer ? hi1.w : hi0.w);
                 descended = true;
             } else if (e0 >= 0.0 || e1 >= 0.0) {
-                node = e0 >= 0.0 ? near : far;
+                first = int(e0 >= 0.0 ? lo0.w : lo1.w);
+                info = int(e0 >= 0.0 ? hi0.w : hi1.w);
                 descended = true;
             }
         } else {
             for (int i = first; i < first + count; ++i) {
-                int flags = int(bvhTexel(uBvhTriangles, 3 * i + 2).w);
+                // Its three texels read once: the flags ride in the third.
+                vec4 c0 = bvhTexel(uBvhTriangles, 3 * i), c1 = bvhTexel(uBvhTriangles, 3 * i + 1);
+                vec4 c2 = bvhTexel(uBvhTriangles, 3 * i + 2);
+                int flags = int(c2.w);
                 if ((anyCaster && (flags & 1) == 0) || i == skip) continue;
                 vec3 bary;
-                float t = bvhHitTriangle(r, i, tnear, tfar, bary);
+                float t = bvhHitTriangle(r, c0.xyz, c1.xyz, c2.xyz, tnear, tfar, bary);
                 if (t < 0.0) continue;
                 if (anyCaster && (flags & 2) != 0 && !bvhTexelBlocks(i, bary)) continue;
                 best = t;
@@ -176,7 +177,8 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, i
             if (top == 0) return best;
             --top;
         } while (stackEnter[top] > tfar * kBvhWiden);
-        node = stackNode[top];
+        first = stackFirst[top];
+        info = stackInfo[top];
     }
     return best;
 }
