@@ -114,15 +114,17 @@ ShadowSample rayAfterMap(ShadowSample s, LightRecord light, Receiver r, vec3 wsT
 #ifdef SHADOW_RAYS_UNCERTAIN
 // Hybrid shadows (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015): the map is unsure where its
 // filter's footprint holds both lit and shadowed texels (a shadow's edge, a caster thinner than
-// the footprint) and where the receiver's plane lies within kUnsureCosine of edge-on to the
-// light, where a caster under a fraction of a texel above the receiver (the tolerance band)
-// hides in the receiver's own depth and the silhouette rule guesses. There one ray decides.
+// the footprint) and where it finds lit a receiver whose plane lies within kUnsureCosine of
+// edge-on to the light, where a caster under a fraction of a texel above the receiver (the
+// tolerance band) hides in the receiver's own depth and the silhouette rule guesses. There one
+// ray decides. (Found shadowed there, the map is as sure as elsewhere: its grazing misses are
+// leaks.)
 // SHADOW_RAYS_MARK (the first of render/RayMarks.h's draws): the map's answer, `traced` where
 // a ray must decide, which a later draw of that pixel does.
 const float kUnsureCosine = 0.1;
 ShadowSample raysWhereUnsure(ShadowSample s, LightRecord light, Receiver r, vec3 wsToLight) {
     bool partial = s.visibility > 0.0 && s.visibility < 1.0;
-    bool grazing = abs(dot(r.planeNormal, wsToLight)) < kUnsureCosine;
+    bool grazing = abs(dot(r.planeNormal, wsToLight)) < kUnsureCosine && s.visibility == 1.0;
 #ifdef SHADOW_RAYS_MARK
     s.traced = partial || grazing;
     return s;
