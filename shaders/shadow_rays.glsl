@@ -12,17 +12,21 @@
 const float kRayEdgeOn = 1e-3;
 // Shading and plane normals closer than this (sine of their angle): a flat face.
 const float kFlatFaceSine = 3e-4;
-// The margin of rayLead, as shares of the casters' extent (their box's diagonal) and of the
-// position's size: twice the reference's (truth::ShadowRays::lead, of the radius), for the
-// interpolated position rounds more than the reference's, taken from its triangle's corners.
-const float kRayMarginOfExtent = 2e-6;
+// The margin of rayLead, as shares of the scene's radius (every object's, as the reference
+// measures it: uRayScale) and of the position's size: the reference's (truth::ShadowRays::lead)
+// where the ray leaves its own triangle (rayStart), twice it elsewhere, for an interpolated
+// position rounds more than one taken from its triangle's corners. Longer, a lead skips the
+// caster a few millimetres above a face all but edge-on to the light (glmark2's cat); shorter,
+// it meets its own surface's neighbours where the reference does not (the cat on a ground ten
+// times its size, whose radius sets the reference's margin).
+layout(location = 16) uniform float uRayScale;
+const float kRayMarginOfScale = 2e-6;
 const float kRayMarginOfPosition = 1e-6;
 // Within this cosine of edge-on, the ray leaves from the surface's own triangle, as the
 // reference's does (truth::Reference): its normal from the corners, which puts a face all but
 // edge-on to the light on the reference's side of kRayEdgeOn (interpolated and derived normals
 // round by 1e-5..1e-4: a wall 0.06 degrees from the sun's plane in Sponza's atrium fell either
-// side), and the point moved onto its plane. The lead keeps the renderer's margin: the
-// reference's shorter one put false shadows on creases (glmark2's cat on a ground).
+// side), the point moved onto its plane, and the reference's margin.
 const float kOwnTriangleCosine = 0.03;
 
 // Where a shadow ray leaves: the point, its normal on the side the camera sees, the margin
@@ -33,16 +37,16 @@ struct RayStart {
     int triangle;
 };
 
+// The reference's margin at `p`.
 float rayMargin(vec3 p) {
-    vec3 lo = bvhTexel(uBvhNodes, 0).xyz, hi = bvhTexel(uBvhNodes, 1).xyz;
-    return kRayMarginOfExtent * length(hi - lo) + kRayMarginOfPosition * length(p);
+    return kRayMarginOfScale * uRayScale + kRayMarginOfPosition * length(p);
 }
 
 // The start at `r` with normal `n`; near edge-on to `wsToLight`, on the triangle the camera's
 // ray meets at the point, as the reference's does (found by a short stretch of that ray around
 // the point), where the hierarchy holds one there (not under a receiver that casts no shadow).
 RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight) {
-    RayStart s = RayStart(r.position, n, rayMargin(r.position), -1);
+    RayStart s = RayStart(r.position, n, 2.0 * rayMargin(r.position), -1);
     if (abs(dot(n, wsToLight)) < kOwnTriangleCosine) {
         float h = 64.0 * s.margin;
         vec3 view = normalize(r.position - uEye);
@@ -55,6 +59,7 @@ RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight) {
                 s.normal = normalize(g);
                 s.point -= dot(s.point - a, s.normal) * s.normal;
                 s.triangle = tri;
+                s.margin = rayMargin(s.point);
             }
         }
     }

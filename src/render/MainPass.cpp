@@ -178,6 +178,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     }
     if (u.in->shadowMoments) gl::uniform(12, u.lightBleed);
     if (u.recordLight >= 0) gl::uniform(15, u.recordLight);
+    if (u.in->rays) gl::uniform(16, u.in->rays->scale());
 }
 
 // Opaque and masked items in their order (the fast program, then the material one where

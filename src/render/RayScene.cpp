@@ -4,6 +4,7 @@
 #include <string>
 
 #include "bvh/Bvh.h"
+#include "core/Aabb.h"
 #include "gl/Caps.h"
 #include "gnomon/Error.h"
 
@@ -31,11 +32,30 @@ void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision
             mScratch.insert(mScratch.end(), &uv[0][0], &uv[0][0] + 9);
         }
     }
+    updateScale(scene, seconds);
     if (mValid && geometry == mGeometry && mScratch == mKey) return;
     mValid = true;
     mGeometry = geometry;
     std::swap(mKey, mScratch);
     build(scene, seconds);
+}
+
+void RayScene::updateScale(const Scene& scene, double seconds) {
+    mScaleScratch.clear();
+    for (const Object& obj : scene.objects) {
+        const glm::mat4 m = obj.worldFromModelAt(seconds);
+        mScaleScratch.push_back(float(obj.mesh));
+        mScaleScratch.insert(mScaleScratch.end(), &m[0][0], &m[0][0] + 16);
+    }
+    if (!mScaleKey.empty() && mScaleScratch == mScaleKey) return;
+    std::swap(mScaleKey, mScaleScratch);
+    Aabb bounds;
+    for (const Object& obj : scene.objects) {
+        const glm::mat4 m = obj.worldFromModelAt(seconds);
+        for (const glm::vec3& p : scene.meshes[obj.mesh].positions)
+            bounds.extend(glm::vec3(m * glm::vec4(p, 1.0f)));
+    }
+    mScale = bounds.empty() ? 1.0f : std::max(bounds.radius(), 1e-6f);
 }
 
 const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& options,

@@ -38,9 +38,14 @@ public:
     // How many times the hierarchy was built (what tests check the caching by).
     std::uint64_t builds() const { return mBuilds; }
     std::size_t triangleCount() const { return mTriangleCount; }
+    // The radius of every object's points, casters or not: the scale of the reference's
+    // rounding margin (truth::ShadowRays::lead), which the shader's margin follows.
+    float scale() const { return mScale; }
 
 private:
     void build(const Scene& scene, double seconds);
+    // mScale for `scene` at `seconds`, when an object's mesh or transform changed.
+    void updateScale(const Scene& scene, double seconds);
 
     bool mValid = false;
     std::uint64_t mRevision = 0;
@@ -55,6 +60,8 @@ private:
     RayMasks mMasks;
     std::uint64_t mBuilds = 0;
     std::size_t mTriangleCount = 0;
+    std::vector<float> mScaleKey, mScaleScratch;  // every object's mesh and transform
+    float mScale = 1.0f;
 };
 
 }  // namespace gnomon::render

@@ -9,6 +9,7 @@
 #include "GlTest.h"
 #include "RayTest.h"
 #include "ShadowCheck.h"
+#include "core/Aabb.h"
 #include "render/RayScene.h"
 #include "scene/MeshBuilder.h"
 
@@ -126,6 +127,43 @@ TEST(ShadowRays, BuiltOnlyWhenCastersChange) {
     EXPECT_EQ(rays.builds(), before + 1);
     rays.update(s, 0.0, 5, 8, so);  // new geometry
     EXPECT_EQ(rays.builds(), before + 2);
+}
+
+// The radius of every object's points, as the reference's margin measures the scene.
+float sceneRadius(const Scene& s) {
+    Aabb box;
+    for (const Object& obj : s.objects) {
+        for (const glm::vec3& p : s.meshes[obj.mesh].positions)
+            box.extend(glm::vec3(obj.worldFromModel * glm::vec4(p, 1.0f)));
+    }
+    return box.radius();
+}
+
+// The rays' margin follows the reference's scale: every object's radius, receivers' too, kept
+// as a receiver moves, without building the hierarchy again.
+TEST(ShadowRays, ScaleIsEveryObjectsRadius) {
+    Scene s = builtinScene("tutorial-room");
+    RenderOptions small = s.options;
+    small.width = small.height = 16;
+    sharedRenderer().render(s, small);  // its context (and its limits) current
+    std::size_t receiver = s.objects.size();
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        if (!s.objects[i].castsShadows) receiver = i;
+    }
+    if (receiver == s.objects.size()) {
+        receiver = 0;
+        s.objects[0].castsShadows = false;
+    }
+    ShadowOptions so;
+    render::RayScene rays;
+    rays.update(s, 0.0, 1, 7, so);
+    EXPECT_NEAR(rays.scale(), sceneRadius(s), 1e-5f * sceneRadius(s));
+    const float before = rays.scale();
+    s.objects[receiver].worldFromModel[3].x += 10.0f * before;
+    rays.update(s, 0.0, 2, 7, so);
+    EXPECT_NEAR(rays.scale(), sceneRadius(s), 1e-5f * sceneRadius(s));
+    EXPECT_GT(rays.scale(), 2.0f * before);
+    EXPECT_EQ(rays.builds(), 1u);
 }
 
 // Through the renderer: an unchanged scene builds nothing after its first frame; the book's
