@@ -26,6 +26,20 @@ float tapReference(MapTap m, TapPlane plane, vec2 o) {
 #endif
 }
 
+#if defined(SHADOW_RAYS_UNCERTAIN)
+// The reference for a tap `o` away on the receiver's full plane, without the spread and the cap
+// that tapReference allows: a texel lit under tapReference but not under this one holds
+// something nearer the light than the receiver, within the tolerance band (a caster under a
+// texel above a face near edge-on, which the band hides): the map cannot tell, a ray can.
+float exactReference(MapTap m, TapPlane plane, vec2 o) {
+#if defined(RECEIVER_PLANE)
+    return m.reference + dot(plane.full, o);
+#else
+    return m.reference;
+#endif
+}
+#endif
+
 #if (defined(RECEIVER_PLANE) || defined(FLAT_GATHERS)) && !defined(HAND_COMPARE) && \
     (defined(FILTER_PCF) || defined(FILTER_HW2X2))
 // PCF over whole texels: the footprint of a K x K box of bilinear taps is (K + 1)^2 texels
@@ -49,7 +63,7 @@ float gatherPcf(MapTap m, TapPlane plane) {
     // The map's first texel and its last 2x2 block's start, in texels of the layer.
     vec2 first = floor(m.origin / texelUv + 0.5);
     vec2 last = first + floor(m.scale / texelUv + 0.5) - 2.0;
-    float sum = 0.0, downhillShadow = 0.0;
+    float sum = 0.0, downhillShadow = 0.0, inBand = 0.0;
     for (int my = 0; my <= r; ++my) {
         float ky = clamp(base.y - float(r - 2 * my), first.y, last.y);
         vec2 wy = vec2(my == 0 ? 1.0 - f.y : 1.0, my == r ? f.y : 1.0);
@@ -69,10 +83,17 @@ float gatherPcf(MapTap m, TapPlane plane) {
             vec4 lit = step(refs, d);
             sum += dot(lit, w);
             downhillShadow += dot(step(0.0, capped), 1.0 - lit);
+#if defined(SHADOW_RAYS_UNCERTAIN)
+            vec4 exact = m.reference + dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0);
+            inBand += dot(lit, 1.0 - step(exact, d));
+#endif
         }
     }
     // The silhouette rule (receiver_plane.glsl), from the texels downhill of the point: those
     // of one gather (--pcf-size 1, hw2x2) as a one-comparison lookup's tap.
+#if defined(SHADOW_RAYS_UNCERTAIN)
+    if (inBand > 0.0) return 0.5;
+#endif
     const float cosine = r == 0 ? kSingleTapSilhouetteCosine : kSilhouetteCosine;
     if (atSilhouette(plane, cosine, downhillShadow)) return 1.0;
     return sum / float((2 * r + 1) * (2 * r + 1));
@@ -151,15 +172,17 @@ float mapFilter(LightRecord light, Receiver receiver, vec3 wsToLight, MapTap m, 
 #endif
 #if defined(SHADOW_RAYS_UNCERTAIN)
     // One comparison is never part lit: the four texels around the point tell whether the map
-    // is sure there (all alike: the comparison's answer) or not (a share between, which sends
-    // the lookup to a ray: shadow_rays.glsl).
-    float around = 0.0;
+    // is sure there (all alike: the comparison's answer) or not (a share between, or a texel
+    // lit only within the tolerance band, which sends the lookup to a ray: shadow_rays.glsl).
+    float around = 0.0, inBand = 0.0;
     for (int k = 0; k < 4; ++k) {
         vec2 o = (vec2(k & 1, k >> 1) - 0.5) * m.texelUv;
         vec2 corner = clamp(m.uv + o, m.lo, m.hi);
-        around += compareDepth(corner, m.layer, tapReference(m, plane, corner - m.uv));
+        float lit = compareDepth(corner, m.layer, tapReference(m, plane, corner - m.uv));
+        around += lit;
+        inBand += lit * (1.0 - compareDepth(corner, m.layer, exactReference(m, plane, corner - m.uv)));
     }
-    if (around > 0.0 && around < 4.0) return 0.5;
+    if ((around > 0.0 && around < 4.0) || inBand > 0.0) return 0.5;
 #endif
     return compareDepth(tap, m.layer, tapReference(m, plane, tap - m.uv));
 #endif
