@@ -27,13 +27,16 @@ float tapReference(MapTap m, TapPlane plane, vec2 o) {
 }
 
 #if defined(SHADOW_RAYS_UNCERTAIN)
-// The reference for a tap `o` away on the receiver's full plane, without the spread and the cap
-// that tapReference allows: a texel lit under tapReference but not under this one holds
-// something nearer the light than the receiver, within the tolerance band (a caster under a
-// texel above a face near edge-on, which the band hides): the map cannot tell, a ray can.
+// The reference for a tap `o` away on the receiver's full plane, with half the spread and
+// without the cap that tapReference allows: a texel lit under tapReference but not under this
+// one holds something nearer the light than the receiver, within the tolerance band (a caster
+// under a texel above a face near edge-on, which the band hides): the map cannot tell, a ray
+// can. The half spread keeps a curved surface's own texels, a little above its plane where it
+// is concave, from sending every such pixel to a ray.
+const float kExactSpread = 0.5;
 float exactReference(MapTap m, TapPlane plane, vec2 o) {
 #if defined(RECEIVER_PLANE)
-    return m.reference + dot(plane.full, o);
+    return m.reference + dot(plane.full, o) - kExactSpread * plane.spread;
 #else
     return m.reference;
 #endif
@@ -84,7 +87,8 @@ float gatherPcf(MapTap m, TapPlane plane) {
             sum += dot(lit, w);
             downhillShadow += dot(step(0.0, capped), 1.0 - lit);
 #if defined(SHADOW_RAYS_UNCERTAIN)
-            vec4 exact = m.reference + dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0);
+            vec4 exact = m.reference + dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0) -
+                         kExactSpread * plane.spread;
             inBand += dot(lit, 1.0 - step(exact, d));
 #endif
         }
