@@ -133,7 +133,9 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
                 "for coloured shadows' tints and --debug-view shadow-map. uncertain: the map "
                 "answers where it is sure, a ray "
                 "where its filter's footprint is part lit and part shadowed (edges, thin "
-                "casters) or the surface is within 6 degrees of edge-on to the light; under "
+                "casters), where a texel is lit only within the tolerance band, or where it "
+                "finds lit a surface within 6 degrees of edge-on to the light, in a second "
+                "draw of those pixels alone; under "
                 "pcss and the moment filters, whose penumbra is their look, the map answers "
                 "everywhere",
          .kind = K::Choice,
