@@ -32,7 +32,7 @@ void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision
             mScratch.insert(mScratch.end(), &uv[0][0], &uv[0][0] + 9);
         }
     }
-    updateScale(scene, seconds);
+    updateScale(scene, seconds, !mValid || geometry != mGeometry);
     if (mValid && geometry == mGeometry && mScratch == mKey) return;
     mValid = true;
     mGeometry = geometry;
@@ -40,14 +40,14 @@ void RayScene::update(const Scene& scene, double seconds, std::uint64_t revision
     build(scene, seconds);
 }
 
-void RayScene::updateScale(const Scene& scene, double seconds) {
+void RayScene::updateScale(const Scene& scene, double seconds, bool newGeometry) {
     mScaleScratch.clear();
     for (const Object& obj : scene.objects) {
         const glm::mat4 m = obj.worldFromModelAt(seconds);
         mScaleScratch.push_back(float(obj.mesh));
         mScaleScratch.insert(mScaleScratch.end(), &m[0][0], &m[0][0] + 16);
     }
-    if (!mScaleKey.empty() && mScaleScratch == mScaleKey) return;
+    if (!newGeometry && !mScaleKey.empty() && mScaleScratch == mScaleKey) return;
     std::swap(mScaleKey, mScaleScratch);
     Aabb bounds;
     for (const Object& obj : scene.objects) {

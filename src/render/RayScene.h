@@ -44,8 +44,9 @@ public:
 
 private:
     void build(const Scene& scene, double seconds);
-    // mScale for `scene` at `seconds`, when an object's mesh or transform changed.
-    void updateScale(const Scene& scene, double seconds);
+    // mScale for `scene` at `seconds`, when an object's mesh or transform changed or, with
+    // `newGeometry`, a mesh's points may have.
+    void updateScale(const Scene& scene, double seconds, bool newGeometry);
 
     bool mValid = false;
     std::uint64_t mRevision = 0;

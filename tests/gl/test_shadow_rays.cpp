@@ -140,7 +140,7 @@ float sceneRadius(const Scene& s) {
 }
 
 // The rays' margin follows the reference's scale: every object's radius, receivers' too, kept
-// as a receiver moves, without building the hierarchy again.
+// as a receiver moves (without building the hierarchy again) and as a mesh changes.
 TEST(ShadowRays, ScaleIsEveryObjectsRadius) {
     Scene s = builtinScene("tutorial-room");
     RenderOptions small = s.options;
@@ -164,6 +164,11 @@ TEST(ShadowRays, ScaleIsEveryObjectsRadius) {
     EXPECT_NEAR(rays.scale(), sceneRadius(s), 1e-5f * sceneRadius(s));
     EXPECT_GT(rays.scale(), 2.0f * before);
     EXPECT_EQ(rays.builds(), 1u);
+    // A mesh's points changed in place: the GPU scene's geometry hash tells.
+    for (glm::vec3& p : s.meshes[s.objects[receiver].mesh].positions)
+        p *= 3.0f;
+    rays.update(s, 0.0, 3, 8, so);
+    EXPECT_NEAR(rays.scale(), sceneRadius(s), 1e-5f * sceneRadius(s));
 }
 
 // Through the renderer: an unchanged scene builds nothing after its first frame; the book's

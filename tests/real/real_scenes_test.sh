@@ -24,12 +24,9 @@ rm -rf "$work" && mkdir -p "$work"
 
 if [[ ! -d "$scenes" ]]; then echo "skipped: no shared scenes at $scenes"; exit 77; fi
 # Every scene file first: a missing model skips the whole test before anything is scored.
-for view in "${views[@]}"; do
-    python3 "$quality_real" --scenes "$scenes" --write-scene "$view" "$work/$view.json"
-    code=$?
-    [[ $code == 77 ]] && exit 77
-    [[ $code == 0 ]] || { echo "FAIL: could not write the scene of $view"; exit 1; }
-done
+# shellcheck source=views.sh
+source "$(dirname "$0")/views.sh"
+write_views "$scenes" "$work" "${views[@]}"
 
 # Views scored again with another filter, as VIEW:FILTER: MSM on the post edge-on to the sun,
 # whose footprint dots it with false shadow unless it judges silhouettes.

@@ -22,12 +22,9 @@ rm -rf "$work" && mkdir -p "$work"
 
 if [[ ! -d "$scenes" ]]; then echo "skipped: no shared scenes at $scenes"; exit 77; fi
 if [[ ! -f "$cat_model" ]]; then echo "skipped: no $cat_model (glmark2-data)"; exit 77; fi
-for view in "${views[@]}"; do
-    python3 "$quality_real" --scenes "$scenes" --write-scene "$view" "$work/$view.json"
-    code=$?
-    [[ $code == 77 ]] && exit 77
-    [[ $code == 0 ]] || { echo "FAIL: could not write the scene of $view"; exit 1; }
-done
+# shellcheck source=views.sh
+source "$(dirname "$0")/views.sh"
+write_views "$scenes" "$work" "${views[@]}"
 
 failed=0
 # score NAME MODE BOUND SIZE gnomon-score-flags...: fails above BOUND misclassified, or with any
