@@ -134,7 +134,8 @@ ShadowSample raysWhereUnsure(ShadowSample s, LightRecord light, Receiver r, vec3
     s.traced = partial || grazing;
     return s;
 #else
-    return partial || grazing ? rayAfterMap(s, light, r, wsToLight) : s;
+    if (partial || grazing) s = rayAfterMap(s, light, r, wsToLight);  // WebGL: no ?: on structs
+    return s;
 #endif
 }
 #define RAYS_WHERE_UNSURE(sample, light, r, toLight) raysWhereUnsure(sample, light, r, toLight)
