@@ -18,9 +18,8 @@
 // STAND_IN_LIFT: shadow passes draw stand-in casters; their objects' lookups start off the
 // surface by the stand-in's error (shadow_lookup.glsl). UNROLLED_LIGHTS: the light loops
 // written out per light (below). LIGHT_LISTS: the loops run over the lights of the pixel's
-// screen tile (lights.glsl). SHADOW_RAYS: every shadowed light's lookup is a ray through
-// the casters' BVH instead (shadow_rays.glsl). SHADOW_RAYS_MARK: the maps' answers, alpha 0
-// where a ray must decide (render/RayMarks.h).
+// screen tile (lights.glsl). SHADOW_RAYS: each shadowed lookup is a ray through the casters'
+// BVH (shadow_rays.glsl); SHADOW_RAYS_MARK: maps' answers, alpha 0 where rays must decide.
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
@@ -299,14 +298,12 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
 
 #ifdef DEBUG_CASCADES
 // main()'s `cascade`: the last cascade a lookup read, for the debug tint.
-#define NOTE_CASCADE(shadow) \
-    if (shadow.cascade >= 0) cascade = shadow.cascade
+#define NOTE_CASCADE(shadow) if (shadow.cascade >= 0) cascade = shadow.cascade
 #else
 #define NOTE_CASCADE(shadow)
 #endif
 #if defined(DEBUG_RAYS) || defined(SHADOW_RAYS_MARK)
-// main()'s `traced`: whether a ray decided (SHADOW_RAYS_MARK: must decide) some light's
-// visibility, for the debug tint or the mark.
+// main()'s `traced`: a ray decided (SHADOW_RAYS_MARK: must decide) some light's visibility.
 #define NOTE_TRACED(shadow) traced = traced || shadow.traced
 #else
 #define NOTE_TRACED(shadow)
@@ -493,11 +490,10 @@ void main() {
                                   vec3(1, 1, 0.3));
     if (cascade >= 0) colour = mix(colour, kTints[cascade], 0.35);
 #endif
-#ifdef DEBUG_RAYS
-    if (traced) colour = mix(colour, vec3(1.0, 0.0, 1.0), 0.6);
-#endif
 #ifdef SHADOW_RAYS_MARK
     if (traced) alpha = 0.0;  // drawn again with its rays (render/RayMarks.h)
+#elif defined(DEBUG_RAYS)
+    if (traced) colour = mix(colour, vec3(1.0, 0.0, 1.0), 0.6);
 #endif
     fragColour = vec4(dither(colour), alpha);
 }
