@@ -1,7 +1,8 @@
 // Rays through the project's own BVH (src/bvh/Bvh.h), read from two RGBA32F textures with
 // texelFetch so it runs on WebGL2 as on OpenGL 4.5: node i is texels 2i, 2i+1 of uBvhNodes,
-// triangle j texels 3j..3j+2 of uBvhTriangles, rows of kBvhRowTexels texels (bvh_layout.glsl). The same traversal as the C++ (front to back, a stack of deferred siblings,
-// box exits widened as Ize 2013 shows) and the watertight triangle test of Woop, Benthin and
+// triangle j texels 3j..3j+2 of uBvhTriangles, in rows of kBvhRowTexels (bvh_layout.glsl).
+// The same traversal as the C++ (front to back, a stack of deferred siblings, box exits
+// widened as Ize 2013 shows) and the watertight triangle test of Woop, Benthin and
 // Wald 2013, without the C++'s double-precision retry of an area of exactly 0.
 #include "bvh_layout.glsl"
 layout(binding = 12) uniform highp sampler2D uBvhNodes;
@@ -137,7 +138,8 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, i
         bool descended = false;
         if (count == 0) {
             vec4 lo0 = bvhTexel(uBvhNodes, 2 * first), hi0 = bvhTexel(uBvhNodes, 2 * first + 1);
-            vec4 lo1 = bvhTexel(uBvhNodes, 2 * first + 2), hi1 = bvhTexel(uBvhNodes, 2 * first + 3);
+            vec4 lo1 = bvhTexel(uBvhNodes, 2 * first + 2);
+            vec4 hi1 = bvhTexel(uBvhNodes, 2 * first + 3);
             float e0 = bvhEnter(r, lo0.xyz, hi0.xyz, tnear, tfar);
             float e1 = bvhEnter(r, lo1.xyz, hi1.xyz, tnear, tfar);
             if (e0 >= 0.0 && e1 >= 0.0) {

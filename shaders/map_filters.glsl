@@ -184,7 +184,8 @@ float mapFilter(LightRecord light, Receiver receiver, vec3 wsToLight, MapTap m, 
         vec2 corner = clamp(m.uv + o, m.lo, m.hi);
         float lit = compareDepth(corner, m.layer, tapReference(m, plane, corner - m.uv));
         around += lit;
-        inBand += lit * (1.0 - compareDepth(corner, m.layer, exactReference(m, plane, corner - m.uv)));
+        float exact = compareDepth(corner, m.layer, exactReference(m, plane, corner - m.uv));
+        inBand += lit * (1.0 - exact);
     }
     if ((around > 0.0 && around < 4.0) || inBand > 0.0) return 0.5;
 #endif

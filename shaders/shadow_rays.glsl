@@ -1,10 +1,10 @@
 // Shadow rays: a shadowed light's visibility from one ray through a BVH of the scene's casters
 // (bvh_trace.glsl, built by render::RayScene) instead of its map. The hard answer of the
 // light's centre, as the reference traces it (truth::ShadowRays); masked and blended casters
-// block it where their texels do (bvhTexelBlocks, render/RayMasks.h). --shadow-rays all: every lookup is a ray (LOOKUP_OF in main.frag.glsl),
-// soft filters get the hard answer too. SHADOW_RAYS_UNCERTAIN (--shadow-rays uncertain): the
-// map's answer where it is sure, a ray's where it is not (raysWhereUnsure). Included by
-// main.frag.glsl after uEye.
+// block it where their texels do (bvhTexelBlocks, render/RayMasks.h). --shadow-rays all:
+// every lookup is a ray (LOOKUP_OF in main.frag.glsl), soft filters get the hard answer too.
+// SHADOW_RAYS_UNCERTAIN (--shadow-rays uncertain): the map's answer where it is sure, a ray's
+// where it is not (raysWhereUnsure). Included by main.frag.glsl after uEye.
 #include "bvh_trace.glsl"
 
 // Below this cosine between the surface's plane and the way to the light, the surface faces
@@ -123,7 +123,8 @@ ShadowSample rayAfterMap(ShadowSample s, LightRecord light, Receiver r, vec3 wsT
 // edge-on to the light, where a caster under a fraction of a texel above the receiver (the
 // tolerance band) hides in the receiver's own depth and the silhouette rule guesses. There one
 // ray decides. (Found shadowed there, the map is as sure as elsewhere: its grazing misses are
-// leaks.)
+// leaks.) The lookups report a footprint with a texel lit only within the tolerance band as
+// part lit too (map_filters.glsl's exactReference).
 // SHADOW_RAYS_MARK (the first of render/RayMarks.h's draws): the map's answer, `traced` where
 // a ray must decide, which a later draw of that pixel does.
 const float kUnsureCosine = 0.1;

@@ -47,7 +47,8 @@ name, path, errors, bound = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.arg
 s = json.load(open(path))["overall"]
 numbers = ", ".join(f"{k} {100 * s[k]:.4f} %" for k in
                     ["misclassified", "false_shadow_outside_band", "leak_outside_band"])
-over = s["misclassified"] > bound or s["false_shadow_outside_band"] > 0 or s["leak_outside_band"] > 0
+away = s["false_shadow_outside_band"] > 0 or s["leak_outside_band"] > 0
+over = s["misclassified"] > bound or away
 print(f"{'FAIL' if over else 'ok'} ({name}, bound {100 * bound:g} %): {numbers}"
       + (f"\n  error map: {errors}" if over else ""))
 sys.exit(1 if over else 0)
@@ -62,8 +63,9 @@ done
 atrium=(--scene "$work/sponza-atrium.json")
 score sponza-atrium uncertain 0.0002 256x256 "${atrium[@]}"
 out=$work/atrium-sun-path
-"$gnomon" score "${atrium[@]}" --size 256x256 --shadow-rays uncertain --path sun --frames 4 --out-dir "$out" \
-    >"$out.out" 2>&1 || { echo "FAIL (atrium sun path): $(cat "$out.out")"; failed=1; }
+"$gnomon" score "${atrium[@]}" --size 256x256 --shadow-rays uncertain --path sun --frames 4 \
+    --out-dir "$out" >"$out.out" 2>&1 ||
+    { echo "FAIL (atrium sun path): $(cat "$out.out")"; failed=1; }
 python3 - "$out/path.json" <<'PY' || failed=1
 import json, sys
 flicker = json.load(open(sys.argv[1]))["max_flicker"]
