@@ -19,7 +19,8 @@
 // surface by the stand-in's error (shadow_lookup.glsl). UNROLLED_LIGHTS: the light loops
 // written out per light (below). LIGHT_LISTS: the loops run over the lights of the pixel's
 // screen tile (lights.glsl). SHADOW_RAYS: each shadowed lookup is a ray through the casters'
-// BVH (shadow_rays.glsl); SHADOW_RAYS_MARK: maps' answers, alpha 0 where rays must decide.
+// BVH (shadow_rays.glsl); SHADOW_RAYS_MARK: maps' answers, alpha 0 and a ray job where rays
+// must decide; SHADOW_RAYS_RESOLVE: the answers of those rays (render/RayMarks.h).
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
@@ -61,10 +62,13 @@ layout(location = 5) uniform vec3 uEye;  // the camera's world position
 #else
 #define LOOKUP_OF(mapLookup) mapLookup
 #endif
+#ifndef RAY_JOB_START
+#define RAY_JOB_START 0u  // main()'s `rayJob`, unused without an uncertain draw's ray jobs
+#endif
 #if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN) && defined(COLOURED_SHADOWS)
-#define RAYS_WHERE_UNSURE(sample, light, r, toLight) rayAfterMap(sample, light, r, toLight)
+#define RAYS_WHERE_UNSURE(sample, light, record, r, toLight) rayAfterMap(sample, light, r, toLight)
 #elif !defined(SHADOW_RAYS_UNCERTAIN)
-#define RAYS_WHERE_UNSURE(sample, light, r, toLight) sample
+#define RAYS_WHERE_UNSURE(sample, light, record, r, toLight) sample
 #endif
 
 layout(location = 0) out vec4 fragColour;
@@ -244,9 +248,11 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
     }
 #endif
 
-// Declares `light` (record k of the light order), `toLight` and `falloff` at this fragment.
+// Declares `record` (the light order's entry k), its `light`, and `toLight` and `falloff` at
+// this fragment.
 #define LIGHT_AT(k, KIND)                          \
-    LightRecord light = lights[lightRecord(k)];      \
+    int record = lightRecord(k);                   \
+    LightRecord light = lights[record];            \
     vec3 toLight;                                  \
     float falloff;                                 \
     lightAt(light, KIND, toLight, falloff);
@@ -258,7 +264,7 @@ void recordVisibility(LightRecord light, ShadowSample shadow) {
         ShadowSample shadow = kLitSample;                                           \
         if (s.receives) {                                                           \
             shadow = RAYS_WHERE_UNSURE(LOOKUP(light, receiver, toLight), light,     \
-                                       receiver, toLight);                          \
+                                       record, receiver, toLight);                  \
             CONTACT(light, shadow.visibility, toLight);                             \
             RECORD(light, shadow);                                                  \
             NOTE_CASCADE(shadow);                                                   \
@@ -384,11 +390,12 @@ vec3 floorDiffuse(LightRecord light, int kind, vec3 n, out vec3 toLight) {
 #define FLOOR_LIGHT(k, LOOKUP, KIND)                                                      \
     {                                                                                     \
         vec3 toLight;                                                                     \
-        LightRecord light = lights[lightRecord(k)];                                       \
+        int record = lightRecord(k);                                                      \
+        LightRecord light = lights[record];                                               \
         vec3 diffuse = floorDiffuse(light, KIND, n, toLight);                             \
-        lit += diffuse *                                                                  \
-               RAYS_WHERE_UNSURE(LOOKUP(light, receiver, toLight), light, receiver, toLight) \
-                   .visibility;                                                           \
+        lit += diffuse * RAYS_WHERE_UNSURE(LOOKUP(light, receiver, toLight), light, record, \
+                                           receiver, toLight)                             \
+                             .visibility;                                                 \
     }
 #define FLOOR_LOOP(NAME, first, last, LOOKUP, KIND) \
     EACH_LIGHT(NAME, first, last, FLOOR_LIGHT, LOOKUP, KIND)
@@ -401,48 +408,14 @@ void main() {
     Receiver receiver = receiverOf(n, planeNormal);
     vec3 lit = uAmbient;
     vec3 unused;
+    uint rayJob = RAY_JOB_START;
     LightRange range = lightRange();
     EACH_LIGHT(UNSHADOWED_LIGHTS, range.first, UNSHADOWED_END, FLOOR_UNSHADOWED, _, _)
     SHADOWED_KINDS(FLOOR_LOOP)
     fragColour = vec4(lit * vIn.colour, 1.0);
 }
 #else
-#if defined(DITHER_LINEAR) || defined(DITHER_SRGB)
-// Ordered dithering (Bayer, 1973; a 4x4 threshold matrix) of the 8-bit output by less than
-// half a step either way: a smooth gradient, which plain rounding turns into flat bands one
-// step apart, becomes a fine fixed pattern whose local average is the true colour. The same
-// pixel always gets the same offset, so images stay deterministic. For sRGB output the step is
-// one of the encoded values the target stores: the offset, meant in that encoding, is carried
-// back to linear by the curve's slope at c, dc/de = 2.4 c / (e + 0.055) = (2.4 / 1.055)
-// c^(7/12) (1 / 12.92 on the linear toe). To first order that is the encoded offset (off by
-// under 1.5 % of it, at the darkest end of the power segment). c^(7/12) is read off c's float
-// bits: scaling them by 7/12 scales its exponent and, near enough, its logarithm (the constant
-// chosen for the least error over the power segment: within 4.6 %, so the largest offset,
-// 15/32 of a step, stays under half a step), where pow, an exp2 of a log2 on llvmpipe, would
-// cost a large share of the main pass.
-// The matrix's entry from the bits of x ^ y and y, interleaved and reversed (its recursive
-// construction), in integer operations: llvmpipe reads a table indexed per pixel one lane at
-// a time.
-vec3 dither(vec3 c) {
-    ivec2 p = ivec2(gl_FragCoord.xy) & 3;
-    int q = p.x ^ p.y;
-    int bayer = ((q & 1) << 3) | ((p.y & 1) << 2) | (q & 2) | ((p.y >> 1) & 1);
-    float offset = ((float(bayer) + 0.5) / 16.0 - 0.5) / 255.0;
-#ifdef DITHER_SRGB
-    c = clamp(c, 0.0, 1.0);
-    vec3 power = max(c, 0.0031308);  // the power segment's slope, kept finite on the toe
-    vec3 root = intBitsToFloat(ivec3(vec3(floatBitsToInt(power)) * (7.0 / 12.0)) + 443722423);
-    vec3 slope = mix(vec3(1.0 / 12.92), (2.4 / 1.055) * root, step(0.0031308, c));
-    return c + offset * slope;
-#else
-    return c + offset;
-#endif
-}
-#else
-vec3 dither(vec3 c) {
-    return c;
-}
-#endif
+#include "dither.glsl"
 
 void main() {
     vec3 planeNormal = receiverPlaneNormal();
@@ -478,6 +451,7 @@ void main() {
     Receiver receiver = receiverOf(s.n, planeNormal);
     int cascade = -1;  // DEBUG_CASCADES: the last cascade a lookup read
     bool traced = false;  // DEBUG_RAYS: a ray decided some light's visibility
+    uint rayJob = RAY_JOB_START;  // the pixel's ray job (shadow_rays.glsl)
 
     vec3 lit = s.unlit ? s.base : uAmbient * s.base;
     vec3 factor = vec3(1.0);
@@ -492,6 +466,7 @@ void main() {
 #endif
 #ifdef SHADOW_RAYS_MARK
     if (traced) alpha = 0.0;  // drawn again with its rays (render/RayMarks.h)
+    WRITE_RAY_JOB(receiver, rayJob)
 #elif defined(DEBUG_RAYS)
     if (traced) colour = mix(colour, vec3(1.0, 0.0, 1.0), 0.6);
 #endif

@@ -72,24 +72,7 @@ layout(binding = 3) uniform CUBE_MAPS uShadowCubeDepths;
 #define RAYS_ONLY
 #endif
 
-// The fragment the lookups are for, the same for every light (main.frag.glsl fills it in).
-struct Receiver {
-    vec3 position;       // world space
-    vec3 normal;         // the shading normal, world space
-    vec3 planeNormal;    // RECEIVER_PLANE: the triangle's own plane (receiver_plane.glsl)
-    float viewDepth;     // the depth along the view that picks a cascade
-    float standInError;  // STAND_IN_LIFT: how far the object's stand-in strays (world units)
-};
-
-// What one light's lookup found.
-struct ShadowSample {
-    float visibility;  // 0 in shadow, 1 lit
-    float texelWorld;  // world size of the map texel read (gnomon score's aliasing band); 0: none
-    vec3 tint;         // COLOURED_SHADOWS: the share of the light blended casters let through
-    int cascade;       // the cascade read (--debug-view cascades); -1: none
-    bool traced;       // SHADOW_RAYS: a ray decided the visibility, not the map
-};
-const ShadowSample kLitSample = ShadowSample(1.0, 0.0, vec3(1.0), -1, false);
+#include "shadow_sample.glsl"
 
 // Interleaved gradient noise (Jimenez 2014): a value in [0, 1) per pixel, fixed in screen
 // space, that neighbouring pixels spread evenly. Poisson taps turn by it, cascades hand over

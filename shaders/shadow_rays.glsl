@@ -75,18 +75,21 @@ float rayLead(RayStart s, vec3 dir) {
     return s.margin / max(dot(s.normal, dir), kRayEdgeOn);
 }
 
+// The normal a ray leaves by. The plane's normal from the position's derivatives rounds by
+// about 1e-4 radians; a flat face's shading normal is its own exactly, which keeps a face all
+// but edge-on to the light (a wall under a sun at a right angle to it) on one side of
+// kRayEdgeOn throughout.
+vec3 rayNormal(Receiver r) {
+    return length(cross(r.planeNormal, r.normal)) < kFlatFaceSine ? r.normal : r.planeNormal;
+}
+
 // The light's visibility at `r` along `wsToLight` (lightAt's direction): 0 when a caster lies
 // between. Directional lights reach from infinitely far; area lights, parallel as they light,
 // from their plane; spot and point lights from their position.
 ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     ShadowSample result = kLitSample;
     result.traced = true;
-    // The plane's normal from the position's derivatives rounds by about 1e-4 radians; a flat
-    // face's shading normal is its own exactly, which keeps a face all but edge-on to the
-    // light (a wall under a sun at a right angle to it) on one side of kRayEdgeOn throughout.
-    vec3 n = r.planeNormal;
-    if (length(cross(n, r.normal)) < kFlatFaceSine) n = r.normal;
-    RayStart start = rayStart(r, n, wsToLight);
+    RayStart start = rayStart(r, rayNormal(r), wsToLight);
     if (dot(start.normal, wsToLight) <= kRayEdgeOn) {
         result.visibility = 0.0;
         return result;
@@ -116,6 +119,14 @@ ShadowSample rayAfterMap(ShadowSample s, LightRecord light, Receiver r, vec3 wsT
     return s;
 }
 
+// A pixel's ray job (render/RayMarks.h): the records of up to two lights to trace, 15 bits
+// each (kNoRayRecord: none), in the low and high halves of a word; the rays' pass sets the top
+// bit of a half when its light is visible.
+const uint kRayRecordBits = 0x7fffu;
+const uint kNoRayRecord = 0x7fffu;
+const uint kRayLitBit = 0x8000u;
+const uint kNoRayRecords = 0x7fff7fffu;
+
 #ifdef SHADOW_RAYS_UNCERTAIN
 // Hybrid shadows (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015): the map is unsure where its
 // filter's footprint holds both lit and shadowed texels (a shadow's edge, a caster thinner than
@@ -126,18 +137,65 @@ ShadowSample rayAfterMap(ShadowSample s, LightRecord light, Receiver r, vec3 wsT
 // leaks.) The lookups report a footprint with a texel lit only within the tolerance band as
 // part lit too (map_filters.glsl's exactReference).
 // SHADOW_RAYS_MARK (the first of render/RayMarks.h's draws): the map's answer, `traced` where
-// a ray must decide, which a later draw of that pixel does.
+// a ray must decide, and the pixel's ray job for the rays' pass (ray_trace.frag.glsl).
+// SHADOW_RAYS_RESOLVE (the second): that pass's answers for the lights of the pixel's job, a
+// ray here for any other (RAY_JOB_OVERFLOW: the draw has more than two shadowed lights).
 const float kUnsureCosine = 0.1;
-ShadowSample raysWhereUnsure(ShadowSample s, LightRecord light, Receiver r, vec3 wsToLight) {
+// main()'s `rayJob`: under SHADOW_RAYS_MARK the records of the lights to trace
+// (kNoRayRecords: none yet), under SHADOW_RAYS_RESOLVE their answers once read (kRayJobUnread:
+// not yet; no answer has the lit bit of an empty half).
+const uint kRayJobUnread = 0xffffffffu;
+#ifdef SHADOW_RAYS_MARK
+#define RAY_JOB_START kNoRayRecords
+layout(location = 1) out uvec4 fRayJob;        // the point's bits, the lights' records
+layout(location = 2) out uvec4 fRayJobNormal;  // rayNormal's bits
+void noteRayJob(inout uint job, int record) {
+    if ((job & kRayRecordBits) == kNoRayRecord) {
+        job = (job & ~kRayRecordBits) | uint(record);
+    } else if ((job >> 16) == kNoRayRecord) {
+        job = (job & kRayRecordBits) | (uint(record) << 16);
+    }
+}
+#define WRITE_RAY_JOB(r, job)                                   \
+    fRayJob = uvec4(floatBitsToUint(r.position), job);          \
+    fRayJobNormal = uvec4(floatBitsToUint(rayNormal(r)), 0u);
+#elif defined(SHADOW_RAYS_RESOLVE)
+#define RAY_JOB_START kRayJobUnread
+#include "ray_pyramid.glsl"
+// 1 or 0 when this pixel's job traced `record`'s light (visible or not); -1 when it did not.
+int rayJobAnswer(inout uint job, int record) {
+    if (job == kRayJobUnread)
+        job = texelFetch(uRayPyramid, rayAnswerTexel(rayJobOf(ivec2(gl_FragCoord.xy))), 0).r;
+    if ((job & kRayRecordBits) == uint(record)) return int((job & kRayLitBit) != 0u);
+    uint high = job >> 16;
+    if ((high & kRayRecordBits) == uint(record)) return int((high & kRayLitBit) != 0u);
+    return -1;
+}
+#endif
+ShadowSample raysWhereUnsure(ShadowSample s, LightRecord light, int record, Receiver r,
+                             vec3 wsToLight, inout uint job) {
     bool partial = s.visibility > 0.0 && s.visibility < 1.0;
     bool grazing = abs(dot(r.planeNormal, wsToLight)) < kUnsureCosine && s.visibility == 1.0;
 #ifdef SHADOW_RAYS_MARK
     s.traced = partial || grazing;
-    return s;
+    if (s.traced) noteRayJob(job, record);
+#elif defined(SHADOW_RAYS_RESOLVE)
+    if (partial || grazing) {
+        int answer = rayJobAnswer(job, record);
+        if (answer >= 0) {
+            s.visibility = float(answer);
+            s.traced = true;
+        }
+#ifdef RAY_JOB_OVERFLOW
+        if (answer < 0) s = rayAfterMap(s, light, r, wsToLight);
+#endif
+    }
 #else
     if (partial || grazing) s = rayAfterMap(s, light, r, wsToLight);  // WebGL: no ?: on structs
-    return s;
 #endif
+    return s;
 }
-#define RAYS_WHERE_UNSURE(sample, light, r, toLight) raysWhereUnsure(sample, light, r, toLight)
+// (main()'s `rayJob` carries the pixel's ray job from light to light.)
+#define RAYS_WHERE_UNSURE(sample, light, record, r, toLight) \
+    raysWhereUnsure(sample, light, record, r, toLight, rayJob)
 #endif

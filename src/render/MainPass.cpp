@@ -35,6 +35,12 @@ glm::ivec4 unrolledCounts(glm::ivec4 ends, int first, bool shadows) {
     const int total = counts.x + counts.y + counts.z + counts.w;
     return total <= MainPass::kMaxUnrolledLights ? counts : glm::ivec4(-1);
 }
+// Under --shadow-rays uncertain, the rays run in RayMarks' pass between two draws, when the
+// frame's target is known (gnomon bench's floor draws once).
+bool raysApart(const MainPassInputs& in, const RenderOptions& options, bool floor) {
+    return in.rays && options.shadow.shadowRays == ShadowRayMode::Uncertain && !floor &&
+           in.targetColour && in.targetDepth;
+}
 }  // namespace
 
 MainPass::MainPass() {
@@ -179,6 +185,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     if (u.in->shadowMoments) gl::uniform(12, u.lightBleed);
     if (u.recordLight >= 0) gl::uniform(15, u.recordLight);
     if (u.in->rays) gl::uniform(16, u.in->rays->scale());
+    if (u.rayPyramid.x > 0) gl::uniform(17, u.rayPyramid);
 }
 
 // Opaque and masked items in their order (the fast program, then the material one where
@@ -190,7 +197,7 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
 // pass 1.34 times as long). The picture is the same: each face is drawn once either way.
 void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
                          const FrameUniforms& u, bool visibilityPass, bool floor, Items which,
-                         bool marksRays) {
+                         RayDraw rays) {
     const MainPassInputs& in = *u.in;
     // Light lists vary per tile: loops, never written out.
     const bool lists = u.tileShift >= 0;
@@ -202,7 +209,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
     // drops what it does not need from its program.
     auto variantOf = [&](const DrawItem& item) {
         return ItemVariant{options.shadow.enabled && item.receives && !item.casts, !item.specular,
-                           marksRays};
+                           rays};
     };
     // Starts in the first opaque item's variant, so no program is built that nothing draws.
     ItemVariant variant;
@@ -295,21 +302,24 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
 void MainPass::drawShaded(const GpuScene& scene, const RenderOptions& options,
                           const FrameUniforms& u, bool floor) {
     const MainPassInputs& in = *u.in;
-    if (!in.rays || options.shadow.shadowRays != ShadowRayMode::Uncertain || floor ||
-        !in.targetColour || !in.targetDepth) {
+    if (!raysApart(in, options, floor)) {
         drawItems(scene, options, u, false, floor);
         return;
     }
-    // The opaque items with the maps' answers, marking where a ray must decide; the marked
-    // pixels again, rays and all; the blended items over them (their rays in one draw).
-    drawItems(scene, options, u, false, floor, Items::Opaque, true);
+    // The opaque items with the maps' answers, marking where a ray must decide; those rays;
+    // the marked pixels again with their answers; the blended items over them (their rays in
+    // one draw).
     GLint frame = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frame);
-    mRayMarks.mark(*in.targetColour, *in.targetDepth);
+    mRayMarks.bindFirstDraw();
+    drawItems(scene, options, u, false, floor, Items::Opaque, RayDraw::Mark);
+    FrameUniforms second = u;
+    second.rayPyramid = mRayMarks.trace(*in.targetColour, *in.targetDepth,
+                                        {u.eye, in.rays->scale(), mMaxLights, mOrderCapacity / 4});
     scene.bind();
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    drawItems(scene, options, u, false, floor, Items::Opaque);
+    drawItems(scene, options, second, false, floor, Items::Opaque, RayDraw::Resolve);
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frame));
     glDepthFunc(in.depthReady ? GL_LEQUAL : GL_LESS);
     glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);
@@ -339,6 +349,7 @@ void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const Ren
     const TiledLights& tiled = *in.tiled;
     uploadLights(*in.lights, tiled.order());
     // Before the maps: on ES a texture is made and written through the active unit's binding.
+    if (raysApart(in, options, floor)) mRayMarks.prepare(*in.targetColour, *in.targetDepth);
     const int tileShift = tiled.lists().size > 0 ? bindLists(tiled.lists()) : -1;
     const bool rawDepths = bindMaps(in, options.shadow);
 

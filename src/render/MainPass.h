@@ -97,26 +97,30 @@ private:
         glm::vec3 depthAware{0.0f};  // steps, map and cube stored-depth spacing
         glm::ivec4 ranges{0};        // the light order's range: every light, or one tile's
         int first = 0;
-        int recordLight = -1;  // ES visibility passes: the scene light recorded
-        int tileShift = -1;    // light lists: log2 of their tiles' side (-1: no lists)
+        int recordLight = -1;      // ES visibility passes: the scene light recorded
+        int tileShift = -1;        // light lists: log2 of their tiles' side (-1: no lists)
+        glm::ivec2 rayPyramid{0};  // the second uncertain draw: its jobs' numbering (RayMarks)
     };
     void useProgram(const gl::Program& p, const FrameUniforms& u);
     void recordVisibilityByLight(const GpuScene& scene, const RenderOptions& options,
                                  FrameUniforms u, const VisibilityTarget& visibility, bool floor);
     // Which of the items a draw takes: every one, or the opaque (and masked) or blended ones.
     enum class Items { All, Opaque, Blended };
-    // `marksRays`: the maps' answers, and alpha 0 where a ray must decide (RayMarks.h).
+    // Where an uncertain draw's rays run: in it, or in RayMarks' pass between its first draw
+    // (the maps' answers, alpha 0 and a ray job where a ray must decide: Mark) and the second
+    // (the rays' answers: Resolve).
+    enum class RayDraw { Inline, Mark, Resolve };
     void drawItems(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
                    bool visibilityPass, bool floor, Items which = Items::All,
-                   bool marksRays = false);
+                   RayDraw rays = RayDraw::Inline);
     // The frame's items; under --shadow-rays uncertain the pixels a ray decides drawn again.
     void drawShaded(const GpuScene& scene, const RenderOptions& options, const FrameUniforms& u,
                     bool floor);
     // What an item's own content leaves out of its program, beyond what the frame's does.
     struct ItemVariant {
-        bool receiverOnly = false;  // receives shadows, casts none (RECEIVER_ONLY)
-        bool noSpecular = false;    // its material has no highlight (NO_SPECULAR)
-        bool marksRays = false;     // marks where a ray must decide (SHADOW_RAYS_MARK)
+        bool receiverOnly = false;       // receives shadows, casts none (RECEIVER_ONLY)
+        bool noSpecular = false;         // its material has no highlight (NO_SPECULAR)
+        RayDraw rays = RayDraw::Inline;  // SHADOW_RAYS_MARK, SHADOW_RAYS_RESOLVE
         bool operator==(const ItemVariant&) const = default;
     };
     // `material`: the MATERIAL_PATH variant (textures, masks, blending). `counts`: the draw's

@@ -25,8 +25,13 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     v.pointFaces = in.pointFaces;
     v.constantFalloff = in.constantFalloff;
     if (!in.rays) v.shadowRays = 0;  // no caster to trace (shadows off, an empty scene)
-    if (item.marksRays && v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain))
-        v.shadowRays = MainVariant::kRaysMarked;
+    if (v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain)) {
+        if (item.rays == RayDraw::Mark) v.shadowRays = MainVariant::kRaysMarked;
+        // A job holds two lights; a draw with more shadowed ones (or loops over an unknown
+        // count) traces the rest itself.
+        v.raysResolve = item.rays == RayDraw::Resolve;
+        v.rayOverflow = v.raysResolve && (counts.x < 0 || counts.y + counts.z + counts.w > 2);
+    }
     v.singleMapKind = MainVariant::Bits(in.singleMapKind + 1);
     v.noSpecular = item.noSpecular;
     v.lightLists = lists;

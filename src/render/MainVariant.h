@@ -55,7 +55,12 @@ struct MainVariant {
     Bits shadowRays : 2 = 0;
     Bits debugRays : 1 = 0;   // --debug-view rays
     Bits lightLists : 1 = 0;  // each pixel reads its tile's lights (TiledLights' lists)
-    Bits unused : 4 = 0;
+    // An uncertain draw of the marked pixels that reads their rays' answers
+    // (SHADOW_RAYS_RESOLVE, render/RayMarks.h), and traces its own rays for lights beyond a
+    // job's two (RAY_JOB_OVERFLOW: the draw may have more than two shadowed lights).
+    Bits raysResolve : 1 = 0;
+    Bits rayOverflow : 1 = 0;
+    Bits unused : 2 = 0;
 
     // The bits as one number (memcpy: libc++ 14, the web build's, has no std::bit_cast).
     std::uint64_t key() const {

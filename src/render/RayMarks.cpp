@@ -1,14 +1,76 @@
 #include "render/RayMarks.h"
 
+#include <algorithm>
+#include <string>
+
 #include "gl/Program.h"
 
 namespace gnomon::render {
 
-void RayMarks::allocate(const gl::Texture& colour) {
+namespace {
+
+// Integer texels are read with texelFetch only; an integer texture filtered LINEAR (the
+// default) would be incomplete, and read as 0.
+void nearest(gl::Texture& t) {
+    t.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    t.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+gl::Texture integers(const std::string& label, int width, int height) {
+    gl::Texture t = gl::Texture::plain2D(label, GL_R32UI, std::max(width, 1), std::max(height, 1));
+    nearest(t);
+    return t;
+}
+
+// Unit `unit` reads `t` with no sampler object (texelFetch).
+void bindRaw(int unit, const gl::Texture& t) {
+    gl::bindTexture(unit, t);
+    glBindSampler(GLuint(unit), 0);
+}
+
+}  // namespace
+
+void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mWidth = colour.width();
     mHeight = colour.height();
     mColour = colour.id();
+    mFrameDepth = depth.id();
+    mSide = 4;  // answers lie in blocks of 4x4 (ray_pyramid.glsl)
+    mLevelCount = 2;
+    while (mSide < std::max(mWidth, mHeight)) {
+        mSide *= 2;
+        ++mLevelCount;
+    }
     mDepth = gl::Texture::plain2D("shadow-ray marks", GL_DEPTH_COMPONENT32F, mWidth, mHeight);
+    mJobs = gl::Texture::array2D("shadow-ray jobs", GL_RGBA32UI, mWidth, mHeight, 2);
+    nearest(mJobs);
+    // The pyramid (rows 0 to P / 2) with the rays' answers under it (rayAnswerTexel).
+    const long long pixels = static_cast<long long>(mWidth) * mHeight;
+    mResultRows = 4 * int((pixels + 4 * mSide - 1) / (4 * mSide));
+    mPyramid = integers("shadow-ray pyramid and answers", mSide, mSide / 2 + mResultRows);
+    // The same size as the pyramid's: WebGL draws into no framebuffer whose attachments differ.
+    mPyramidRead = integers("shadow-ray pyramid", mSide, mSide / 2 + mResultRows);
+    for (std::size_t k = 0; k < 2; ++k) {
+        mCopies[k] = integers("shadow-ray pyramid level", mSide, mSide / 2 + mResultRows);
+        mLevels[k] = gl::Framebuffer("shadow-ray pyramid");
+        mLevels[k].attach(GL_COLOR_ATTACHMENT0, mPyramid);
+        mLevels[k].attach(GL_COLOR_ATTACHMENT1, mPyramidRead);
+        mLevels[k].attach(GL_COLOR_ATTACHMENT2, mCopies[k]);
+        mLevels[k].drawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2});
+        mLevels[k].checkComplete();
+    }
+    mTrace = gl::Framebuffer("shadow-ray answers");
+    mTrace.attach(GL_COLOR_ATTACHMENT0, mPyramid);
+    mTrace.drawColour0();
+    mTrace.checkComplete();
+
+    mFirst = gl::Framebuffer("shadow-ray first draw");
+    mFirst.attach(GL_COLOR_ATTACHMENT0, colour);
+    mFirst.attachLayer(GL_COLOR_ATTACHMENT1, mJobs, 0);
+    mFirst.attachLayer(GL_COLOR_ATTACHMENT2, mJobs, 1);
+    mFirst.attach(GL_DEPTH_ATTACHMENT, depth);
+    mFirst.drawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2});
+    mFirst.checkComplete();
     mMarks = gl::Framebuffer("shadow-ray marks");
     mMarks.depthOnly();
     mMarks.attach(GL_DEPTH_ATTACHMENT, mDepth);
@@ -20,27 +82,104 @@ void RayMarks::allocate(const gl::Texture& colour) {
     mTarget.checkComplete();
 }
 
-void RayMarks::mark(const gl::Texture& colour, const gl::Texture& depth) {
-    if (!mProgram) {
-        mProgram =
+void RayMarks::prepare(const gl::Texture& colour, const gl::Texture& depth) {
+    if (colour.id() != mColour || depth.id() != mFrameDepth || colour.width() != mWidth ||
+        colour.height() != mHeight) {
+        allocate(colour, depth);
+    }
+}
+
+void RayMarks::bindFirstDraw() {
+    glBindFramebuffer(GL_FRAMEBUFFER, mFirst.id());
+}
+
+void RayMarks::buildPrograms(const RayTraceInputs& in) {
+    if (!mMarkProgram) {
+        mMarkProgram =
             gl::buildProgram("shadow-ray marks", {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                   {GL_FRAGMENT_SHADER, "ray_marks.frag.glsl"}});
-        mEmpty = gl::VertexArray("shadow-ray marks (no attributes)");
+        mLevelOne = gl::buildProgram("shadow-ray pyramid (marks)",
+                                     {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                      {GL_FRAGMENT_SHADER, "ray_pyramid.frag.glsl"}},
+                                     {"LEVEL_ONE"});
+        mLevelAbove = gl::buildProgram("shadow-ray pyramid (counts)",
+                                       {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                        {GL_FRAGMENT_SHADER, "ray_pyramid.frag.glsl"}});
+        mEmpty = gl::VertexArray("shadow-ray passes (no attributes)");
     }
-    if (colour.id() != mColour || colour.width() != mWidth || colour.height() != mHeight) {
-        allocate(colour);
+    if (!mTraceProgram || mTraceLights != in.maxLights) {
+        mTraceProgram = gl::buildProgram("shadow rays of the marked pixels",
+                                         {{GL_VERTEX_SHADER, "ray_trace.vert.glsl"},
+                                          {GL_FRAGMENT_SHADER, "ray_trace.frag.glsl"}},
+                                         {"MAX_LIGHTS " + std::to_string(in.maxLights),
+                                          "ORDER_SLOTS " + std::to_string(in.orderSlots)});
+        mTraceLights = in.maxLights;
     }
+}
+
+// The marks' depth target: the marked pixels' depth, 0 elsewhere (ray_marks.frag.glsl).
+void RayMarks::mark(const gl::Texture& colour, const gl::Texture& depth) {
     glBindFramebuffer(GL_FRAMEBUFFER, mMarks.id());
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
-    gl::use(mProgram);
-    gl::bindTexture(14, colour);
-    gl::bindTexture(15, depth);
-    glBindSampler(14, 0);
-    glBindSampler(15, 0);
-    glBindVertexArray(mEmpty.id());
+    gl::use(mMarkProgram);
+    bindRaw(14, colour);
+    bindRaw(15, depth);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// The pyramid, level by level: each into its column of mPyramid, of mPyramidRead (which the
+// rays' pass reads while it writes its answers under the pyramid in mPyramid) and of a copy,
+// read by the next level from the other copy. `marked`: x0, y0, x1, y1 of the pixels this draw
+// marked.
+void RayMarks::number(const gl::Texture& colour, glm::ivec4 marked) {
+    int column = 0;
+    for (int level = 1; level <= mLevelCount; ++level) {
+        const int side = mSide >> level;
+        const int below = level == 1 ? 0 : column - (mSide >> (level - 1));
+        glBindFramebuffer(GL_FRAMEBUFFER, mLevels[std::size_t(level & 1)].id());
+        glViewport(column, 0, side, side);
+        gl::use(level == 1 ? mLevelOne : mLevelAbove);
+        bindRaw(14, level == 1 ? colour : mCopies[std::size_t((level - 1) & 1)]);
+        gl::uniform(0, glm::ivec4(column, below, level - 1, 0));
+        gl::uniform(1, marked);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        column += side;
+    }
+}
+
+glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
+                           const RayTraceInputs& in) {
+    buildPrograms(in);
+    glBindVertexArray(mEmpty.id());
+    mark(colour, depth);
+
+    const bool scissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+    glm::ivec4 marked(0, 0, mWidth, mHeight);
+    if (scissor) {
+        glGetIntegerv(GL_SCISSOR_BOX, &marked.x);
+        marked = glm::ivec4(marked.x, marked.y, marked.x + marked.z, marked.y + marked.w);
+        glDisable(GL_SCISSOR_TEST);
+    }
+    number(colour, marked);
+
+    const glm::ivec2 size(mSide, mLevelCount);
+    glBindFramebuffer(GL_FRAMEBUFFER, mTrace.id());
+    glViewport(0, mSide / 2, mSide, mResultRows);
+    gl::use(mTraceProgram);
+    bindRaw(14, mPyramidRead);
+    bindRaw(15, mJobs);
+    gl::uniform(1, mResultRows);
+    gl::uniform(5, in.eye);
+    gl::uniform(16, in.rayScale);
+    gl::uniform(17, size);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+
+    if (scissor) glEnable(GL_SCISSOR_TEST);
+    glViewport(0, 0, mWidth, mHeight);
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
+    bindRaw(14, mPyramid);
+    return size;
 }
 
 }  // namespace gnomon::render

@@ -1,35 +1,72 @@
-// Shadow rays only where the maps were unsure, in a pass of their own (--shadow-rays
-// uncertain). The main pass first draws every opaque surface with the maps' answers and alpha
-// 0 where some lookup was unsure (main.frag.glsl's SHADOW_RAYS_MARK); mark() turns those
-// pixels into a depth target holding their depth and 0 elsewhere; the opaque surfaces drawn
-// again into target() (depth LEQUAL, no writes) are shaded only there, rays and all. On a CPU
-// driver an `if` only masks lanes, so ray code in the first draw cost every pixel the set-up
-// and first steps of a traversal whether it traced or not; a failed depth test skips whole
-// blocks of pixels before their shader runs.
+// Shadow rays only where the maps were unsure, in passes of their own (--shadow-rays
+// uncertain). The main pass first draws every opaque surface with the maps' answers into
+// firstDraw(): alpha 0 where some lookup was unsure, and beside the colour that pixel's ray
+// job (its point, normal and the lights to trace: main.frag.glsl's SHADOW_RAYS_MARK). Then
+// trace() turns the marked pixels into a depth target holding their depth and 0 elsewhere,
+// numbers them (a histogram pyramid, shaders/ray_pyramid.glsl) and traces their jobs in a pass
+// of one fragment per marked pixel (ray_trace.frag.glsl); the opaque surfaces drawn again into
+// target() (depth LEQUAL, no writes) are shaded only there, with those rays' answers
+// (SHADOW_RAYS_RESOLVE). On a CPU driver an `if` only masks lanes: ray code in the first draw
+// cost every pixel the set-up and first steps of a traversal whether it traced or not, and
+// rays traced in the second draw ran one marked pixel to a vector whose other lanes waited; a
+// failed depth test skips whole blocks of pixels before their shader runs.
 #pragma once
+
+#include <array>
+
+#include <glm/glm.hpp>
 
 #include "gl/Objects.h"
 
 namespace gnomon::render {
 
+// What the rays' pass shares with the main pass: its eye and rays' margin (shadow_rays.glsl)
+// and the size of its light records' blocks (lights.glsl).
+struct RayTraceInputs {
+    glm::vec3 eye{0.0f};
+    float rayScale = 0.0f;
+    int maxLights = 0, orderSlots = 0;
+};
+
 class RayMarks {
 public:
-    // Marks the pixels whose alpha in `colour` is 0 with their depth from `depth` (the frame's
-    // target, both `colour`'s size), and leaves target() bound. Uses texture units 14 and 15
-    // and its own vertex array: the caller binds its own again.
-    void mark(const gl::Texture& colour, const gl::Texture& depth);
+    // Makes the textures for a frame drawn into `colour` and `depth` (the same size), if they
+    // are not made yet. Before any other binding the frame needs: on OpenGL ES a texture is
+    // made and edited through the active unit's binding.
+    void prepare(const gl::Texture& colour, const gl::Texture& depth);
+    // Binds the first draw's target: `colour` and `depth` with the ray jobs beside them (draw
+    // buffers 1 and 2). After prepare().
+    void bindFirstDraw();
+    // After the first draw: marks the pixels whose alpha in `colour` is 0 with their depth from
+    // `depth`, numbers them, traces their jobs, and leaves target() bound with the numbering
+    // on texture unit 14 and the answers on 15. The light records, casters and their masks
+    // stay bound as the main pass left them; the viewport is put back on `colour`, the scissor
+    // as it was (a screen tile's: only its pixels are marked). Returns the numbering's size
+    // (P, log2 P) for the second draw's programs (ray_pyramid.glsl).
+    glm::ivec2 trace(const gl::Texture& colour, const gl::Texture& depth, const RayTraceInputs& in);
     // `colour` with the marks' depth, for the second draw.
     const gl::Framebuffer& target() const { return mTarget; }
 
 private:
-    void allocate(const gl::Texture& colour);
+    void allocate(const gl::Texture& colour, const gl::Texture& depth);
+    void buildPrograms(const RayTraceInputs& in);
+    void mark(const gl::Texture& colour, const gl::Texture& depth);
+    void number(const gl::Texture& colour, glm::ivec4 marked);
 
-    gl::Program mProgram;
+    gl::Program mMarkProgram, mLevelOne, mLevelAbove, mTraceProgram;
+    int mTraceLights = 0;  // the MAX_LIGHTS mTraceProgram was built for
     gl::VertexArray mEmpty;
-    gl::Texture mDepth;
-    gl::Framebuffer mMarks, mTarget;  // the marks' depth alone; `colour` with it
-    GLuint mColour = 0;               // the colour texture mTarget holds
+    gl::Texture mDepth;        // the marks' depth
+    gl::Texture mJobs;         // two layers of RGBA32UI per pixel (main.frag.glsl)
+    gl::Texture mPyramid;      // every level side by side (ray_pyramid.glsl), answers under
+    gl::Texture mPyramidRead;  // the levels again, for the rays' pass to read
+    std::array<gl::Texture, 2> mCopies;  // the last level drawn, for the next one to read
+    int mResultRows = 1;                 // rows of answers under the pyramid
+    gl::Framebuffer mFirst, mMarks, mTarget, mTrace;
+    std::array<gl::Framebuffer, 2> mLevels;  // the pyramid with either copy
+    GLuint mColour = 0, mFrameDepth = 0;     // the textures mFirst and mTarget hold
     int mWidth = 0, mHeight = 0;
+    int mSide = 2, mLevelCount = 1;  // P and log2 P
 };
 
 }  // namespace gnomon::render

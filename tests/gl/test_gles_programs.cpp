@@ -311,9 +311,25 @@ TEST(GlesPrograms, MainPassShadowRays) {
         render::MainVariant marks = frameVariant(o, false, false);
         marks.shadowRays = render::MainVariant::kRaysMarked;
         checkMain(marks);
+        // The second, which reads the rays' answers; with more lights than a job holds.
+        render::MainVariant resolve = frameVariant(o, false, false);
+        resolve.raysResolve = 1;
+        checkMain(resolve);
+        resolve.rayOverflow = 1;
+        checkMain(resolve);
     }
     checkProgram(
         {"shadow-ray marks", {kFullscreen, {GL_FRAGMENT_SHADER, "ray_marks.frag.glsl"}}, {}});
+    checkProgram({"shadow-ray pyramid (marks)",
+                  {kFullscreen, {GL_FRAGMENT_SHADER, "ray_pyramid.frag.glsl"}},
+                  {"LEVEL_ONE"}});
+    checkProgram({"shadow-ray pyramid (counts)",
+                  {kFullscreen, {GL_FRAGMENT_SHADER, "ray_pyramid.frag.glsl"}},
+                  {}});
+    checkProgram(
+        {"shadow rays of the marked pixels",
+         {{GL_VERTEX_SHADER, "ray_trace.vert.glsl"}, {GL_FRAGMENT_SHADER, "ray_trace.frag.glsl"}},
+         {"MAX_LIGHTS " + std::to_string(maxLights()), "ORDER_SLOTS 1024"}});
     RenderOptions o;
     o.shadow.shadowRays = ShadowRayMode::All;
     render::MainVariant receiverOnly = render::variantOf(o, false, true);
@@ -392,7 +408,8 @@ TEST(GlesPrograms, EveryRootShaderIsBuilt) {
         "fullscreen.vert.glsl",  "depth_reduce.frag.glsl", "transmittance.frag.glsl",
         "moments.frag.glsl",     "debug_maps.frag.glsl",   "debug_lines.vert.glsl",
         "debug_lines.frag.glsl", "main.vert.glsl",         "main.frag.glsl",
-        "depth_cube.vert.glsl",  "bvh_rays.frag.glsl",     "ray_marks.frag.glsl"};
+        "depth_cube.vert.glsl",  "bvh_rays.frag.glsl",     "ray_marks.frag.glsl",
+        "ray_pyramid.frag.glsl", "ray_trace.vert.glsl",    "ray_trace.frag.glsl"};
     for (const std::string& name : gl::embeddedShaderNames()) {
         if (name.ends_with(".vert.glsl") || name.ends_with(".frag.glsl")) {
             EXPECT_EQ(built.count(name), 1u) << name;
