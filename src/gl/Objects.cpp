@@ -180,6 +180,12 @@ Query::Query(const std::string& label, GLenum target) {
     if (n != 0) setLabel(GL_QUERY, n, label);  // 0: the driver refused the target
 }
 
+bool Query::available() const {
+    GLuint ready = GL_FALSE;
+    glGetQueryObjectuiv(id(), GL_QUERY_RESULT_AVAILABLE, &ready);
+    return ready == GL_TRUE;
+}
+
 std::uint64_t Query::result() const {
     if (dsa()) {
         GLint64 value = 0;

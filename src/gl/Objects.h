@@ -237,6 +237,8 @@ public:
     Query(const std::string& label, GLenum target);
     // The result of the query last ended, waiting for it.
     std::uint64_t result() const;
+    // Whether that result is in, so that result() returns without waiting.
+    bool available() const;
 };
 
 }  // namespace gnomon::gl

@@ -306,20 +306,25 @@ void MainPass::drawShaded(const GpuScene& scene, const RenderOptions& options,
         drawItems(scene, options, u, false, floor);
         return;
     }
-    // The opaque items with the maps' answers, marking where a ray must decide; those rays;
-    // the marked pixels again with their answers; the blended items over them (their rays in
-    // one draw).
+    // The opaque items with the maps' answers, marking where a ray must decide; those rays
+    // (in a pass of their own when many: RayMarks::compacts); the marked pixels again with
+    // their answers; the blended items over them (their rays in one draw).
     GLint frame = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frame);
-    mRayMarks.bindFirstDraw();
+    const bool compact = mRayMarks.compacts();
+    if (compact) mRayMarks.bindFirstDraw();
     drawItems(scene, options, u, false, floor, Items::Opaque, RayDraw::Mark);
     FrameUniforms second = u;
-    second.rayPyramid = mRayMarks.trace(*in.targetColour, *in.targetDepth,
-                                        {u.eye, in.rays->scale(), mMaxLights, mOrderCapacity / 4});
+    second.rayPyramid =
+        mRayMarks.trace(*in.targetColour, *in.targetDepth,
+                        {u.eye, in.rays->scale(), mMaxLights, mOrderCapacity / 4}, compact);
     scene.bind();
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    drawItems(scene, options, second, false, floor, Items::Opaque, RayDraw::Resolve);
+    mRayMarks.beginCount();
+    drawItems(scene, options, second, false, floor, Items::Opaque,
+              compact ? RayDraw::Resolve : RayDraw::Inline);
+    mRayMarks.endCount();
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(frame));
     glDepthFunc(in.depthReady ? GL_LEQUAL : GL_LESS);
     glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);

@@ -34,16 +34,29 @@ public:
     // are not made yet. Before any other binding the frame needs: on OpenGL ES a texture is
     // made and edited through the active unit's binding.
     void prepare(const gl::Texture& colour, const gl::Texture& depth);
-    // Binds the first draw's target: `colour` and `depth` with the ray jobs beside them (draw
-    // buffers 1 and 2). After prepare().
+    // Whether this frame's rays run in their own pass (trace(), from the jobs the first draw
+    // writes beside its colour) or in the second draw, where the pixels lie. The pass pays a
+    // fixed cost (the jobs' stores beside every pixel, the numbering's passes) that only many
+    // marked pixels win back, as one marked pixel to a vector of lanes costs the second draw
+    // nearly a vector's time: on OpenGL 4.5 the count of an earlier frame's second draw
+    // decides (none yet: the pass); OpenGL ES 3.0, which counts no samples, always takes the
+    // pass. After prepare().
+    bool compacts();
+    // Binds the first draw's target when compacts(): `colour` and `depth` with the ray jobs
+    // beside them (draw buffers 1 and 2).
     void bindFirstDraw();
     // After the first draw: marks the pixels whose alpha in `colour` is 0 with their depth from
-    // `depth`, numbers them, traces their jobs, and leaves target() bound with the numbering
-    // on texture unit 14 and the answers on 15. The light records, casters and their masks
-    // stay bound as the main pass left them; the viewport is put back on `colour`, the scissor
-    // as it was (a screen tile's: only its pixels are marked). Returns the numbering's size
-    // (P, log2 P) for the second draw's programs (ray_pyramid.glsl).
-    glm::ivec2 trace(const gl::Texture& colour, const gl::Texture& depth, const RayTraceInputs& in);
+    // `depth`, and leaves target() bound. With `compact`, first numbers them, traces their jobs
+    // and binds the numbering and the answers on texture unit 14, and returns the numbering's
+    // size (P, log2 P) for the second draw's programs (ray_pyramid.glsl); unit 15 is left to
+    // the caller to bind again (the scene's object records). The light records, casters and
+    // their masks stay bound as the main pass left them; the viewport is put back on
+    // `colour`, the scissor as it was (a screen tile's: only its pixels are marked).
+    glm::ivec2 trace(const gl::Texture& colour, const gl::Texture& depth, const RayTraceInputs& in,
+                     bool compact);
+    // Around the second draw: counts the samples it shades, its marked pixels (OpenGL 4.5).
+    void beginCount();
+    void endCount();
     // `colour` with the marks' depth, for the second draw.
     const gl::Framebuffer& target() const { return mTarget; }
 
@@ -67,6 +80,9 @@ private:
     GLuint mColour = 0, mFrameDepth = 0;     // the textures mFirst and mTarget hold
     int mWidth = 0, mHeight = 0;
     int mSide = 2, mLevelCount = 1;  // P and log2 P
+    gl::Query mCount;                // the second draw's samples (OpenGL 4.5)
+    bool mCounting = false;          // mCount ended and not yet read
+    int mLastCount = -1;             // the marked pixels mCount read last (-1: none yet)
 };
 
 }  // namespace gnomon::render
