@@ -36,6 +36,8 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mHeight = colour.height();
     mColour = colour.id();
     mFrameDepth = depth.id();
+    mLastCount = -1;  // a count of another size's pixels says nothing here
+    mCounting = false;
     mSide = 4;  // answers lie in blocks of 4x4 (ray_pyramid.glsl)
     mLevelCount = 2;
     while (mSide < std::max(mWidth, mHeight)) {
