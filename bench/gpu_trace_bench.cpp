@@ -71,9 +71,13 @@ bvh::Bvh buildBvh(const World& w) {
     for (std::size_t o = 0; o < w.scene.objects.size(); ++o) {
         const std::vector<std::uint32_t>& idx = w.scene.meshes[w.scene.objects[o].mesh].indices;
         const std::vector<glm::vec3>& p = w.positions[o];
+        // Shadow rays pass through an object that casts no shadow (gnomon's ground under a
+        // model), as the C++ BVH's (truth::BvhTracer) and the main pass's do.
+        const float flags =
+            w.scene.objects[o].castsShadows ? float(bvh::BvhTriangle::kCaster) : 0.0f;
         for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
-            tris.push_back({p[idx[t]], float(o), p[idx[t + 1]], float(t / 3), p[idx[t + 2]],
-                            float(bvh::BvhTriangle::kCaster)});
+            tris.push_back(
+                {p[idx[t]], float(o), p[idx[t + 1]], float(t / 3), p[idx[t + 2]], flags});
         }
     }
     return bvh::Bvh(std::move(tris));
