@@ -5,6 +5,7 @@
 
 #include "gl/Caps.h"
 #include "gl/Program.h"
+#include "gnomon/Error.h"
 
 namespace gnomon::render {
 
@@ -29,14 +30,22 @@ void bindRaw(int unit, const gl::Texture& t) {
     glBindSampler(GLuint(unit), 0);
 }
 
+// A texture the driver would not make: one line naming it, what it needs and what to do.
+void require(const gl::Texture& t, const char* what, long long bytes) {
+    if (t.allocated()) return;
+    throw Error(ErrorKind::Gl, std::string("--shadow-rays uncertain: ") + what + " need " +
+                                   std::to_string(bytes >> 20) +
+                                   " MiB, which the OpenGL driver refused; render a smaller "
+                                   "image, or trace every lookup (--shadow-rays all)");
+}
+
 }  // namespace
 
 void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mWidth = colour.width();
     mHeight = colour.height();
-    mColour = colour.id();
-    mFrameDepth = depth.id();
-    mLastCount = -1;  // a count of another size's pixels says nothing here
+    mColour = mFrameDepth = 0;  // set once all is made: a refusal leaves nothing half made
+    mLastCount = -1;            // a count of another size's pixels says nothing here
     mCounting = false;
     mSide = 4;  // answers lie in blocks of 4x4 (ray_pyramid.glsl)
     mLevelCount = 2;
@@ -46,6 +55,7 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     }
     mDepth = gl::Texture::plain2D("shadow-ray marks", GL_DEPTH_COMPONENT32F, mWidth, mHeight);
     mJobs = gl::Texture::array2D("shadow-ray jobs", GL_RGBA32UI, mWidth, mHeight, 2);
+    require(mJobs, "the ray jobs of the output's pixels", 32LL * mWidth * mHeight);
     nearest(mJobs);
     // The pyramid (rows 0 to P / 2) with the rays' answers under it (rayAnswerTexel).
     const long long pixels = static_cast<long long>(mWidth) * mHeight;
@@ -53,8 +63,13 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mPyramid = integers("shadow-ray pyramid and answers", mSide, mSide / 2 + mResultRows);
     // The same size as the pyramid's: WebGL draws into no framebuffer whose attachments differ.
     mPyramidRead = integers("shadow-ray pyramid", mSide, mSide / 2 + mResultRows);
+    for (gl::Texture& copy : mCopies)
+        copy = integers("shadow-ray pyramid level", mSide, mSide / 2 + mResultRows);
+    for (const gl::Texture* t : {&mPyramid, &mPyramidRead, &mCopies[0], &mCopies[1]}) {
+        require(*t, "the numbering of the marked pixels",
+                4LL * 4 * mSide * (mSide / 2 + mResultRows));
+    }
     for (std::size_t k = 0; k < 2; ++k) {
-        mCopies[k] = integers("shadow-ray pyramid level", mSide, mSide / 2 + mResultRows);
         mLevels[k] = gl::Framebuffer("shadow-ray pyramid");
         mLevels[k].attach(GL_COLOR_ATTACHMENT0, mPyramid);
         mLevels[k].attach(GL_COLOR_ATTACHMENT1, mPyramidRead);
@@ -83,6 +98,8 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mTarget.attach(GL_DEPTH_ATTACHMENT, mDepth);
     mTarget.drawColour0();
     mTarget.checkComplete();
+    mColour = colour.id();
+    mFrameDepth = depth.id();
 }
 
 void RayMarks::prepare(const gl::Texture& colour, const gl::Texture& depth) {
