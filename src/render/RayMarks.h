@@ -1,15 +1,17 @@
 // Shadow rays only where the maps were unsure, in passes of their own (--shadow-rays
-// uncertain). The main pass first draws every opaque surface with the maps' answers into
-// firstDraw(): alpha 0 where some lookup was unsure, and beside the colour that pixel's ray
-// job (its point, normal and the lights to trace: main.frag.glsl's SHADOW_RAYS_MARK). Then
-// trace() turns the marked pixels into a depth target holding their depth and 0 elsewhere,
-// numbers them (a histogram pyramid, shaders/ray_pyramid.glsl) and traces their jobs in a pass
-// of one fragment per marked pixel (ray_trace.frag.glsl); the opaque surfaces drawn again into
-// target() (depth LEQUAL, no writes) are shaded only there, with those rays' answers
-// (SHADOW_RAYS_RESOLVE). On a CPU driver an `if` only masks lanes: ray code in the first draw
-// cost every pixel the set-up and first steps of a traversal whether it traced or not, and
-// rays traced in the second draw ran one marked pixel to a vector whose other lanes waited; a
-// failed depth test skips whole blocks of pixels before their shader runs.
+// uncertain). The main pass first draws every opaque surface with the maps' answers: alpha 0
+// where some lookup was unsure and, into bindFirstDraw()'s target, beside the colour that
+// pixel's ray job (its point, normal and the lights to trace: main.frag.glsl's
+// SHADOW_RAYS_MARK). Then trace() turns the marked pixels into a depth target holding their
+// depth and 0 elsewhere, numbers them (a histogram pyramid, shaders/ray_pyramid.glsl) and
+// traces their jobs in a pass of one fragment per marked pixel (ray_trace.frag.glsl); the
+// opaque surfaces drawn again into target() (depth LEQUAL, no writes) are shaded only there,
+// with those rays' answers (SHADOW_RAYS_RESOLVE). A frame with few marked pixels skips the
+// jobs and the pass, and its second draw traces them itself (compacts()). On a CPU driver an `if`
+// only masks lanes: ray code in the first draw cost every pixel the set-up and first steps of a
+// traversal whether it traced or not, and rays traced in the second draw ran one marked pixel to a
+// vector whose other lanes waited; a failed depth test skips whole blocks of pixels before their
+// shader runs.
 #pragma once
 
 #include <array>
@@ -46,11 +48,11 @@ public:
     // beside them (draw buffers 1 and 2).
     void bindFirstDraw();
     // After the first draw: marks the pixels whose alpha in `colour` is 0 with their depth from
-    // `depth`, and leaves target() bound. With `compact`, first numbers them, traces their jobs
-    // and binds the numbering and the answers on texture unit 14, and returns the numbering's
-    // size (P, log2 P) for the second draw's programs (ray_pyramid.glsl); unit 15 is left to
-    // the caller to bind again (the scene's object records). The light records, casters and
-    // their masks stay bound as the main pass left them; the viewport is put back on
+    // `depth`, and leaves target() bound. With `compact`, also numbers them, traces their jobs,
+    // binds the numbering and the answers on texture unit 14 and returns the numbering's size
+    // (P, log2 P) for the second draw's programs (ray_pyramid.glsl; 0 without `compact`);
+    // unit 15 is left to the caller to bind again (the scene's object records). The light records,
+    // casters and their masks stay bound as the main pass left them; the viewport is put back on
     // `colour`, the scissor as it was (a screen tile's: only its pixels are marked).
     glm::ivec2 trace(const gl::Texture& colour, const gl::Texture& depth, const RayTraceInputs& in,
                      bool compact);
