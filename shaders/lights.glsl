@@ -35,6 +35,15 @@ layout(binding = 9) uniform highp isampler2D uLightLists;
 layout(location = 0) uniform int uTileShift;  // log2 of a tile's side in pixels
 #endif
 
+// The direction from world position p to a light of type `type` (light_record.glsl): against
+// its direction for directional and area lights, whose rays are parallel, toward its position
+// for spot and point lights. The main pass's lighting and the shadow rays' pass take it alike.
+vec3 toLightFrom(LightRecord light, int type, vec3 p) {
+    if (type == kDirectional || type == kArea) return -normalize(light.direction);
+    vec3 d = light.position - p;
+    return d / length(d);
+}
+
 // This fragment's range of the light order: its unshadowed lights start at `first`, and its
 // unshadowed, map, cube and cascaded lights end at `ends`.
 struct LightRange {

@@ -132,23 +132,19 @@ void lightAt(LightRecord light, int kind, out vec3 toLight, out float falloff) {
     int type = kind == kAnyKind ? light.type : kind;
     falloff = 1.0;
     vec3 c = light.attenuation;
-    if (type == kDirectional) {
-        toLight = -normalize(light.direction);
-    } else if (type == kArea) {
-        // Parallel rays; falloff with the distance from the light's plane (Hessian normal
-        // form: n.p + d, with d = -n.p0 for the plane through the light).
+    toLight = toLightFrom(light, type, vIn.wsPosition);
+    if (type == kArea) {
+        // Falloff with the distance from the light's plane (Hessian normal form: n.p + d,
+        // with d = -n.p0 for the plane through the light).
         vec3 n = normalize(light.direction);
-        toLight = -n;
 #ifdef CONSTANT_FALLOFF
         falloff = 1.0 / max(c.x, 1e-6);
 #else
         float dist = abs(dot(n, vIn.wsPosition - light.position));
         falloff = 1.0 / max(c.x + c.y * dist + c.z * dist * dist, 1e-6);
 #endif
-    } else {
-        vec3 d = light.position - vIn.wsPosition;
-        float dist = length(d);
-        toLight = d / dist;
+    } else if (type != kDirectional) {
+        float dist = length(light.position - vIn.wsPosition);
 #ifdef CONSTANT_FALLOFF
         falloff = 1.0 / max(c.x, 1e-6);
 #else
@@ -381,9 +377,7 @@ Receiver receiverOf(vec3 n, vec3 planeNormal) {
 #ifdef FLOOR
 vec3 floorDiffuse(LightRecord light, int kind, vec3 n, out vec3 toLight) {
     int type = kind == kAnyKind ? light.type : kind;
-    toLight = type == kDirectional || type == kArea
-                  ? -normalize(light.direction)
-                  : normalize(light.position - vIn.wsPosition);
+    toLight = toLightFrom(light, type, vIn.wsPosition);
     return light.colour * max(dot(n, toLight), 0.0);
 }
 

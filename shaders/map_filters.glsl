@@ -78,17 +78,15 @@ float gatherPcf(MapTap m, TapPlane plane) {
             vec4 d = GATHER_LAYER(uShadowDepths, vec2(kx, ky), texelUv, m.layer);
             vec2 o = vec2(kx, ky) - s;
             vec4 capped = dot(g, o) + vec4(g.y, g.x + g.y, g.x, 0.0);
-            vec4 along = planeAlong4(capped,
-                                     dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0),
-                                     kPlaneMaxApproach);
+            vec4 onPlane = dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0);
+            vec4 along = planeAlong4(capped, onPlane, kPlaneMaxApproach);
             vec4 refs = m.reference + along - plane.spread;
             vec4 w = vec4(wx.x * wy.y, wx.y * wy.y, wx.y * wy.x, wx.x * wy.x);
             vec4 lit = step(refs, d);
             sum += dot(lit, w);
             downhillShadow += dot(step(0.0, capped), 1.0 - lit);
 #if defined(SHADOW_RAYS_UNCERTAIN)
-            vec4 exact = m.reference + dot(full, o) + vec4(full.y, full.x + full.y, full.x, 0.0) -
-                         kExactSpread * plane.spread;
+            vec4 exact = m.reference + onPlane - kExactSpread * plane.spread;  // exactReference
             inBand += dot(lit, 1.0 - step(exact, d));
 #endif
         }

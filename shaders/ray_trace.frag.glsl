@@ -31,11 +31,7 @@ void main() {
         uint record = (job.w >> uint(shift)) & kRayRecordBits;
         if (record != kNoRayRecord) {
             LightRecord light = lights[record];
-            vec3 toLight = -normalize(light.direction);
-            if (light.type != kDirectional && light.type != kArea) {
-                vec3 d = light.position - r.position;
-                toLight = d / length(d);  // as main.frag.glsl's lightAt
-            }
+            vec3 toLight = toLightFrom(light, light.type, r.position);
             if (rayVisibility(light, r, toLight).visibility > 0.5)
                 result |= kRayLitBit << uint(shift);
         }

@@ -109,9 +109,9 @@ void RayMarks::prepare(const gl::Texture& colour, const gl::Texture& depth) {
     }
 }
 
-// The share of the pixels marked from which the rays' own pass pays on llvmpipe (measured:
-// tutorial-room marks 0.7 % and traces faster in the second draw; glmark2's scene marks 2.5 %
-// and Sponza's atrium 5.6 %, faster in the pass).
+// The share of the pixels marked from which the rays' own pass pays on llvmpipe: below it, the
+// jobs' stores and the numbering's passes cost more than the second draw's idle lanes (the
+// frames that set it are in docs/techniques/shadow-maps.md).
 constexpr double kCompactShare = 0.01;
 
 bool RayMarks::compacts() {

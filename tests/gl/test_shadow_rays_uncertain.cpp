@@ -110,8 +110,9 @@ TEST(ShadowRaysUncertain, PaintsTheRaysWhereTheMapIsUnsure) {
 
 // The rays run in a pass of their own when a frame marks many pixels and in the second draw
 // when it marks few (RayMarks::compacts): the same picture either way. A new output size
-// starts with the pass (no count yet); tutorial-room marks under 1 % of its pixels at this
-// size, so on OpenGL 4.5, which counts them, its next frame traces in the second draw.
+// starts with the pass (no count yet); tutorial-room marks too few of its pixels for the pass
+// (RayMarks' kCompactShare), so on OpenGL 4.5, which counts them, its next frame traces in
+// the second draw.
 TEST(ShadowRaysUncertain, EitherWayTheRaysRunPaintsTheSame) {
     const Scene s = builtinScene("tutorial-room");
     const RenderOptions o = uncertain(s, 500);
