@@ -174,23 +174,26 @@ void RayMarks::mark(const gl::Texture& colour, const gl::Texture& depth) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-// The pyramid, level by level: each into its column of mPyramid, of mPyramidRead (which the
-// rays' pass reads while it writes its answers under the pyramid in mPyramid) and of a copy,
-// read by the next level from the other copy. `marked`: x0, y0, x1, y1 of the pixels this draw
-// marked.
+// The pyramid: level one, then the levels above in groups of up to four (a texel of the
+// fourth sums 256 of the level below the group), each group into its columns of mPyramid, of
+// mPyramidRead (which the rays' pass reads while it writes its answers under the pyramid in
+// mPyramid) and of a copy, read by the next group from the other copy. `marked`: x0, y0, x1,
+// y1 of the pixels this draw marked.
 void RayMarks::number(const gl::Texture& colour, glm::ivec4 marked) {
-    int column = 0;
-    for (int level = 1; level <= mLevelCount; ++level) {
-        const int side = mSide >> level;
-        const int below = level == 1 ? 0 : column - (mSide >> (level - 1));
-        glBindFramebuffer(GL_FRAMEBUFFER, mLevels[std::size_t(level & 1)].id());
-        glViewport(column, 0, side, side);
-        gl::use(level == 1 ? mLevelOne : mLevelAbove);
-        bindRaw(14, level == 1 ? colour : mCopies[std::size_t((level - 1) & 1)]);
-        gl::uniform(0, glm::ivec4(column, below, level - 1, 0));
+    constexpr int kGroup = 4;
+    int below = 0;  // the level the last pass drew (0: none yet)
+    for (std::size_t pass = 0; below < mLevelCount; ++pass) {
+        const int first = below + 1, last = below == 0 ? 1 : std::min(below + kGroup, mLevelCount);
+        const int column = mSide - (mSide >> (first - 1));
+        const int width = (mSide >> (first - 1)) - (mSide >> last);  // columns of first..last
+        glBindFramebuffer(GL_FRAMEBUFFER, mLevels[pass & 1].id());
+        glViewport(column, 0, width, mSide >> first);
+        gl::use(below == 0 ? mLevelOne : mLevelAbove);
+        bindRaw(14, below == 0 ? colour : mCopies[(pass - 1) & 1]);
+        gl::uniform(0, glm::ivec4(first, last, below, mSide));
         gl::uniform(1, marked);
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        column += side;
+        below = last;
     }
 }
 
