@@ -133,10 +133,12 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, i
     float stackEnter[kBvhStack];
     int top = 0;
     int first = int(lo.w), info = int(hi.w);
+    // While-while (Aila and Laine, "Understanding the Efficiency of Ray Traversal on GPUs",
+    // 2009): down through inner nodes until the ray reaches a leaf, then that leaf's
+    // triangles, so the lanes of a vector run each loop together instead of the two branches
+    // of one loop in turn. The order of nodes is the front-to-back one all the same.
     for (;;) {
-        int count = info >> 1;
-        bool descended = false;
-        if (count == 0) {
+        while ((info >> 1) == 0) {
             vec4 lo0 = bvhTexel(uBvhNodes, 2 * first), hi0 = bvhTexel(uBvhNodes, 2 * first + 1);
             vec4 lo1 = bvhTexel(uBvhNodes, 2 * first + 2);
             vec4 hi1 = bvhTexel(uBvhNodes, 2 * first + 3);
@@ -150,30 +152,34 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, i
                 top = min(top + 1, kBvhStack - 1);
                 first = int(secondNearer ? lo1.w : lo0.w);
                 info = int(secondNearer ? hi1.w : hi0.w);
-                descended = true;
             } else if (e0 >= 0.0 || e1 >= 0.0) {
                 first = int(e0 >= 0.0 ? lo0.w : lo1.w);
                 info = int(e0 >= 0.0 ? hi0.w : hi1.w);
-                descended = true;
-            }
-        } else {
-            for (int i = first; i < first + count; ++i) {
-                // Its three texels read once: the flags ride in the third.
-                vec4 c0 = bvhTexel(uBvhTriangles, 3 * i), c1 = bvhTexel(uBvhTriangles, 3 * i + 1);
-                vec4 c2 = bvhTexel(uBvhTriangles, 3 * i + 2);
-                int flags = int(c2.w);
-                if ((anyCaster && (flags & 1) == 0) || i == skip) continue;
-                vec3 bary;
-                float t = bvhHitTriangle(r, c0.xyz, c1.xyz, c2.xyz, tnear, tfar, bary);
-                if (t < 0.0) continue;
-                if (anyCaster && (flags & 2) != 0 && !bvhTexelBlocks(i, bary)) continue;
-                best = t;
-                tfar = t;
-                hit = i;
-                if (anyCaster) return best;
+            } else {
+                do {  // the next deferred node the ray may still meet before its end
+                    if (top == 0) return best;
+                    --top;
+                } while (stackEnter[top] > tfar * kBvhWiden);
+                first = stackFirst[top];
+                info = stackInfo[top];
             }
         }
-        if (descended) continue;
+        int count = info >> 1;
+        for (int i = first; i < first + count; ++i) {
+            // Its three texels read once: the flags ride in the third.
+            vec4 c0 = bvhTexel(uBvhTriangles, 3 * i), c1 = bvhTexel(uBvhTriangles, 3 * i + 1);
+            vec4 c2 = bvhTexel(uBvhTriangles, 3 * i + 2);
+            int flags = int(c2.w);
+            if ((anyCaster && (flags & 1) == 0) || i == skip) continue;
+            vec3 bary;
+            float t = bvhHitTriangle(r, c0.xyz, c1.xyz, c2.xyz, tnear, tfar, bary);
+            if (t < 0.0) continue;
+            if (anyCaster && (flags & 2) != 0 && !bvhTexelBlocks(i, bary)) continue;
+            best = t;
+            tfar = t;
+            hit = i;
+            if (anyCaster) return best;
+        }
         // The next deferred node the ray may still meet before its (shrunk) end.
         do {
             if (top == 0) return best;
