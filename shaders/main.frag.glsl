@@ -35,7 +35,7 @@ in VertexOut {
     vec2 uv;
     flat vec3 alpha;
 #endif
-#ifdef VISIBILITY_PASS
+#if defined(VISIBILITY_PASS) || defined(SHADOW_RAYS)
     flat float object;  // the scene object's index
 #endif
 #ifdef STAND_IN_LIFT
@@ -370,6 +370,12 @@ Receiver receiverOf(vec3 n, vec3 planeNormal) {
     r.standInError = vIn.standInError;
 #else
     r.standInError = 0.0;
+#endif
+    r.pixel = gl_FragCoord.xy;
+#ifdef SHADOW_RAYS
+    r.object = vIn.object;
+#else
+    r.object = -1.0;
 #endif
     return r;
 }

@@ -26,8 +26,9 @@ out VertexOut {
     vec2 uv;
     flat vec3 alpha;  // alpha factor, alpha mode (0 opaque, 1 mask, 2 blend), cutoff
 #endif
-#ifdef VISIBILITY_PASS
-    flat float object;  // the scene object's index, recorded beside the lights' visibility
+#if defined(VISIBILITY_PASS) || defined(SHADOW_RAYS)
+    flat float object;  // the scene object's index: recorded beside the lights' visibility, and
+                        // the one a shadow ray's start looks for (shadow_rays.glsl)
 #endif
 #ifdef STAND_IN_LIFT
     flat float standInError;  // world units (shadow_lookup.glsl)
@@ -49,7 +50,7 @@ void main() {
     vOut.uv = materialUv(o, msUv);
     vOut.alpha = vec3(o.baseColour.a, o.flags.y, o.flags.z);
 #endif
-#ifdef VISIBILITY_PASS
+#if defined(VISIBILITY_PASS) || defined(SHADOW_RAYS)
     vOut.object = float(OBJECT_INDEX);
 #endif
 #ifdef STAND_IN_LIFT

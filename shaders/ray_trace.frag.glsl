@@ -21,10 +21,13 @@ void main() {
     uvec4 job = texelFetch(uRayJobs, ivec3(p, 0), 0);
     Receiver r;
     r.position = uintBitsToFloat(job.xyz);
-    r.normal = uintBitsToFloat(texelFetch(uRayJobs, ivec3(p, 1), 0).xyz);
+    uvec4 normal = texelFetch(uRayJobs, ivec3(p, 1), 0);
+    r.normal = uintBitsToFloat(normal.xyz);
     r.planeNormal = r.normal;
     r.viewDepth = 0.0;
     r.standInError = 0.0;
+    r.pixel = vec2(p) + 0.5;
+    r.object = float(normal.w);
     uint result = job.w;
     for (int slot = 0; slot < 2; ++slot) {
         int shift = 16 * slot;

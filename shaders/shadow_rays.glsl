@@ -42,21 +42,71 @@ float rayMargin(vec3 p) {
     return kRayMarginOfScale * uRayScale + kRayMarginOfPosition * length(p);
 }
 
-// The start at `r` with normal `n`; near edge-on to `wsToLight`, on the triangle the camera's
-// ray meets at the point, as the reference's does (found by a short stretch of that ray around
-// the point), where the hierarchy holds one there (not under a receiver that casts no shadow).
-RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight) {
+// The camera as the reference casts each pixel's ray (render::PixelRayCamera): its eye and
+// axes, its lens (perspective: tan(fovy / 2), aspect; orthographic: right - left, right +
+// left, top - bottom, top + bottom), and the frame's width, height, a pixel's size at depth 1
+// and whether orthographic. The reference's own operations in its order (truth::Reference),
+// for a pixel's centre can lie 1e-5 pixels from an edge.
+layout(location = 18) uniform vec3 uCameraEye;
+layout(location = 19) uniform vec3 uCameraRight;
+layout(location = 20) uniform vec3 uCameraUp;
+layout(location = 21) uniform vec3 uCameraAhead;
+layout(location = 22) uniform vec4 uCameraLens;
+layout(location = 23) uniform vec4 uCameraFrame;
+
+// The ray through the centre of window pixel `pixel` (GL's rows, bottom first).
+void pixelRay(vec2 pixel, out vec3 from, out vec3 dir) {
+    float nx = pixel.x / uCameraFrame.x * 2.0 - 1.0;
+    float ny = 1.0 - (uCameraFrame.y - pixel.y) / uCameraFrame.y * 2.0;
+    vec4 l = uCameraLens;
+    if (uCameraFrame.w > 0.5) {
+        from = uCameraEye + uCameraRight * (0.5 * (nx * l.x + l.y)) +
+               uCameraUp * (0.5 * (ny * l.z + l.w));
+        dir = uCameraAhead;
+    } else {
+        vec3 d = uCameraAhead + uCameraRight * (nx * l.x * l.y) + uCameraUp * (ny * l.x);
+        from = uCameraEye;
+        dir = d / length(d);
+    }
+}
+
+// The world size of a pixel at `p`.
+float pixelWorld(vec3 p) {
+    return uCameraFrame.z *
+           (uCameraFrame.w > 0.5 ? 1.0 : max(dot(p - uCameraEye, uCameraAhead), 0.0));
+}
+
+// The start at `r` with normal `n`. On the triangle of the hierarchy that a ray meets near the
+// point, where there is one (not under a receiver that casts no shadow): near edge-on to
+// `wsToLight`, the camera's ray through the point, as the reference's start lies on its own
+// triangle (found by a short stretch of that ray around the point); with `ofPixel`, the pixel's
+// own ray, as the reference casts it, on the object the raster drew: the raster rounds a
+// triangle's corners to 1/256 pixel, so a pixel whose centre lies that close to an edge can
+// show the triangle beyond it (rayVisibility says when to ask).
+RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight, bool ofPixel) {
     RayStart s = RayStart(r.position, n, 2.0 * rayMargin(r.position), -1);
-    if (abs(dot(n, wsToLight)) < kOwnTriangleCosine) {
+    if (ofPixel || abs(dot(n, wsToLight)) < kOwnTriangleCosine) {
         float h = 64.0 * s.margin;
-        vec3 view = normalize(r.position - uEye);
+        vec3 from, view;
+        float t0 = 0.0, t1 = 2.0 * h;
+        if (ofPixel) {
+            pixelRay(r.pixel, from, view);
+            float along = dot(r.position - from, view);
+            t0 = max(along - h, 0.0);
+            t1 = along + h;
+        } else {
+            view = normalize(r.position - uEye);
+            from = s.point - h * view;
+        }
         int tri;
-        if (bvhTrace(s.point - h * view, view, 0.0, 2.0 * h, false, -1, tri) >= 0.0) {
+        float t = bvhTrace(from, view, t0, t1, false, -1, tri);
+        if (t >= 0.0 && (!ofPixel || int(bvhTexel(uBvhTriangles, 3 * tri).w) == int(r.object))) {
             vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz;
             vec3 g = cross(bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - a,
                            bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - a);
             if (length(g) > 0.0) {
                 s.normal = normalize(g);
+                if (ofPixel) s.point = from + t * view;
                 s.point -= dot(s.point - a, s.normal) * s.normal;
                 s.triangle = tri;
                 s.margin = rayMargin(s.point);
@@ -83,32 +133,45 @@ vec3 rayNormal(Receiver r) {
     return length(cross(r.planeNormal, r.normal)) < kFlatFaceSine ? r.normal : r.planeNormal;
 }
 
-// The light's visibility at `r` along `wsToLight` (lightAt's direction): 0 when a caster lies
-// between. Directional lights reach from infinitely far; area lights, parallel as they light,
-// from their plane; spot and point lights from their position.
-ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
-    ShadowSample result = kLitSample;
-    result.traced = true;
-    RayStart start = rayStart(r, rayNormal(r), wsToLight);
-    if (dot(start.normal, wsToLight) <= kRayEdgeOn) {
-        result.visibility = 0.0;
-        return result;
-    }
-    vec3 origin = start.point;
-    vec3 dir = wsToLight;
+// Where the shadow ray from `s` towards `light` first meets a caster (-1: it reaches the
+// light; 0: the start faces away). Directional lights reach from infinitely far; area lights,
+// parallel as they light, from their plane; spot and point lights from their position.
+// `dir`: the ray's direction.
+float rayFrom(RayStart s, LightRecord light, vec3 wsToLight, out vec3 dir) {
+    dir = wsToLight;
+    if (dot(s.normal, wsToLight) <= kRayEdgeOn) return 0.0;
     float reach = 1e30;
     if (light.type == kArea) {
-        reach = dot(origin - light.position, normalize(light.direction));
+        reach = dot(s.point - light.position, normalize(light.direction));
     } else if (light.type != kDirectional) {
-        vec3 d = light.position - origin;
+        vec3 d = light.position - s.point;
         reach = length(d);
         dir = d / reach;
     }
-    float lead = rayLead(start, dir);
-    if (!(reach > lead)) return result;  // the light lies within the margin: nothing to cross
-    int hit;  // the ray leaves start.triangle: not a caster of its own point
-    result.visibility =
-        bvhTrace(origin, dir, lead, reach, true, start.triangle, hit) >= 0.0 ? 0.0 : 1.0;
+    float lead = rayLead(s, dir);
+    if (!(reach > lead)) return -1.0;  // the light lies within the margin: nothing to cross
+    int hit;  // the ray leaves s.triangle: not a caster of its own point
+    return bvhTrace(s.point, dir, lead, reach, true, s.triangle, hit);
+}
+
+// The light's visibility at `r` along `wsToLight` (lightAt's direction): 0 when a caster lies
+// between.
+ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
+    ShadowSample result = kLitSample;
+    result.traced = true;
+    RayStart start = rayStart(r, rayNormal(r), wsToLight, false);
+    vec3 dir;
+    float t = rayFrom(start, light, wsToLight, dir);
+    // Where the start faces away from the light, or a caster lies within 1/64 pixel of its
+    // plane, the raster's point may not lie on the triangle the pixel's own ray meets: its
+    // centre within the raster's rounding of an edge (the face beyond it drawn), or past the
+    // edge behind a neighbour (a concave crease). The pixel's own ray's triangle decides.
+    if (start.triangle < 0 && t >= 0.0 &&
+        (t == 0.0 || t * dot(start.normal, dir) < pixelWorld(start.point) / 64.0)) {
+        RayStart own = rayStart(r, rayNormal(r), wsToLight, true);
+        if (own.triangle >= 0) t = rayFrom(own, light, wsToLight, dir);
+    }
+    result.visibility = t >= 0.0 ? 0.0 : 1.0;
     return result;
 }
 
@@ -158,7 +221,7 @@ void noteRayJob(inout uint job, int record) {
 }
 #define WRITE_RAY_JOB(r, job)                                   \
     fRayJob = uvec4(floatBitsToUint(r.position), job);          \
-    fRayJobNormal = uvec4(floatBitsToUint(rayNormal(r)), 0u);
+    fRayJobNormal = uvec4(floatBitsToUint(rayNormal(r)), uint(r.object));
 #elif defined(SHADOW_RAYS_RESOLVE)
 #define RAY_JOB_START kRayJobUnread
 #include "ray_pyramid.glsl"

@@ -8,6 +8,8 @@ struct Receiver {
     vec3 planeNormal;    // RECEIVER_PLANE: the triangle's own plane (receiver_plane.glsl)
     float viewDepth;     // the depth along the view that picks a cascade
     float standInError;  // STAND_IN_LIFT: how far the object's stand-in strays (world units)
+    vec2 pixel;          // the pixel's centre (window coordinates)
+    float object;        // the scene object drawn there
 };
 
 // What one light's lookup found.

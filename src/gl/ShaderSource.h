@@ -32,7 +32,7 @@ inline constexpr int kObjectsPerRow = 64;
 // GLSL ES's uniform `uDrawBase` (scene_data.glsl): the first drawn item's object record.
 inline constexpr int kDrawBaseLocation = 14;
 // Fixed uniform locations a program may declare: 0 to kFixedLocations - 1.
-inline constexpr int kFixedLocations = 18;
+inline constexpr int kFixedLocations = 24;
 
 struct Dialect {
     Api api = Api::Gl45;

@@ -184,7 +184,10 @@ void MainPass::useProgram(const gl::Program& p, const FrameUniforms& u) {
     }
     if (u.in->shadowMoments) gl::uniform(12, u.lightBleed);
     if (u.recordLight >= 0) gl::uniform(15, u.recordLight);
-    if (u.in->rays) gl::uniform(16, u.in->rays->scale());
+    if (u.in->rays) {
+        gl::uniform(16, u.in->rays->scale());
+        setPixelRayUniforms(u.in->pixelRays);
+    }
     if (u.rayPyramid.x > 0) gl::uniform(17, u.rayPyramid);
 }
 
@@ -315,9 +318,9 @@ void MainPass::drawShaded(const GpuScene& scene, const RenderOptions& options,
     if (compact) mRayMarks.bindFirstDraw();
     drawItems(scene, options, u, false, floor, Items::Opaque, RayDraw::Mark);
     FrameUniforms second = u;
-    second.rayPyramid =
-        mRayMarks.trace(*in.targetColour, *in.targetDepth,
-                        {u.eye, in.rays->scale(), mMaxLights, mOrderCapacity / 4}, compact);
+    second.rayPyramid = mRayMarks.trace(
+        *in.targetColour, *in.targetDepth,
+        {u.eye, in.rays->scale(), mMaxLights, mOrderCapacity / 4, in.pixelRays}, compact);
     scene.bind();
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);

@@ -26,6 +26,7 @@ class VisibilityTarget;
 struct MainPassInputs {
     glm::mat4 viewFromWorld{1.0f};
     glm::mat4 clipFromView{1.0f};
+    PixelRayCamera pixelRays;  // shadow rays: each pixel's own ray (shadow_rays.glsl)
     // With cascades: the view depth that picks one, as a row on world positions (the depth
     // along the camera the cascades were fitted to; see main.frag.glsl).
     glm::vec4 cascadeDepth{0.0f};

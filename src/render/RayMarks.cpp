@@ -1,11 +1,13 @@
 #include "render/RayMarks.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "gl/Caps.h"
 #include "gl/Program.h"
 #include "gnomon/Error.h"
+#include "scene/CameraMath.h"
 
 namespace gnomon::render {
 
@@ -40,6 +42,38 @@ void require(const gl::Texture& t, const char* what, long long bytes) {
 }
 
 }  // namespace
+
+PixelRayCamera pixelRayCamera(const Camera& camera, int width, int height) {
+    PixelRayCamera c;
+    const glm::mat4 view = viewFromWorld(camera);
+    c.eye = camera.eye;
+    c.right = glm::vec3(view[0][0], view[1][0], view[2][0]);
+    c.up = glm::vec3(view[0][1], view[1][1], view[2][1]);
+    c.ahead = -glm::vec3(view[0][2], view[1][2], view[2][2]);
+    const bool ortho = camera.projection == Projection::Orthographic;
+    const float tanHalf = std::tan(0.5f * glm::radians(camera.fovyDegrees));
+    if (ortho) {
+        c.lens = glm::vec4(camera.right - camera.left, camera.right + camera.left,
+                           camera.top - camera.bottom, camera.top + camera.bottom);
+    } else {
+        c.lens =
+            glm::vec4(tanHalf, camera.aspect > 0.0f ? camera.aspect : float(width) / float(height),
+                      0.0f, 0.0f);
+    }
+    const float pixelAtUnit =
+        ortho ? (camera.top - camera.bottom) / float(height) : 2.0f * tanHalf / float(height);
+    c.frame = glm::vec4(float(width), float(height), pixelAtUnit, ortho ? 1.0f : 0.0f);
+    return c;
+}
+
+void setPixelRayUniforms(const PixelRayCamera& c) {
+    gl::uniform(18, c.eye);
+    gl::uniform(19, c.right);
+    gl::uniform(20, c.up);
+    gl::uniform(21, c.ahead);
+    gl::uniform(22, c.lens);
+    gl::uniform(23, c.frame);
+}
 
 void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mWidth = colour.width();
@@ -226,6 +260,7 @@ glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
     gl::uniform(5, in.eye);
     gl::uniform(16, in.rayScale);
     gl::uniform(17, numbering);
+    setPixelRayUniforms(in.pixelRays);
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 
     if (scissor) glEnable(GL_SCISSOR_TEST);

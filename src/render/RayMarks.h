@@ -19,15 +19,29 @@
 #include <glm/glm.hpp>
 
 #include "gl/Objects.h"
+#include "gnomon/Scene.h"
 
 namespace gnomon::render {
 
-// What the rays' pass shares with the main pass: its eye and rays' margin (shadow_rays.glsl)
-// and the size of its light records' blocks (lights.glsl).
+// The camera as the reference casts each pixel's ray (truth::Reference; shadow_rays.glsl's
+// pixelRay, uniforms 18 to 23): its eye, the view's axes (rows of viewFromWorld), its lens
+// (perspective: tan(fovy / 2) and aspect; orthographic: right - left, right + left, top -
+// bottom, top + bottom) and the frame (width, height, a pixel's size at depth 1, orthographic).
+struct PixelRayCamera {
+    glm::vec3 eye{0.0f}, right{1.0f, 0.0f, 0.0f}, up{0.0f, 1.0f, 0.0f}, ahead{0.0f, 0.0f, -1.0f};
+    glm::vec4 lens{1.0f, 1.0f, 0.0f, 0.0f};
+    glm::vec4 frame{1.0f, 1.0f, 0.0f, 0.0f};
+};
+PixelRayCamera pixelRayCamera(const Camera& camera, int width, int height);
+void setPixelRayUniforms(const PixelRayCamera& c);
+
+// What the rays' pass shares with the main pass: its eye, rays' margin and pixel rays
+// (shadow_rays.glsl) and the size of its light records' blocks (lights.glsl).
 struct RayTraceInputs {
     glm::vec3 eye{0.0f};
     float rayScale = 0.0f;
     int maxLights = 0, orderSlots = 0;
+    PixelRayCamera pixelRays;
 };
 
 class RayMarks {

@@ -244,6 +244,7 @@ struct Renderer::Impl {
         stats.mainFromViewDepth = in.depthReady;
         in.viewFromWorld = viewFromWorld;
         in.clipFromView = gnomon::clipFromView(view, aspect);
+        in.pixelRays = render::pixelRayCamera(view, options.width, options.height);
         const glm::mat4 fitView = fitCamera ? gnomon::viewFromWorld(*fitCamera) : viewFromWorld;
         in.cascadeDepth = -glm::vec4(fitView[0][2], fitView[1][2], fitView[2][2], fitView[3][2]);
         in.ambient = s.ambient;
