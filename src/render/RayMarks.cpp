@@ -1,7 +1,6 @@
 #include "render/RayMarks.h"
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 
 #include "gl/Caps.h"
@@ -44,25 +43,16 @@ void require(const gl::Texture& t, const char* what, long long bytes) {
 }  // namespace
 
 PixelRayCamera pixelRayCamera(const Camera& camera, int width, int height) {
+    const PixelRayTerms t = pixelRayTerms(camera, width, height);
     PixelRayCamera c;
-    const glm::mat4 view = viewFromWorld(camera);
     c.eye = camera.eye;
-    c.right = glm::vec3(view[0][0], view[1][0], view[2][0]);
-    c.up = glm::vec3(view[0][1], view[1][1], view[2][1]);
-    c.ahead = -glm::vec3(view[0][2], view[1][2], view[2][2]);
-    const bool ortho = camera.projection == Projection::Orthographic;
-    const float tanHalf = std::tan(0.5f * glm::radians(camera.fovyDegrees));
-    if (ortho) {
-        c.lens = glm::vec4(camera.right - camera.left, camera.right + camera.left,
-                           camera.top - camera.bottom, camera.top + camera.bottom);
-    } else {
-        c.lens =
-            glm::vec4(tanHalf, camera.aspect > 0.0f ? camera.aspect : float(width) / float(height),
-                      0.0f, 0.0f);
-    }
-    const float pixelAtUnit =
-        ortho ? (camera.top - camera.bottom) / float(height) : 2.0f * tanHalf / float(height);
-    c.frame = glm::vec4(float(width), float(height), pixelAtUnit, ortho ? 1.0f : 0.0f);
+    c.right = t.right;
+    c.up = t.up;
+    c.ahead = t.ahead;
+    c.lens = t.ortho ? glm::vec4(camera.right - camera.left, camera.right + camera.left,
+                                 camera.top - camera.bottom, camera.top + camera.bottom)
+                     : glm::vec4(t.tanHalf, t.viewAspect, 0.0f, 0.0f);
+    c.frame = glm::vec4(float(width), float(height), t.pixelAtUnit, t.ortho ? 1.0f : 0.0f);
     return c;
 }
 

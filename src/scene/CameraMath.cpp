@@ -1,5 +1,7 @@
 #include "scene/CameraMath.h"
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace gnomon {
@@ -29,6 +31,20 @@ glm::mat4 clipFromView(const Camera& camera, float aspect) {
                           camera.far);
     }
     return glm::perspective(glm::radians(camera.fovyDegrees), a, camera.near, camera.far);
+}
+
+PixelRayTerms pixelRayTerms(const Camera& camera, int width, int height) {
+    PixelRayTerms t;
+    const glm::mat4 view = viewFromWorld(camera);
+    t.right = glm::vec3(view[0][0], view[1][0], view[2][0]);
+    t.up = glm::vec3(view[0][1], view[1][1], view[2][1]);
+    t.ahead = -glm::vec3(view[0][2], view[1][2], view[2][2]);
+    t.viewAspect = camera.aspect > 0.0f ? camera.aspect : float(width) / float(height);
+    t.tanHalf = std::tan(0.5f * glm::radians(camera.fovyDegrees));
+    t.ortho = camera.projection == Projection::Orthographic;
+    t.pixelAtUnit =
+        t.ortho ? (camera.top - camera.bottom) / float(height) : 2.0f * t.tanHalf / float(height);
+    return t;
 }
 
 }  // namespace gnomon

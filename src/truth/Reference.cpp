@@ -183,22 +183,15 @@ ReferenceTrace::State::State(const Scene& s, const RenderOptions& options,
                   options.shadow.lightRadius},
       camera(scene.camera) {
     makeRelative(camera, rays->origin());
-    // Each pixel's ray from the view's own axes (the rows of the renderer's viewFromWorld) and
-    // its projection's terms, not by inverting the projection: with a glTF camera's near and
-    // far as far apart as 0.05 and 10^6 (assimp's 2CylinderEngine) that inverse keeps too few
-    // digits, its rays land a little off the pixels the raster samples, and thin parts meeting
-    // their shadows score wrong.
-    const glm::mat4 view = gnomon::viewFromWorld(camera);
-    right = glm::vec3(view[0][0], view[1][0], view[2][0]);
-    up = glm::vec3(view[0][1], view[1][1], view[2][1]);
-    ahead = -glm::vec3(view[0][2], view[1][2], view[2][2]);
-    const float aspect = float(width) / float(height);
-    viewAspect = camera.aspect > 0.0f ? camera.aspect : aspect;
-    tanHalf = std::tan(0.5f * glm::radians(camera.fovyDegrees));
-    ortho = scene.camera.projection == Projection::Orthographic;
-    pixelAtUnit =
-        ortho ? (scene.camera.top - scene.camera.bottom) / float(height)
-              : 2.0f * std::tan(0.5f * glm::radians(scene.camera.fovyDegrees)) / float(height);
+    // Each pixel's ray from the view's own axes and its projection's terms (pixelRayTerms).
+    const PixelRayTerms t = pixelRayTerms(camera, width, height);
+    right = t.right;
+    up = t.up;
+    ahead = t.ahead;
+    viewAspect = t.viewAspect;
+    tanHalf = t.tanHalf;
+    ortho = t.ortho;
+    pixelAtUnit = t.pixelAtUnit;
 }
 
 void ReferenceTrace::State::tracePixel(int x, int y) {
