@@ -107,6 +107,7 @@ struct Run {
     double mapsDrawn = 0.0, mapsWaiting = 0.0;  // a frame's, the median
     int momentPasses = 0;         // the moment filters' passes in the last frame measured
     int transmittancePasses = 0;  // coloured shadows' transmittance maps drawn, the same
+    double rayPasses = 0.0;       // --shadow-rays uncertain: rays' own passes a frame, the median
 };
 
 // Wall time of whole frames drawn without pass timing (maps redrawn unless --static).
@@ -131,7 +132,7 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
     Run run;
     renderer.setPassTiming(true);
     std::map<std::string, std::vector<double>> perPass;
-    std::vector<double> timedFrame, shadow, main, overFloor, drawn, waiting;
+    std::vector<double> timedFrame, shadow, main, overFloor, drawn, waiting, rayPasses;
     std::atomic<int> framesDone{0};
     const int total = args.warmup + args.frames;
     const Activity activity(label, [&] { return double(framesDone.load()) / double(total); });
@@ -169,11 +170,13 @@ Run measure(Renderer& renderer, const Scene& scene, const RenderOptions& options
         waiting.push_back(double(stats.shadowMapsWaiting));
         run.momentPasses = stats.momentPasses;
         run.transmittancePasses = stats.transmittancePasses;
+        rayPasses.push_back(double(stats.shadowRayPasses));
     }
     for (PassResult& p : run.passes)
         p.ms = spreadOf(perPass[p.name]);
     run.timedFrame = spreadOf(timedFrame);
     run.mapsDrawn = spreadOf(drawn).median;
+    run.rayPasses = spreadOf(rayPasses).median;
     run.mapsWaiting = spreadOf(waiting).median;
     run.shadow = spreadOf(shadow);
     run.main = spreadOf(main);
@@ -233,6 +236,7 @@ nlohmann::json runJson(const Run& r) {
             {"shadow_map_bytes", r.shadowBytes},
             {"moment_passes", r.momentPasses},
             {"transmittance_passes", r.transmittancePasses},
+            {"shadow_ray_passes", r.rayPasses},
             {"shadow_triangles", r.shadowTriangles},
             {"main_triangles", r.mainTriangles},
             {"passes", passes}};
@@ -271,6 +275,7 @@ void printRun(const Run& r) {
     if (r.transmittancePasses > 0) {
         std::printf(", %d transmittance pass(es) a frame", r.transmittancePasses);
     }
+    if (r.rayPasses > 0.0) std::printf(", %.0f shadow-ray pass(es) a frame", r.rayPasses);
     std::printf("\n");
 }
 

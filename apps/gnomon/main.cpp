@@ -159,6 +159,12 @@ int runRender(const RenderArgs& args, bool verbose) {
             std::fprintf(stderr, "gnomon: %d moment pass(es) for the filterable maps\n",
                          stats.momentPasses);
         }
+        if (stats.shadowRayPasses > 0) {
+            std::fprintf(stderr,
+                         "gnomon: shadow rays traced in %d pass(es) of their own, between the "
+                         "main pass's two draws\n",
+                         stats.shadowRayPasses);
+        }
         if (stats.transmittancePasses > 0) {
             std::fprintf(stderr, "gnomon: %d transmittance pass(es) for the coloured shadows\n",
                          stats.transmittancePasses);

@@ -67,6 +67,9 @@ struct FrameStats {
     int lightLists = 0;  // screen tiles whose lights one main-pass draw reads (0: no lists)
     // --shadow-rays all: the casters' BVH was built this frame (1), or kept (0: casters unchanged).
     int shadowRayBuilds = 0;
+    // --shadow-rays uncertain: draws whose marked pixels were traced in a pass of their own
+    // (0: the frame marked few, and the second draw traced them where they lie; or none).
+    int shadowRayPasses = 0;
     // The main pass started from the view depth pass's depth (depth-prepass): each pixel
     // shaded once.
     bool mainFromViewDepth = false;

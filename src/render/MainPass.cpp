@@ -315,6 +315,7 @@ void MainPass::drawShaded(const GpuScene& scene, const RenderOptions& options,
     GLint frame = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frame);
     const bool compact = mRayMarks.compacts();
+    mRayPasses += compact ? 1 : 0;
     if (compact) mRayMarks.bindFirstDraw();
     drawItems(scene, options, u, false, floor, Items::Opaque, RayDraw::Mark);
     FrameUniforms second = u;
@@ -355,6 +356,7 @@ void MainPass::recordVisibilityByLight(const GpuScene& scene, const RenderOption
 void MainPass::render(const GpuScene& scene, const MainPassInputs& in, const RenderOptions& options,
                       const VisibilityTarget* visibility, bool floor) {
     const TiledLights& tiled = *in.tiled;
+    mRayPasses = 0;
     uploadLights(*in.lights, tiled.order());
     // Before the maps: on ES a texture is made and written through the active unit's binding.
     if (raysApart(in, options, floor)) mRayMarks.prepare(*in.targetColour, *in.targetDepth);

@@ -82,6 +82,8 @@ public:
     int maxLights() const { return mMaxLights; }
     // Entries the light order holds (the uniform block's size allows).
     int orderCapacity() const { return mOrderCapacity; }
+    // Draws of the last render() whose shadow rays ran in a pass of their own (RayMarks.h).
+    int rayPasses() const { return mRayPasses; }
     // Draws with at most this many lights get a program whose light loops are written out
     // (main.frag.glsl, UNROLLED_LIGHTS); more would make a long program to build for each
     // count of each kind a frame or tile has (15 lights: 12 s to build mixed-lights' tiles).
@@ -137,6 +139,7 @@ private:
 
     std::map<std::uint64_t, gl::Program> mPrograms;  // by the variant's packed choices
     int mMaxLights = 0, mOrderCapacity = 4096;
+    int mRayPasses = 0;
     gl::Buffer mLights;  // sized for mMaxLights once; the used part is updated on change
     std::vector<GpuLight> mUploaded;
     gl::Buffer mOrder;  // the light order (mOrderCapacity entries), updated on change

@@ -306,6 +306,7 @@ struct Renderer::Impl {
             const bool srgb = options.shading.output == OutputEncoding::Srgb;
             if (srgb) gl::setSrgbWrites(true);
             mainPass.render(scene, in, options, scored ? &visibilityTarget : nullptr);
+            stats.shadowRayPasses = mainPass.rayPasses();
             lastMain = in;
             lastMainOptions = options;
             if (options.debugView == DebugView::LightFrusta) {

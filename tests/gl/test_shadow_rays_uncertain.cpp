@@ -8,6 +8,7 @@
 
 #include "GlTest.h"
 #include "RayTest.h"
+#include "gl/Caps.h"
 
 namespace gnomon::test {
 namespace {
@@ -118,7 +119,10 @@ TEST(ShadowRaysUncertain, EitherWayTheRaysRunPaintsTheSame) {
     const RenderOptions o = uncertain(s, 500);
     Renderer& renderer = sharedRenderer();
     const Image pass = renderer.render(s, o);
+    EXPECT_EQ(renderer.lastFrameStats().shadowRayPasses, 1);
     const Image second = renderer.render(s, o);
+    EXPECT_EQ(renderer.lastFrameStats().shadowRayPasses,
+              gl::activeCaps().api == gl::Api::Gl45 ? 0 : 1);
     bool opaque = false;
     EXPECT_EQ(differing(pass, second, opaque), 0);
     EXPECT_TRUE(opaque);
