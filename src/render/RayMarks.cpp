@@ -134,8 +134,8 @@ void RayMarks::prepare(const gl::Texture& colour, const gl::Texture& depth) {
 }
 
 // The share of the pixels marked from which the rays' own pass pays on llvmpipe: below it, the
-// jobs' stores and the numbering's passes cost more than the second draw's idle lanes (the
-// frames that set it are in docs/techniques/shadow-maps.md).
+// jobs' stores and the numbering's passes cost more than the second draw's idle lanes (near
+// it the two cost about the same: docs/techniques/shadow-maps.md).
 constexpr double kCompactShare = 0.01;
 
 bool RayMarks::compacts() {
