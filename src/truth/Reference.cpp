@@ -149,9 +149,7 @@ struct ReferenceTrace::State {
     // View rays in the rays' coordinates (ShadowRays::origin), from the camera moved there as
     // the renderer moves it (render/RelativeScene.h): the same view to the last bit.
     Camera camera;
-    glm::vec3 right{0.0f}, up{0.0f}, ahead{0.0f};
-    float viewAspect = 1.0f, tanHalf = 1.0f, pixelAtUnit = 0.0f;
-    bool ortho = false;
+    PixelRayTerms terms;  // each pixel's ray's terms (pixelRayTerms), from `camera`
     std::atomic<int> nextRow{0}, rowsDone{0};
 };
 
@@ -183,15 +181,7 @@ ReferenceTrace::State::State(const Scene& s, const RenderOptions& options,
                   options.shadow.lightRadius},
       camera(scene.camera) {
     makeRelative(camera, rays->origin());
-    // Each pixel's ray from the view's own axes and its projection's terms (pixelRayTerms).
-    const PixelRayTerms t = pixelRayTerms(camera, width, height);
-    right = t.right;
-    up = t.up;
-    ahead = t.ahead;
-    viewAspect = t.viewAspect;
-    tanHalf = t.tanHalf;
-    ortho = t.ortho;
-    pixelAtUnit = t.pixelAtUnit;
+    terms = pixelRayTerms(camera, width, height);
 }
 
 void ReferenceTrace::State::tracePixel(int x, int y) {
@@ -199,13 +189,16 @@ void ReferenceTrace::State::tracePixel(int x, int y) {
     const float ny = 1.0f - (float(y) + 0.5f) / float(height) * 2.0f;
     const glm::vec3 eye = camera.eye;
     // Between the near and far planes, as the raster clips.
-    glm::vec3 from = eye, dir = ahead;
+    glm::vec3 from = eye, dir = terms.ahead;
     float tnear = camera.near, tfar = camera.far;
-    if (ortho) {
-        from += right * (0.5f * (nx * (camera.right - camera.left) + camera.right + camera.left)) +
-                up * (0.5f * (ny * (camera.top - camera.bottom) + camera.top + camera.bottom));
+    if (terms.ortho) {
+        from +=
+            terms.right *
+                (0.5f * (nx * (camera.right - camera.left) + camera.right + camera.left)) +
+            terms.up * (0.5f * (ny * (camera.top - camera.bottom) + camera.top + camera.bottom));
     } else {
-        const glm::vec3 d = ahead + right * (nx * tanHalf * viewAspect) + up * (ny * tanHalf);
+        const glm::vec3 d = terms.ahead + terms.right * (nx * terms.tanHalf * terms.viewAspect) +
+                            terms.up * (ny * terms.tanHalf);
         const float length = glm::length(d);
         dir = d / length;
         tnear *= length;  // the planes lie at view depths near and far: t = depth x length
@@ -244,7 +237,8 @@ void ReferenceTrace::State::tracePixel(int x, int y) {
         const std::size_t pixel = std::size_t(y) * std::size_t(width) + std::size_t(x);
         ref.object[pixel] = o;
         ref.pixelWorld[pixel] =
-            pixelAtUnit * (ortho ? 1.0f : std::max(glm::dot(point - eye, ahead), 0.0f));
+            terms.pixelAtUnit *
+            (terms.ortho ? 1.0f : std::max(glm::dot(point - eye, terms.ahead), 0.0f));
         if (!obj.receivesShadows) return;
         ref.surfacePoint[pixel] = point;
         ref.surfaceNormal[pixel] = n;
