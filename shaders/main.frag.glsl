@@ -21,6 +21,10 @@
 // screen tile (lights.glsl). SHADOW_RAYS: each shadowed lookup is a ray through the casters'
 // BVH (shadow_rays.glsl); SHADOW_RAYS_MARK: maps' answers, alpha 0 and a ray job where rays
 // must decide; SHADOW_RAYS_RESOLVE: the answers of those rays (render/RayMarks.h).
+// RAYS_FROM_DRAWN: as main.vert.glsl defines it.
+#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN) && !defined(GNOMON_GLES)
+#define RAYS_FROM_DRAWN
+#endif
 #include "lights.glsl"
 #include "shadow_lookup.glsl"
 #include "contact_shadows.glsl"
@@ -37,6 +41,9 @@ in VertexOut {
 #endif
 #if defined(VISIBILITY_PASS) || defined(SHADOW_RAYS)
     flat float object;  // the scene object's index
+#endif
+#ifdef RAYS_FROM_DRAWN
+    flat int firstTriangle;
 #endif
 #ifdef STAND_IN_LIFT
     flat float standInError;
@@ -376,6 +383,11 @@ Receiver receiverOf(vec3 n, vec3 planeNormal) {
     r.object = vIn.object;
 #else
     r.object = -1.0;
+#endif
+#ifdef RAYS_FROM_DRAWN
+    r.drawn = vIn.firstTriangle + gl_PrimitiveID;
+#else
+    r.drawn = -1;
 #endif
     return r;
 }

@@ -3,6 +3,12 @@
 // looked up, and to clip space for the rasteriser. (Lighting in view space too would cost
 // two more interpolated vectors and a rotation per light.)
 #include "scene_data.glsl"
+// RAYS_FROM_DRAWN: --shadow-rays all on OpenGL 4.5 starts each ray on the triangle drawn
+// (render/DrawnTriangles.h, shadow_rays.glsl's rayStart). Not under uncertain, whose map
+// decides most pixels: its main pass measured slower for it (docs/techniques/shadow-maps.md).
+#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN) && !defined(GNOMON_GLES)
+#define RAYS_FROM_DRAWN
+#endif
 
 layout(location = 0) in vec3 msPosition;
 layout(location = 1) in vec3 msNormal;
@@ -30,6 +36,9 @@ out VertexOut {
     flat float object;  // the scene object's index: recorded beside the lights' visibility, and
                         // the one a shadow ray's start looks for (shadow_rays.glsl)
 #endif
+#ifdef RAYS_FROM_DRAWN
+    flat int firstTriangle;  // the draw's first triangle's number (render/DrawnTriangles.h)
+#endif
 #ifdef STAND_IN_LIFT
     flat float standInError;  // world units (shadow_lookup.glsl)
 #endif
@@ -52,6 +61,9 @@ void main() {
 #endif
 #if defined(VISIBILITY_PASS) || defined(SHADOW_RAYS)
     vOut.object = float(OBJECT_INDEX);
+#endif
+#ifdef RAYS_FROM_DRAWN
+    vOut.firstTriangle = int(aFirstTriangle);
 #endif
 #ifdef STAND_IN_LIFT
     // The object's stand-in error, model units to world units (at most: its largest scale).

@@ -28,6 +28,7 @@ void main() {
     r.standInError = 0.0;
     r.pixel = vec2(p) + 0.5;
     r.object = float(normal.w);
+    r.drawn = -1;  // uncertain's draws name no triangle (main.frag.glsl's RAYS_FROM_DRAWN)
     uint result = job.w;
     for (int slot = 0; slot < 2; ++slot) {
         int shift = 16 * slot;

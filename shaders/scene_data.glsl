@@ -59,6 +59,8 @@ layout(location = 14) uniform int uDrawBase;
 #else
 layout(location = 4) in uint aObject;
 #define OBJECT_INDEX aObject
+// The draw's first triangle's number (render/DrawnTriangles.h).
+layout(location = 5) in uint aFirstTriangle;
 #endif
 
 vec2 materialUv(ObjectData o, vec2 uv) {

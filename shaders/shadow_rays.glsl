@@ -30,11 +30,13 @@ const float kRayMarginOfPosition = 1e-6;
 const float kOwnTriangleCosine = 0.03;
 
 // Where a shadow ray leaves: the point, its normal on the side the camera sees, the margin
-// its lead follows, and the triangle it leaves (-1: not known).
+// its lead follows, the triangle it leaves (-1: not known) and whether that is the one the
+// main pass drew.
 struct RayStart {
     vec3 point, normal;
     float margin;
     int triangle;
+    bool drawn;
 };
 
 // The reference's margin at `p`.
@@ -70,43 +72,87 @@ void pixelRay(vec2 pixel, out vec3 from, out vec3 dir) {
     }
 }
 
+// The hierarchy's triangle the main pass drew as triangle `drawn` (render/DrawnTriangles.h),
+// from render::RayScene's start table (four to a texel, as floats); -1 where it is none (no
+// caster, not known). WebGL2 knows no drawn triangle.
+#ifndef GNOMON_GLES
+layout(binding = 16) uniform highp sampler2D uRayStarts;
+#endif
+int rayStartTriangle(int drawn) {
+#ifdef GNOMON_GLES
+    return -1;
+#else
+    if (drawn < 0 || textureSize(uRayStarts, 0).x < 2) return -1;
+    vec4 four = bvhTexel(uRayStarts, drawn >> 2);
+    int c = drawn & 3;
+    return int(c == 0 ? four.x : c == 1 ? four.y : c == 2 ? four.z : four.w);
+#endif
+}
+
 // The world size of a pixel at `p`.
 float pixelWorld(vec3 p) {
     return uCameraFrame.z *
            (uCameraFrame.w > 0.5 ? 1.0 : max(dot(p - uCameraEye, uCameraAhead), 0.0));
 }
 
-// The start at `r` with normal `n`. On the triangle of the hierarchy that a ray meets near the
-// point, where there is one (not under a receiver that casts no shadow): near edge-on to
-// `wsToLight`, the camera's ray through the point, as the reference's start lies on its own
-// triangle (found by a short stretch of that ray around the point); with `ofPixel`, the pixel's
-// own ray, as the reference casts it, on the object the raster drew: the raster rounds a
-// triangle's corners to 1/256 pixel, so a pixel whose centre lies that close to an edge can
-// show the triangle beyond it (rayVisibility says when to ask).
+// The start on triangle `tri` where the pixel's own ray meets it, as the reference's start
+// (its point from the corners, its plane's normal); false where the ray passes beside it.
+bool rayStartOn(inout RayStart s, vec2 pixel, int tri) {
+    vec3 from, view, bary;
+    pixelRay(pixel, from, view);
+    vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz, b = bvhTexel(uBvhTriangles, 3 * tri + 1).xyz;
+    vec3 c = bvhTexel(uBvhTriangles, 3 * tri + 2).xyz;
+    vec3 g = cross(b - a, c - a);
+    if (bvhHitTriangle(bvhFrame(from, view), a, b, c, 0.0, 3.4e38, bary) < 0.0 ||
+        !(length(g) > 0.0))
+        return false;
+    s.point = bary.x * a + bary.y * b + bary.z * c;
+    s.normal = normalize(g);
+    s.margin = rayMargin(s.point);
+    s.triangle = tri;
+    s.drawn = true;
+    return true;
+}
+
+// The start at `r` with normal `n`. On the triangle of the hierarchy that the pixel's ray
+// meets, where there is one (not under a receiver that casts no shadow). Where the main pass
+// says which it drew (OpenGL 4.5), there, unless the pixel's ray passes beside it: the raster
+// rounds a triangle's corners to 1/256 pixel, so a pixel whose centre lies that close to an
+// edge can show the triangle beyond it, whatever lies behind; then the ray's first triangle
+// on the object the raster drew. With `ofPixel` (rayVisibility says when to ask), the first
+// triangle of that object a short stretch of the pixel's own ray meets around the point: the
+// depth test rounds too, and where two surfaces cross it may draw the farther. Where the drawn
+// one is not known and near edge-on to `wsToLight`, the one the camera's ray through the
+// point meets.
 RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight, bool ofPixel) {
-    RayStart s = RayStart(r.position, n, 2.0 * rayMargin(r.position), -1);
-    if (ofPixel || abs(dot(n, wsToLight)) < kOwnTriangleCosine) {
+    RayStart s = RayStart(r.position, n, 2.0 * rayMargin(r.position), -1, false);
+    int own = rayStartTriangle(r.drawn);
+    float object = own >= 0 ? bvhTexel(uBvhTriangles, 3 * own).w : r.object;
+    bool onOwn = !ofPixel && own >= 0 && rayStartOn(s, r.pixel, own);
+    bool whole = !ofPixel && own >= 0 && !onOwn;  // the pixel's ray passes beside it
+    bool pixel = ofPixel || whole;
+    if (!onOwn && (pixel || abs(dot(n, wsToLight)) < kOwnTriangleCosine)) {
         float h = 64.0 * s.margin;
         vec3 from, view;
         float t0 = 0.0, t1 = 2.0 * h;
-        if (ofPixel) {
+        if (pixel) {
             pixelRay(r.pixel, from, view);
             float along = dot(r.position - from, view);
-            t0 = max(along - h, 0.0);
-            t1 = along + h;
+            t0 = whole ? 0.0 : max(along - h, 0.0);
+            t1 = whole ? 3.4e38 : along + h;
         } else {
             view = normalize(r.position - uEye);
             from = s.point - h * view;
         }
         int tri;
         float t = bvhTrace(from, view, t0, t1, false, -1, tri);
-        if (t >= 0.0 && (!ofPixel || int(bvhTexel(uBvhTriangles, 3 * tri).w) == int(r.object))) {
+        if (t >= 0.0 && (!pixel || int(bvhTexel(uBvhTriangles, 3 * tri).w) == int(object))) {
             vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz;
             vec3 g = cross(bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - a,
                            bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - a);
             if (length(g) > 0.0) {
                 s.normal = normalize(g);
-                if (ofPixel) s.point = from + t * view;
+                if (pixel) s.point = from + t * view;
                 s.point -= dot(s.point - a, s.normal) * s.normal;
                 s.triangle = tri;
                 s.margin = rayMargin(s.point);
@@ -164,9 +210,10 @@ ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     float t = rayFrom(start, light, wsToLight, dir);
     // Where the start faces away from the light, or a caster lies within 1/64 pixel of its
     // plane, the raster's point may not lie on the triangle the pixel's own ray meets: its
-    // centre within the raster's rounding of an edge (the face beyond it drawn), or past the
-    // edge behind a neighbour (a concave crease). The pixel's own ray's triangle decides.
-    if (start.triangle < 0 && t >= 0.0 &&
+    // centre within the raster's rounding of an edge (the face beyond it drawn), past the
+    // edge behind a neighbour (a concave crease), or behind a surface crossing it that the
+    // depth test rounded away. The pixel's own ray's triangle decides.
+    if ((start.triangle < 0 || start.drawn) && t >= 0.0 &&
         (t == 0.0 || t * dot(start.normal, dir) < pixelWorld(start.point) / 64.0)) {
         RayStart own = rayStart(r, rayNormal(r), wsToLight, true);
         if (own.triangle >= 0) t = rayFrom(own, light, wsToLight, dir);

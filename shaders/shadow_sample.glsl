@@ -10,6 +10,7 @@ struct Receiver {
     float standInError;  // STAND_IN_LIFT: how far the object's stand-in strays (world units)
     vec2 pixel;          // the pixel's centre (window coordinates)
     float object;        // the scene object drawn there
+    int drawn;           // the triangle drawn there (render/DrawnTriangles.h), -1: not known
 };
 
 // What one light's lookup found.

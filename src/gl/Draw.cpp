@@ -39,6 +39,10 @@ void DrawCommands::draw(std::size_t first, std::size_t count) const {
         drawElements(mData[k]);
 }
 
+void DrawCommands::drawOne(std::size_t k) const {
+    drawElements(mData[k]);
+}
+
 void drawElements(const DrawCommand& c) {
     const void* offset = reinterpret_cast<const void*>(std::size_t(c.firstIndex) * sizeof(GLuint));
     if (activeCaps().drawIndirect) {

@@ -1,6 +1,6 @@
 // Indexed triangle draws of a static command list. OpenGL 4.5 keeps the commands in an
 // indirect buffer and draws a run of them with one glMultiDrawElementsIndirect, each
-// command's base instance carrying its object index to the shaders (an instanced attribute).
+// command's base instance picking its record for the shaders (instanced attributes).
 // Indices are global (no base vertex is used), so the commands also make sense where ES 3.0
 // (WebGL2) has neither indirect draws nor base instances.
 #pragma once
@@ -16,7 +16,7 @@ namespace gnomon::gl {
 struct DrawCommand {
     GLuint count, instanceCount, firstIndex;
     GLint baseVertex;     // always 0: indices are global
-    GLuint baseInstance;  // the object index, read through the instanced attribute
+    GLuint baseInstance;  // its record (OpenGL 4.5: render::GpuScene), ES: the object index
 };
 
 class DrawCommands {
@@ -28,6 +28,8 @@ public:
     void bind() const;
     // Commands [first, first + count), unsigned 32-bit indices, triangles.
     void draw(std::size_t first, std::size_t count) const;
+    // Command `k` on its own (drawElements).
+    void drawOne(std::size_t k) const;
     bool empty() const { return !mHeld; }
 
 private:

@@ -96,6 +96,7 @@ void GpuScene::uploadGeometry(const Scene& scene) {
                                                         split.closedIndices));
             }
         }
+        mDrawn.setMeshes(scene, mSplits);
     }
     std::vector<GpuVertex> vertices;
     std::vector<std::uint32_t> indices;
@@ -145,8 +146,8 @@ void GpuScene::uploadGeometry(const Scene& scene) {
     for (int a = 0; a < 4; ++a)
         mVao.attribute(a, 0, a == 3 ? 2 : 3, GL_FLOAT, offsets[a]);
     mMeshBounds = meshBounds(scene);
-    mObjectData.clear();        // forces the object upload below
-    mObjectIds = gl::Buffer();  // and the object indices' binding to the new vertex array
+    mObjectData.clear();          // forces the object upload below
+    mDrawRecords = gl::Buffer();  // and the draw records' binding to the new vertex array
     mHaveGeometry = true;
     ++mGeometryUploads;
 }
@@ -227,6 +228,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
     mHasUnlit = false;
     mHasBlended = false;
     mHasBlendedCasters = false;
+    mDrawn.setObjects(scene);
     for (size_t i = 0; i < n; ++i) {
         const Object& o = scene.objects[i];
         const Material& mat = scene.materials[o.material];
@@ -274,6 +276,7 @@ bool GpuScene::sync(const Scene& scene, double seconds, float casterDetail) {
             mat.baseColourTexture >= 0 ? mTextures[std::size_t(mat.baseColourTexture)].id() : 0u,
             mat.baseColourTexture >= 0 || mat.alphaMode != AlphaMode::Opaque};
         item.specular = mat.specular > 0.0f && !mat.unlit;
+        item.firstTriangle = mDrawn.objectFirst(i);
         item.standInFirstIndexByte = standIns[o.mesh].first;
         item.standInIndexCount = standIns[o.mesh].second;
         // A simplified stand-in is not split: culled only when its whole mesh is a solid.
@@ -314,6 +317,7 @@ void GpuScene::addItems(const DrawItem& whole, const std::vector<shadow::MeshPie
         DrawItem item = whole;
         item.indexCount = GLsizei(piece.indexCount);
         item.firstIndexByte = whole.firstIndexByte + piece.firstIndex * sizeof(std::uint32_t);
+        item.firstTriangle = whole.firstTriangle + piece.firstIndex / 3;
         item.closedIndexCount = solid && piece.closed ? item.indexCount : 0;
         item.bounds = piece.bounds.transformed(worldFromModel);
         if (ownStandIn) {
@@ -394,19 +398,34 @@ void GpuScene::checkObjectTexels(std::size_t objects) {
 // for 1 to 6 instances; true when the commands changed (and were uploaded).
 bool GpuScene::uploadDrawCommands() {
     const std::size_t n = mItems.size();
-    // Object indices, read as an instanced attribute: instance i of a draw with base
-    // instance b reads entry b + i / divisor.
-    // ES has no base instance: the shaders take the object index from a uniform instead.
-    if (gl::activeCaps().drawIndirect &&
-        (!mObjectIds || mObjectIds.size() != std::max<std::size_t>(n, 1) * sizeof(GLuint))) {
-        std::vector<GLuint> ids(std::max<std::size_t>(n, 1));
-        for (std::size_t i = 0; i < ids.size(); ++i)
-            ids[i] = GLuint(i);
-        mObjectIds = gl::Buffer("object indices", ids.size() * sizeof(GLuint), ids.data(), 0);
-        mVao.vertexBuffer(1, mObjectIds, 0, sizeof(GLuint));
-        mVao.integerAttribute(4, 1, 1, GL_UNSIGNED_INT, 0);
-        mVao.divisor(1, 1);
-        mDivisor = 1;
+    // OpenGL 4.5: a command's base instance picks its record (object, first triangle), read as
+    // instanced attributes: instance i of a draw with base instance b reads record
+    // b + i / divisor. ES has no base instance: the base instance is the object index, which
+    // the shaders take from a uniform instead, and no record is read.
+    const bool records = gl::activeCaps().drawIndirect;
+    if (records) {
+        mRecordScratch.assign(2 * std::max<std::size_t>(3 * n, 1), 0u);
+        for (std::size_t i = 0; i < n; ++i) {
+            const DrawItem& item = mItems[i];
+            for (Part part : {Part::All, Part::Closed, Part::Open}) {
+                GLuint* r = &mRecordScratch[2 * (std::size_t(part) * n + i)];
+                r[0] = item.object;
+                r[1] = item.firstTriangle +
+                       (part == Part::Open ? GLuint(item.closedIndexCount) / 3 : 0u);
+            }
+        }
+        if (!mDrawRecords || mRecordScratch.size() != mRecords.size()) {
+            mDrawRecords = gl::Buffer("draw records", mRecordScratch.size() * sizeof(GLuint),
+                                      mRecordScratch.data(), GL_DYNAMIC_STORAGE_BIT);
+            mVao.vertexBuffer(1, mDrawRecords, 0, 2 * sizeof(GLuint));
+            mVao.integerAttribute(4, 1, 1, GL_UNSIGNED_INT, 0);
+            mVao.integerAttribute(5, 1, 1, GL_UNSIGNED_INT, sizeof(GLuint));
+            mVao.divisor(1, 1);
+            mDivisor = 1;
+        } else if (mRecordScratch != mRecords) {
+            mDrawRecords.update(0, mRecordScratch.size() * sizeof(GLuint), mRecordScratch.data());
+        }
+        std::swap(mRecords, mRecordScratch);
     }
     // Draw commands in item order, for 1 to 6 instances (a cube draws the faces the view
     // looks up), then the same for the stand-in casters; uploaded when they differ.
@@ -420,9 +439,10 @@ bool GpuScene::uploadDrawCommands() {
             const GLuint closed =
                 GLuint(standIn ? item.standInClosedIndexCount : item.closedIndexCount);
             for (Part part : {Part::All, Part::Closed, Part::Open}) {
-                gl::DrawCommand c{count, 1, first, 0, item.object};
+                const GLuint base = records ? GLuint(std::size_t(part) * n + i) : item.object;
+                gl::DrawCommand c{count, 1, first, 0, base};
                 if (part == Part::Closed) c.count = closed;
-                if (part == Part::Open) c = {count - closed, 1, first + closed, 0, item.object};
+                if (part == Part::Open) c = {count - closed, 1, first + closed, 0, base};
                 for (GLsizei k = 1; k <= GLsizei(kMaxInstances); ++k) {
                     c.instanceCount = GLuint(k);
                     mCommandScratch[commandIndex(i, k, standIn, part)] = c;
@@ -444,18 +464,14 @@ void GpuScene::bind() const {
 }
 
 void GpuScene::setInstanceDivisor(GLsizei instances) const {
-    if (instances == mDivisor || !mObjectIds) return;
+    if (instances == mDivisor || !mDrawRecords) return;
     mVao.divisor(1, int(instances));  // every copy: one object
     mDivisor = instances;
 }
 
-void GpuScene::draw(const DrawItem& item, GLsizei instances, Part part) const {
-    const GLsizei skipped = part == Part::Open ? item.closedIndexCount : 0;
-    const GLsizei count = part == Part::Closed ? item.closedIndexCount : item.indexCount - skipped;
-    if (count == 0) return;
+void GpuScene::draw(std::uint32_t item, GLsizei instances, Part part) const {
     setInstanceDivisor(instances);
-    const GLuint first = GLuint(item.firstIndexByte / sizeof(GLuint)) + GLuint(skipped);
-    gl::drawElements({GLuint(count), GLuint(instances), first, 0, item.object});
+    mCommands.drawOne(commandIndex(item, instances, false, part));
 }
 
 void GpuScene::drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances, bool standIns,

@@ -18,6 +18,7 @@
 #include "gl/Draw.h"
 #include "gl/Objects.h"
 #include "gnomon/Scene.h"
+#include "render/DrawnTriangles.h"
 #include "scene/MeshTopology.h"
 #include "shadow/FramePlan.h"
 #include "shadow/MeshPieces.h"
@@ -66,6 +67,8 @@ struct DrawItem {
     GLsizei standInIndexCount = 0;
     std::size_t standInFirstIndexByte = 0;
     GLsizei standInClosedIndexCount = 0;
+    // Its first triangle's number among all objects' drawn triangles (DrawnTriangles).
+    std::uint32_t firstTriangle = 0;
 };
 
 // Which of an item's triangles a draw takes: all, those on solids (DrawItem's
@@ -101,8 +104,9 @@ public:
     // uObjects buffer texture of scene_data.glsl) and the draw commands.
     void bind() const;
     static constexpr GLuint kObjectTextureUnit = 15;
-    // Issues one draw (`instances` copies: 1, or one per cube face a point light draws).
-    void draw(const DrawItem& item, GLsizei instances = 1, Part part = Part::All) const;
+    // Issues one draw of item `item` (`instances` copies: 1, or one per cube face a point
+    // light draws).
+    void draw(std::uint32_t item, GLsizei instances = 1, Part part = Part::All) const;
     // Draws `part` of items [first, first + count) in one call (each 1 to kMaxInstances
     // times), of their stand-in casters when `standIns` (shadow passes).
     static constexpr std::size_t kMaxInstances = 6;
@@ -110,6 +114,8 @@ public:
     void drawRange(std::uint32_t first, std::uint32_t count, GLsizei instances = 1,
                    bool standIns = false, Part part = Part::All) const;
     const std::vector<DrawItem>& items() const { return mItems; }
+    // Which triangle a draw's fragment lies on (DrawnTriangles).
+    const DrawnTriangles& drawnTriangles() const { return mDrawn; }
     // The items as the frame plan sees them (same order), with the bounds and counters that
     // tell it what changed.
     shadow::PlanScene planScene() const {
@@ -169,7 +175,12 @@ private:
     gl::Buffer mVertices, mIndices, mObjects;
     gl::Texture mObjectTexels;     // mObjects as RGBA32F texels, 13 per record
     std::size_t mObjectCount = 0;  // records in mObjectTexels
-    gl::Buffer mObjectIds;         // 0..n-1: attribute 4, one per instance
+    // Per item and part (all, closed, open), the draw's record: its object (attribute 4) and
+    // its first triangle's number (attribute 5, DrawnTriangles); a command's base instance
+    // picks it (OpenGL 4.5 only).
+    gl::Buffer mDrawRecords;
+    std::vector<GLuint> mRecordScratch, mRecords;
+    DrawnTriangles mDrawn;
     // One command per item and part (all, closed, open), for 1 to 6 instances, then the same
     // for the stand-ins: commandIndex.
     gl::DrawCommands mCommands;

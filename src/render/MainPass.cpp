@@ -148,11 +148,12 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         glBindSampler(7, mTintSampler.id());
         glBindSampler(8, mRawSampler.id());
     }
-    // The casters' BVH for shadow rays: units 12 and 13, their cut-outs 10 and 11, read with
-    // texelFetch only.
+    // The casters' BVH for shadow rays: units 12 and 13, their cut-outs 10 and 11, the
+    // triangles drawn 16 (OpenGL 4.5), read with texelFetch only.
     if (in.rays) {
         gl::bindTexture(12, in.rays->nodes());
         gl::bindTexture(13, in.rays->triangles());
+        if (in.rays->starts()) gl::bindTexture(16, in.rays->starts());
         gl::bindTexture(10, in.rays->masks().uvs());
         gl::bindTexture(11, in.rays->masks().alphas());
     }
@@ -282,7 +283,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
             setState(items[i]);
             const bool outside = items[i].alphaMode == AlphaMode::Opaque &&
                                  shadow::beyondNearPlane(items[i].bounds, clipFromWorld);
-            scene.draw(items[i], 1, outside ? Part::Open : Part::All);
+            scene.draw(i, 1, outside ? Part::Open : Part::All);
         }
         glCullFace(GL_BACK);
     }
@@ -294,7 +295,7 @@ void MainPass::drawItems(const GpuScene& scene, const RenderOptions& options,
         for (const auto& [distance, i] : mBlended) {
             setState(items[i]);
             setCulling(!items[i].doubleSided);
-            scene.draw(items[i]);
+            scene.draw(i);
         }
         glDepthMask(in.depthReady ? GL_FALSE : GL_TRUE);
         glDisable(GL_BLEND);

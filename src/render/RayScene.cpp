@@ -65,7 +65,38 @@ const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& opti
     const std::uint64_t before = mBuilds;
     update(scene, options.time, gpuScene.revision(), gpuScene.geometryHash(), options.shadow);
     built = int(mBuilds - before);
+    // Under all on OpenGL 4.5 the main pass names the triangle it drew (main.frag.glsl's
+    // RAYS_FROM_DRAWN).
+    if (gl::activeCaps().drawIndirect && options.shadow.shadowRays == ShadowRayMode::All)
+        updateStarts(gpuScene.drawnTriangles(), built > 0);
     return this;
+}
+
+void RayScene::updateStarts(const DrawnTriangles& drawn, bool built) {
+    const std::size_t objects = mCasters.size();
+    bool same = !built && mStarts && mStartKey.size() == objects;
+    for (std::size_t o = 0; same && o < objects; ++o)
+        same = mStartKey[o] == drawn.objectFirst(o);
+    if (same) return;
+    mStartKey.resize(objects);
+    for (std::size_t o = 0; o < objects; ++o)
+        mStartKey[o] = drawn.objectFirst(o);
+    // Four numbers a texel, two texels at least; a table the driver's textures cannot hold
+    // is none, one texel (the shader then finds each start by a ray, as WebGL2 does).
+    std::size_t texels = std::max<std::size_t>((drawn.total() + 3) / 4, 2);
+    if (mOrder.empty() || drawn.objects() != objects ||
+        texels > std::size_t(kBvhRowTexels) * std::size_t(gl::activeCaps().maxTextureSize)) {
+        texels = 1;
+    }
+    mStartScratch.assign(4 * texels, -1.0f);
+    for (std::size_t i = 0; texels > 1 && i < mOrder.size(); ++i) {
+        const auto [o, mesh, t] = mOrder[i];
+        const std::vector<std::uint32_t>& places = drawn.places(mesh);
+        if (t < places.size() && places[t] != kNoPlace)
+            mStartScratch[drawn.objectFirst(o) + places[t]] = float(i);
+    }
+    mStarts = gl::Texture::texelRows("shadow-ray starts", mStartScratch.data(), texels,
+                                     texels < 2 ? 1 : kBvhRowTexels);
 }
 
 void RayScene::build(const Scene& scene, double seconds) {
@@ -102,6 +133,11 @@ void RayScene::build(const Scene& scene, double seconds) {
     const std::vector<bvh::BvhNode>& nodes = hierarchy.nodes();
     const std::vector<bvh::BvhTriangle>& tris = hierarchy.triangles();
     mTriangleCount = tris.size();
+    mOrder.clear();
+    for (const bvh::BvhTriangle& t : tris) {
+        const std::uint32_t o = std::uint32_t(t.object);
+        mOrder.push_back({o, std::uint32_t(scene.objects[o].mesh), std::uint32_t(t.primitive)});
+    }
     if (nodes.empty()) {  // one texel: bvh_trace.glsl reads a row under 2 wide as no hierarchy
         const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
         mNodes = gl::Texture::texelRows("shadow-ray nodes", none, 1, 1);

@@ -6,12 +6,14 @@
 // only compares each caster's mesh and transform.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "gl/Objects.h"
 #include "gnomon/Options.h"
 #include "gnomon/Scene.h"
+#include "render/DrawnTriangles.h"
 #include "render/GpuScene.h"
 #include "render/RayMasks.h"
 
@@ -33,6 +35,10 @@ public:
                              const GpuScene& gpuScene, int& built);
     const gl::Texture& nodes() const { return mNodes; }
     const gl::Texture& triangles() const { return mTriangles; }
+    // The start table (OpenGL 4.5, --shadow-rays all): for each triangle the main pass draws
+    // (DrawnTriangles' numbers, four to an RGBA32F texel in rows of kBvhRowTexels), its
+    // triangle in the hierarchy, -1 for none; one texel where there is no table.
+    const gl::Texture& starts() const { return mStarts; }
     // Masked and blended casters' cut-outs (RayMasks.h).
     const RayMasks& masks() const { return mMasks; }
     // How many times the hierarchy was built (what tests check the caching by).
@@ -44,6 +50,8 @@ public:
 
 private:
     void build(const Scene& scene, double seconds);
+    // mStarts for `drawn` when the hierarchy or the numbering changed.
+    void updateStarts(const DrawnTriangles& drawn, bool built);
     // mScale for `scene` at `seconds`, when an object's mesh or transform changed or, with
     // `newGeometry`, a mesh's points may have.
     void updateScale(const Scene& scene, double seconds, bool newGeometry);
@@ -57,7 +65,11 @@ private:
     std::uint64_t mGeometry = 0;
     std::vector<float> mKey, mScratch;
     std::vector<RayCaster> mCasters;  // per scene object
-    gl::Texture mNodes, mTriangles;
+    gl::Texture mNodes, mTriangles, mStarts;
+    std::vector<std::uint32_t> mStartKey;  // the objects' first numbers the table is for
+    // Per triangle in the hierarchy's order: its object, mesh and number in the mesh.
+    std::vector<std::array<std::uint32_t, 3>> mOrder;
+    std::vector<float> mStartScratch;
     RayMasks mMasks;
     std::uint64_t mBuilds = 0;
     std::size_t mTriangleCount = 0;

@@ -1,6 +1,7 @@
 #include "scene/MeshTopology.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <numeric>
 #include <unordered_map>
@@ -157,6 +158,43 @@ CullingSplit splitForCulling(const Mesh& mesh) {
 int closedWinding(const Mesh& mesh) {
     const CullingSplit split = splitForCulling(mesh);
     return split.closedIndices == mesh.indices.size() ? split.winding : 0;
+}
+
+namespace {
+
+using Corners = std::array<std::uint32_t, 3>;
+
+Corners cornersOf(const std::vector<std::uint32_t>& indices, std::uint32_t t) {
+    return {indices[3 * std::size_t(t)], indices[3 * std::size_t(t) + 1],
+            indices[3 * std::size_t(t) + 2]};
+}
+
+// `indices`' triangles sorted by their corners, ties in their order.
+std::vector<std::uint32_t> sortedTriangles(const std::vector<std::uint32_t>& indices) {
+    std::vector<std::uint32_t> order(indices.size() / 3);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return cornersOf(indices, a) < cornersOf(indices, b);
+    });
+    return order;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> trianglePlaces(const std::vector<std::uint32_t>& original,
+                                          const std::vector<std::uint32_t>& reordered) {
+    std::vector<std::uint32_t> places(original.size() / 3, kNoPlace);
+    if (original.size() != reordered.size()) return places;
+    // The same triangles sorted the same way pair up, copies in their order on both sides.
+    const std::vector<std::uint32_t> a = sortedTriangles(original), b = sortedTriangles(reordered);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        if (cornersOf(original, a[k]) != cornersOf(reordered, b[k])) {
+            std::fill(places.begin(), places.end(), kNoPlace);
+            return places;
+        }
+        places[a[k]] = b[k];
+    }
+    return places;
 }
 
 }  // namespace gnomon

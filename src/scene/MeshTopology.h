@@ -44,4 +44,12 @@ struct CullingSplit {
 };
 CullingSplit splitForCulling(const Mesh& mesh);
 
+// Where each of `original`'s triangles (three indices each) lies among `reordered`'s, which
+// hold the same triangles in another order, each one's corners in the same order (as
+// splitForCulling and shadow::cutIntoPieces leave them); copies of a triangle take their
+// places in order. All kNoPlace when the two do not hold the same triangles.
+inline constexpr std::uint32_t kNoPlace = 0xffffffffu;
+std::vector<std::uint32_t> trianglePlaces(const std::vector<std::uint32_t>& original,
+                                          const std::vector<std::uint32_t>& reordered);
+
 }  // namespace gnomon

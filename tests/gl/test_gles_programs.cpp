@@ -63,13 +63,15 @@ void checkProgram(const Spec& spec) {
         sources.push_back(gl::assembleShader(stage.file, spec.defines, es));
     // What OpenGL 4.5 has active, by the names of the ES tables (the 4.5 text has the same
     // declarations); its program is deleted while its context is current. The records'
-    // uDrawBase is GLSL ES's own.
+    // uDrawBase is GLSL ES's own; the shadow rays' start table, read by gl_PrimitiveID, is
+    // OpenGL 4.5's (render/DrawnTriangles.h).
     Active wanted;
     {
         useNative();
         const gl::Program native = gl::buildProgram(spec.label, spec.stages, spec.defines);
         wanted = activeIn(native, sources);
     }
+    wanted.samplers.erase("uRayStarts");
     for (const gl::AssembledSource& s : sources) {
         if (std::find(s.locations.begin(), s.locations.end(),
                       gl::FixedSlot{gl::kDrawBaseLocation, "uDrawBase"}) != s.locations.end()) {

@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "GlTest.h"
 #include "RayTest.h"
 #include "ShadowCheck.h"
 #include "core/Aabb.h"
+#include "render/GpuScene.h"
 #include "render/RayScene.h"
 #include "scene/MeshBuilder.h"
 
@@ -92,6 +94,57 @@ TEST(ShadowRays, ShadowsWhereTheGeometrySays) {
         o.shadow.filter = ShadowFilter::None;
         expectShadowsMatchGeometry(s, o);
     }
+}
+
+// The start table names, for each triangle the main pass draws (an object's mesh reordered
+// and cut into pieces, two objects sharing a mesh), the hierarchy's triangle of the same
+// object and mesh triangle; a receiver that casts nothing has none.
+TEST(ShadowRays, StartTableNamesTheTrianglesDrawn) {
+    Scene s = builtinScene("tutorial-room");
+    s.meshes.push_back(mesh::sphere("sphere", glm::vec3(0.0f), 0.3f, 24, 12));
+    for (float x : {-0.5f, 0.5f}) {
+        Object o;
+        o.mesh = std::uint32_t(s.meshes.size() - 1);
+        o.worldFromModel = glm::translate(glm::mat4(1.0f), glm::vec3(x, 1.0f, 0.0f));
+        s.objects.push_back(o);
+    }
+    s.objects[0].castsShadows = false;
+    s.revision.bump();
+    RenderOptions o = traced(s, 16);
+    sharedRenderer().render(s, o);  // its context (and its limits) current
+    if (!gl::activeCaps().drawIndirect) GTEST_SKIP() << "ES draws name no triangle: no table";
+    render::GpuScene gpu;
+    gpu.sync(s, 0.0);
+    render::RayScene rays;
+    int built = 0;
+    ASSERT_NE(rays.forFrame(s, o, gpu, built), nullptr);
+    auto texels = [](const gl::Texture& t) {
+        std::vector<float> v(4 * std::size_t(t.width()) * std::size_t(t.height()));
+        t.read(0, 0, 0, t.width(), t.height(), GL_RGBA, GL_FLOAT, v.size() * sizeof(float),
+               v.data());
+        return v;
+    };
+    const std::vector<float> starts = texels(rays.starts()), tris = texels(rays.triangles());
+    const render::DrawnTriangles& drawn = gpu.drawnTriangles();
+    std::size_t checked = 0;
+    for (std::size_t obj = 0; obj < s.objects.size(); ++obj) {
+        const std::uint32_t mesh = s.objects[obj].mesh;
+        const std::vector<std::uint32_t>& places = drawn.places(mesh);
+        ASSERT_EQ(places.size(), s.meshes[mesh].indices.size() / 3);
+        for (std::size_t t = 0; t < places.size(); ++t) {
+            ASSERT_NE(places[t], kNoPlace);
+            const int tri = int(starts[drawn.objectFirst(obj) + places[t]]);
+            if (!s.objects[obj].castsShadows) {
+                EXPECT_EQ(tri, -1);
+                continue;
+            }
+            ASSERT_GE(tri, 0);
+            EXPECT_EQ(tris[12 * std::size_t(tri) + 3], float(obj));  // BvhTriangle::object
+            EXPECT_EQ(tris[12 * std::size_t(tri) + 7], float(t));    // ::primitive
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, rays.triangleCount());
 }
 
 // The hierarchy is built once per set of casters: not again for the same revision, nor for a

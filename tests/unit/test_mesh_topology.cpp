@@ -137,5 +137,36 @@ TEST(MeshTopology, ASolidBesideASheetIsCulledAlone) {
     EXPECT_EQ(0, closedWinding(m));
 }
 
+// The places of a mesh's triangles in the order the GPU scene uploads them (split for culling,
+// then cut into pieces) name the same corners, copies of a triangle included.
+TEST(MeshTopology, TrianglePlacesFollowAReordering) {
+    const std::vector<std::uint32_t> original = {0, 1, 2, 2, 1, 3, 0, 1, 2, 4, 5, 6};
+    const std::vector<std::uint32_t> reordered = {4, 5, 6, 0, 1, 2, 2, 1, 3, 0, 1, 2};
+    const std::vector<std::uint32_t> places = trianglePlaces(original, reordered);
+    ASSERT_EQ(places.size(), 4u);
+    EXPECT_EQ(places, (std::vector<std::uint32_t>{1, 2, 3, 0}));
+    Mesh m = mesh::sphere("sphere", glm::vec3(0.0f), 1.0f, 24, 12);
+    const CullingSplit split = splitForCulling(m);
+    const std::vector<std::uint32_t> p = trianglePlaces(m.indices, split.indices);
+    std::set<std::uint32_t> seen;
+    for (std::size_t t = 0; t < p.size(); ++t) {
+        ASSERT_LT(p[t], p.size());
+        seen.insert(p[t]);
+        for (std::size_t k = 0; k < 3; ++k)
+            EXPECT_EQ(m.indices[3 * t + k], split.indices[3 * std::size_t(p[t]) + k]);
+    }
+    EXPECT_EQ(seen.size(), p.size());
+}
+
+// A triangle turned (its corners rotated) or missing is not the same triangle: no places.
+TEST(MeshTopology, TrianglePlacesOfOtherTrianglesAreNone) {
+    const std::vector<std::uint32_t> original = {0, 1, 2, 2, 1, 3};
+    for (const std::vector<std::uint32_t>& other :
+         {std::vector<std::uint32_t>{1, 2, 0, 2, 1, 3}, std::vector<std::uint32_t>{0, 1, 2}}) {
+        const std::vector<std::uint32_t> places = trianglePlaces(original, other);
+        EXPECT_EQ(places, (std::vector<std::uint32_t>{kNoPlace, kNoPlace}));
+    }
+}
+
 }  // namespace
 }  // namespace gnomon
