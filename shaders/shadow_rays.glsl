@@ -74,7 +74,8 @@ void pixelRay(vec2 pixel, out vec3 from, out vec3 dir) {
 
 // The hierarchy's triangle the main pass drew as triangle `drawn` (render/DrawnTriangles.h),
 // from render::RayScene's start table (four to a texel, as floats); -1 where it is none (no
-// caster, not known). WebGL2 knows no drawn triangle.
+// caster, not known: uncertain's draws and WebGL2's name none, main.frag.glsl's
+// RAYS_FROM_DRAWN).
 #ifndef GNOMON_GLES
 layout(binding = 16) uniform highp sampler2D uRayStarts;
 #endif
@@ -116,7 +117,7 @@ bool rayStartOn(inout RayStart s, vec2 pixel, int tri) {
 
 // The start at `r` with normal `n`. On the triangle of the hierarchy that the pixel's ray
 // meets, where there is one (not under a receiver that casts no shadow). Where the main pass
-// says which it drew (OpenGL 4.5), there, unless the pixel's ray passes beside it: the raster
+// says which it drew (RAYS_FROM_DRAWN), there, unless the pixel's ray passes beside it: the raster
 // rounds a triangle's corners to 1/256 pixel, so a pixel whose centre lies that close to an
 // edge can show the triangle beyond it, whatever lies behind; then the ray's first triangle
 // on the object the raster drew. With `ofPixel` (rayVisibility says when to ask), the first
