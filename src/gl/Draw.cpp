@@ -44,6 +44,7 @@ void DrawCommands::drawOne(std::size_t k) const {
 }
 
 void drawElements(const DrawCommand& c) {
+    if (c.count == 0) return;
     const void* offset = reinterpret_cast<const void*>(std::size_t(c.firstIndex) * sizeof(GLuint));
     if (activeCaps().drawIndirect) {
         glDrawElementsInstancedBaseVertexBaseInstance(
@@ -52,7 +53,6 @@ void drawElements(const DrawCommand& c) {
         return;
     }
     // ES: no base instance; the object index is a uniform of the program in use.
-    if (c.count == 0) return;
     uniform(kDrawBaseLocation, int(c.baseInstance));
     glDrawElementsInstanced(GL_TRIANGLES, GLsizei(c.count), GL_UNSIGNED_INT, offset,
                             GLsizei(c.instanceCount));

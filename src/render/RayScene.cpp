@@ -68,16 +68,18 @@ const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& opti
     // Under all on OpenGL 4.5 the main pass names the triangle it drew (main.frag.glsl's
     // RAYS_FROM_DRAWN).
     if (gl::activeCaps().drawIndirect && options.shadow.shadowRays == ShadowRayMode::All)
-        updateStarts(gpuScene.drawnTriangles(), built > 0);
+        updateStarts(gpuScene.drawnTriangles());
     return this;
 }
 
-void RayScene::updateStarts(const DrawnTriangles& drawn, bool built) {
+void RayScene::updateStarts(const DrawnTriangles& drawn) {
     const std::size_t objects = mCasters.size();
-    bool same = !built && mStarts && mStartKey.size() == objects;
+    // The hierarchy may have been built for frames that read no table (uncertain's).
+    bool same = mStarts && mStartsBuild == mBuilds && mStartKey.size() == objects;
     for (std::size_t o = 0; same && o < objects; ++o)
         same = mStartKey[o] == drawn.objectFirst(o);
     if (same) return;
+    mStartsBuild = mBuilds;
     mStartKey.resize(objects);
     for (std::size_t o = 0; o < objects; ++o)
         mStartKey[o] = drawn.objectFirst(o);
@@ -88,14 +90,14 @@ void RayScene::updateStarts(const DrawnTriangles& drawn, bool built) {
         texels > std::size_t(kBvhRowTexels) * std::size_t(gl::activeCaps().maxTextureSize)) {
         texels = 1;
     }
-    mStartScratch.assign(4 * texels, -1.0f);
+    std::vector<float> table(4 * texels, -1.0f);
     for (std::size_t i = 0; texels > 1 && i < mOrder.size(); ++i) {
         const auto [o, mesh, t] = mOrder[i];
         const std::vector<std::uint32_t>& places = drawn.places(mesh);
         if (t < places.size() && places[t] != kNoPlace)
-            mStartScratch[drawn.objectFirst(o) + places[t]] = float(i);
+            table[drawn.objectFirst(o) + places[t]] = float(i);
     }
-    mStarts = gl::Texture::texelRows("shadow-ray starts", mStartScratch.data(), texels,
+    mStarts = gl::Texture::texelRows("shadow-ray starts", table.data(), texels,
                                      texels < 2 ? 1 : kBvhRowTexels);
 }
 

@@ -51,7 +51,7 @@ public:
 private:
     void build(const Scene& scene, double seconds);
     // mStarts for `drawn` when the hierarchy or the numbering changed.
-    void updateStarts(const DrawnTriangles& drawn, bool built);
+    void updateStarts(const DrawnTriangles& drawn);
     // mScale for `scene` at `seconds`, when an object's mesh or transform changed or, with
     // `newGeometry`, a mesh's points may have.
     void updateScale(const Scene& scene, double seconds, bool newGeometry);
@@ -66,10 +66,11 @@ private:
     std::vector<float> mKey, mScratch;
     std::vector<RayCaster> mCasters;  // per scene object
     gl::Texture mNodes, mTriangles, mStarts;
-    std::vector<std::uint32_t> mStartKey;  // the objects' first numbers the table is for
+    // What mStarts was made for: the objects' first numbers and the hierarchy's build.
+    std::vector<std::uint32_t> mStartKey;
+    std::uint64_t mStartsBuild = 0;
     // Per triangle in the hierarchy's order: its object, mesh and number in the mesh.
     std::vector<std::array<std::uint32_t, 3>> mOrder;
-    std::vector<float> mStartScratch;
     RayMasks mMasks;
     std::uint64_t mBuilds = 0;
     std::size_t mTriangleCount = 0;

@@ -118,6 +118,17 @@ TEST(ShadowRays, StartTableNamesTheTrianglesDrawn) {
     render::RayScene rays;
     int built = 0;
     ASSERT_NE(rays.forFrame(s, o, gpu, built), nullptr);
+    // A caster moved under uncertain, which reads no table: the next frame under all reads
+    // one for the hierarchy built then.
+    s.objects.back().worldFromModel[3].z += 0.25f;
+    s.revision.bump();
+    gpu.sync(s, 0.0);
+    RenderOptions uncertain = o;
+    uncertain.shadow.shadowRays = ShadowRayMode::Uncertain;
+    ASSERT_NE(rays.forFrame(s, uncertain, gpu, built), nullptr);
+    ASSERT_EQ(built, 1);
+    ASSERT_NE(rays.forFrame(s, o, gpu, built), nullptr);
+    EXPECT_EQ(built, 0);
     auto texels = [](const gl::Texture& t) {
         std::vector<float> v(4 * std::size_t(t.width()) * std::size_t(t.height()));
         t.read(0, 0, 0, t.width(), t.height(), GL_RGBA, GL_FLOAT, v.size() * sizeof(float),
