@@ -174,7 +174,10 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, i
             vec3 bary;
             float t = bvhHitTriangle(r, c0.xyz, c1.xyz, c2.xyz, tnear, tfar, bary);
             if (t < 0.0) continue;
-            if (anyCaster && (flags & 2) != 0 && !bvhTexelBlocks(i, bary)) continue;
+            // (The test in a bool of its own: in one && chain with a non-constant anyCaster,
+            // Mesa 22.3 built a program in which masked casters blocked everywhere.)
+            bool filtered = anyCaster && (flags & 2) != 0;
+            if (filtered && !bvhTexelBlocks(i, bary)) continue;
             best = t;
             tfar = t;
             hit = i;

@@ -12,6 +12,26 @@ layout(location = 5) uniform vec3 uEye;
 layout(binding = 15) uniform highp usampler2DArray uRayJobs;
 layout(location = 0) out uint fResult;
 
+// Past slot `slot` (-1: before the first), the job's next light: its slot (2: none left),
+// light and direction, and the first steps of its rays (rayTripStep).
+int nextLight(uint records, int slot, Receiver r, out RayTrip q, out LightRecord light,
+              out vec3 toLight) {
+    q = rayTrip();
+    q.step = kRayDone;
+    light = lights[0];
+    toLight = vec3(0.0, 0.0, 1.0);
+    ++slot;
+    if (slot == 0 && (records & kRayRecordBits) == kNoRayRecord) ++slot;
+    if (slot == 1 && ((records >> 16) & kRayRecordBits) == kNoRayRecord) ++slot;
+    if (slot < 2) {
+        light = lights[(records >> uint(16 * slot)) & kRayRecordBits];
+        toLight = toLightFrom(light, light.type, r.position);
+        q.step = kRayBegin;
+        rayTripStep(q, r, light, toLight, -1.0, -1);
+    }
+    return slot;
+}
+
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy) - ivec2(0, uRayPyramidSize.x / 2);  // under the pyramid
     int j = rayJobAt(t);
@@ -30,14 +50,21 @@ void main() {
     r.object = float(normal.w);
     r.drawn = -1;  // uncertain's draws name no triangle (main.frag.glsl's RAYS_FROM_DRAWN)
     uint result = job.w;
-    for (int slot = 0; slot < 2; ++slot) {
-        int shift = 16 * slot;
-        uint record = (job.w >> uint(shift)) & kRayRecordBits;
-        if (record != kNoRayRecord) {
-            LightRecord light = lights[record];
-            vec3 toLight = toLightFrom(light, light.type, r.position);
-            if (rayVisibility(light, r, toLight).visibility > 0.5)
-                result |= kRayLitBit << uint(shift);
+    // Both lights' rays in one loop of one trace (shadow_rays.glsl's RayTrip): each lane goes
+    // on to its second light as soon as its first is answered.
+    RayTrip q;
+    LightRecord light;
+    vec3 toLight;
+    int slot = nextLight(job.w, -1, r, q, light, toLight);
+    while (slot < 2) {
+        if (q.step != kRayDone) {
+            int hit;
+            float d = bvhTrace(q.from, q.dir, q.t0, q.t1, q.anyCaster, q.skip, hit);
+            rayTripStep(q, r, light, toLight, d, hit);
+        }
+        if (q.step == kRayDone) {
+            if (q.t < 0.0) result |= kRayLitBit << uint(16 * slot);
+            slot = nextLight(job.w, slot, r, q, light, toLight);
         }
     }
     fResult = result;

@@ -115,53 +115,92 @@ bool rayStartOn(inout RayStart s, vec2 pixel, int tri) {
     return true;
 }
 
-// The start at `r` with normal `n`. On the triangle of the hierarchy that the pixel's ray
-// meets, where there is one (not under a receiver that casts no shadow). Where the main pass
-// says which it drew (RAYS_FROM_DRAWN), there, unless the pixel's ray passes beside it: the raster
-// rounds a triangle's corners to 1/256 pixel, so a pixel whose centre lies that close to an
-// edge can show the triangle beyond it, whatever lies behind; then the ray's first triangle
-// on the object the raster drew. With `ofPixel` (rayVisibility says when to ask), the first
-// triangle of that object a short stretch of the pixel's own ray meets around the point: the
-// depth test rounds too, and where two surfaces cross it may draw the farther. Where the drawn
-// one is not known and near edge-on to `wsToLight`, the one the camera's ray through the
-// point meets.
-RayStart rayStart(Receiver r, vec3 n, vec3 wsToLight, bool ofPixel) {
-    RayStart s = RayStart(r.position, n, 2.0 * rayMargin(r.position), -1, false);
+// The normal a ray leaves by. The plane's normal from the position's derivatives rounds by
+// about 1e-4 radians; a flat face's shading normal is its own exactly, which keeps a face all
+// but edge-on to the light (a wall under a sun at a right angle to it) on one side of
+// kRayEdgeOn throughout.
+vec3 rayNormal(Receiver r) {
+    return length(cross(r.planeNormal, r.normal)) < kFlatFaceSine ? r.normal : r.planeNormal;
+}
+
+// One light's rays at a receiver, as steps each tracing at most once: the search for the
+// start's triangle (kRayFindStart), the shadow ray (kRayShadow) and, where rayAgain asks, the
+// start on the pixel's own ray (kRayFindOwn) and a shadow ray from there (kRayShadowOwn). The
+// caller's one loop traces every lane's next ray together. llvmpipe runs a shader as vectors of
+// pixels and a branch as a mask: each traversal written out runs its first steps for every
+// pixel whether it traces or not, so one trace in a loop costs less than four in a row (the
+// rays' pass took as long again with no lane tracing as its tracing took).
+const int kRayBegin = 0;
+const int kRayFindStart = 1;
+const int kRayShadow = 2;
+const int kRayFindOwn = 3;
+const int kRayShadowOwn = 4;
+const int kRayDone = 5;
+
+struct RayTrip {
+    int step;  // the step whose trace runs next (kRayBegin: none yet; kRayDone: no more)
+    RayStart start;
+    float object;  // the object the start lies on (the drawn triangle's, where known)
+    bool pixel;    // the start's search follows the pixel's own ray
+    float t;       // the shadow ray's first caster (0: the start faces away; -1: none)
+    vec3 from, dir;  // the next trace: its origin and direction, its stretch (t0, t1], whether
+    float t0, t1;    // any caster ends it (a shadow ray) and the triangle it passes by
+    bool anyCaster;
+    int skip;
+};
+
+// The start's search (the start at `r` with normal `n`): false where it needs no trace. On the
+// triangle of the hierarchy that the pixel's ray meets, where there is one (not under a receiver
+// that casts no shadow). Where the main pass says which it drew (RAYS_FROM_DRAWN), there, unless
+// the pixel's ray passes beside it: the raster rounds a triangle's corners to 1/256 pixel, so a
+// pixel whose centre lies that close to an edge can show the triangle beyond it, whatever lies
+// behind; then the ray's first triangle on the object the raster drew. With `ofPixel`
+// (rayAgain), the first triangle of that object a short stretch of the pixel's own ray meets
+// around the point: the depth test rounds too, and where two surfaces cross it may draw the
+// farther. Where the drawn one is not known and near edge-on to `wsToLight`, the one the
+// camera's ray through the point meets.
+bool rayStartBegin(inout RayTrip q, Receiver r, vec3 wsToLight, bool ofPixel) {
+    vec3 n = rayNormal(r);
+    q.start = RayStart(r.position, n, 2.0 * rayMargin(r.position), -1, false);
     int own = rayStartTriangle(r.drawn);
-    float object = own >= 0 ? bvhTexel(uBvhTriangles, 3 * own).w : r.object;
-    bool onOwn = !ofPixel && own >= 0 && rayStartOn(s, r.pixel, own);
+    q.object = own >= 0 ? bvhTexel(uBvhTriangles, 3 * own).w : r.object;
+    bool onOwn = !ofPixel && own >= 0 && rayStartOn(q.start, r.pixel, own);
     bool whole = !ofPixel && own >= 0 && !onOwn;  // the pixel's ray passes beside it
-    bool pixel = ofPixel || whole;
-    if (!onOwn && (pixel || abs(dot(n, wsToLight)) < kOwnTriangleCosine)) {
-        float h = 64.0 * s.margin;
-        vec3 from, view;
-        float t0 = 0.0, t1 = 2.0 * h;
-        if (pixel) {
-            pixelRay(r.pixel, from, view);
-            float along = dot(r.position - from, view);
-            t0 = whole ? 0.0 : max(along - h, 0.0);
-            t1 = whole ? 3.4e38 : along + h;
-        } else {
-            view = normalize(r.position - uEye);
-            from = s.point - h * view;
-        }
-        int tri;
-        float t = bvhTrace(from, view, t0, t1, false, -1, tri);
-        if (t >= 0.0 && (!pixel || int(bvhTexel(uBvhTriangles, 3 * tri).w) == int(object))) {
-            vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz;
-            vec3 g = cross(bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - a,
-                           bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - a);
-            if (length(g) > 0.0) {
-                s.normal = normalize(g);
-                if (pixel) s.point = from + t * view;
-                s.point -= dot(s.point - a, s.normal) * s.normal;
-                s.triangle = tri;
-                s.margin = rayMargin(s.point);
-            }
+    q.pixel = ofPixel || whole;
+    q.anyCaster = false;
+    q.skip = -1;
+    if (onOwn || !(q.pixel || abs(dot(n, wsToLight)) < kOwnTriangleCosine)) return false;
+    float h = 64.0 * q.start.margin;
+    q.t0 = 0.0;
+    q.t1 = 2.0 * h;
+    if (q.pixel) {
+        pixelRay(r.pixel, q.from, q.dir);
+        float along = dot(r.position - q.from, q.dir);
+        q.t0 = whole ? 0.0 : max(along - h, 0.0);
+        q.t1 = whole ? 3.4e38 : along + h;
+    } else {
+        q.dir = normalize(r.position - uEye);
+        q.from = q.start.point - h * q.dir;
+    }
+    return true;
+}
+
+// The start once its search found `t` on triangle `tri` (t < 0: none, or no search): on that
+// triangle's plane with its normal, turned to the side the camera sees.
+void rayStartEnd(inout RayTrip q, vec3 position, float t, int tri) {
+    if (t >= 0.0 && (!q.pixel || int(bvhTexel(uBvhTriangles, 3 * tri).w) == int(q.object))) {
+        vec3 a = bvhTexel(uBvhTriangles, 3 * tri).xyz;
+        vec3 g = cross(bvhTexel(uBvhTriangles, 3 * tri + 1).xyz - a,
+                       bvhTexel(uBvhTriangles, 3 * tri + 2).xyz - a);
+        if (length(g) > 0.0) {
+            q.start.normal = normalize(g);
+            if (q.pixel) q.start.point = q.from + t * q.dir;
+            q.start.point -= dot(q.start.point - a, q.start.normal) * q.start.normal;
+            q.start.triangle = tri;
+            q.start.margin = rayMargin(q.start.point);
         }
     }
-    if (dot(s.normal, uEye - r.position) < 0.0) s.normal = -s.normal;  // the side seen
-    return s;
+    if (dot(q.start.normal, uEye - position) < 0.0) q.start.normal = -q.start.normal;
 }
 
 // How far along the ray its start is skipped: the stretch within the margin of the surface's
@@ -172,54 +211,99 @@ float rayLead(RayStart s, vec3 dir) {
     return s.margin / max(dot(s.normal, dir), kRayEdgeOn);
 }
 
-// The normal a ray leaves by. The plane's normal from the position's derivatives rounds by
-// about 1e-4 radians; a flat face's shading normal is its own exactly, which keeps a face all
-// but edge-on to the light (a wall under a sun at a right angle to it) on one side of
-// kRayEdgeOn throughout.
-vec3 rayNormal(Receiver r) {
-    return length(cross(r.planeNormal, r.normal)) < kFlatFaceSine ? r.normal : r.planeNormal;
-}
-
-// Where the shadow ray from `s` towards `light` first meets a caster (-1: it reaches the
-// light; 0: the start faces away). Directional lights reach from infinitely far; area lights,
-// parallel as they light, from their plane; spot and point lights from their position.
-// `dir`: the ray's direction.
-float rayFrom(RayStart s, LightRecord light, vec3 wsToLight, out vec3 dir) {
-    dir = wsToLight;
-    if (dot(s.normal, wsToLight) <= kRayEdgeOn) return 0.0;
+// The shadow ray from q.start towards `light`: false where it needs no trace, q.t then its
+// answer (0: the start faces away; -1: the light lies within the margin). Directional lights
+// reach from infinitely far; area lights, parallel as they light, from their plane; spot and
+// point lights from their position. The ray passes its own start's triangle: not a caster of
+// its own point.
+bool rayShadowBegin(inout RayTrip q, LightRecord light, vec3 wsToLight) {
+    q.dir = wsToLight;
+    q.t = 0.0;
+    if (dot(q.start.normal, wsToLight) <= kRayEdgeOn) return false;
     float reach = 1e30;
     if (light.type == kArea) {
-        reach = dot(s.point - light.position, normalize(light.direction));
+        reach = dot(q.start.point - light.position, normalize(light.direction));
     } else if (light.type != kDirectional) {
-        vec3 d = light.position - s.point;
+        vec3 d = light.position - q.start.point;
         reach = length(d);
-        dir = d / reach;
+        q.dir = d / reach;
     }
-    float lead = rayLead(s, dir);
-    if (!(reach > lead)) return -1.0;  // the light lies within the margin: nothing to cross
-    int hit;  // the ray leaves s.triangle: not a caster of its own point
-    return bvhTrace(s.point, dir, lead, reach, true, s.triangle, hit);
+    q.from = q.start.point;
+    q.t0 = rayLead(q.start, q.dir);
+    q.t1 = reach;
+    q.anyCaster = true;
+    q.skip = q.start.triangle;
+    q.t = -1.0;
+    return reach > q.t0;
+}
+
+// After the first shadow ray: where the start faces away from the light, or a caster lies
+// within 1/64 pixel of its plane, the raster's point may not lie on the triangle the pixel's
+// own ray meets: its centre within the raster's rounding of an edge (the face beyond it
+// drawn), past the edge behind a neighbour (a concave crease), or behind a surface crossing it
+// that the depth test rounded away. The pixel's own ray's triangle decides.
+bool rayAgain(RayTrip q) {
+    return (q.start.triangle < 0 || q.start.drawn) && q.t >= 0.0 &&
+           (q.t == 0.0 || q.t * dot(q.start.normal, q.dir) < pixelWorld(q.start.point) / 64.0);
+}
+
+// The steps after the one whose trace found `t` (on triangle `hit`) that need no trace, up to
+// the next that does (q.step) or the end (kRayDone, q.t the answer). kRayBegin: the first.
+void rayTripStep(inout RayTrip q, Receiver r, LightRecord light, vec3 wsToLight, float t,
+                 int hit) {
+    if (q.step == kRayBegin) {
+        q.t = -1.0;
+        q.step = kRayFindStart;
+        if (rayStartBegin(q, r, wsToLight, false)) return;
+        t = -1.0;
+    }
+    if (q.step == kRayFindStart) {
+        rayStartEnd(q, r.position, t, hit);
+        q.step = kRayShadow;
+        if (rayShadowBegin(q, light, wsToLight)) return;
+        t = q.t;
+    }
+    if (q.step == kRayShadow) {
+        q.t = t;
+        q.step = kRayDone;
+        if (!rayAgain(q)) return;
+        q.step = kRayFindOwn;
+        if (rayStartBegin(q, r, wsToLight, true)) return;
+        t = -1.0;
+    }
+    if (q.step == kRayFindOwn) {
+        rayStartEnd(q, r.position, t, hit);
+        q.step = kRayDone;
+        if (q.start.triangle < 0) return;  // none found: the first ray's answer stands
+        q.step = kRayShadowOwn;
+        if (rayShadowBegin(q, light, wsToLight)) return;
+        t = q.t;
+    }
+    if (q.step == kRayShadowOwn) {
+        q.t = t;
+        q.step = kRayDone;
+    }
+}
+
+// A trip before its first step, every field set.
+RayTrip rayTrip() {
+    return RayTrip(kRayBegin, RayStart(vec3(0.0), vec3(0.0), 0.0, -1, false), 0.0, false, -1.0,
+                   vec3(0.0), vec3(0.0, 0.0, 1.0), 0.0, 0.0, false, -1);
 }
 
 // The light's visibility at `r` along `wsToLight` (lightAt's direction): 0 when a caster lies
 // between.
 ShadowSample rayVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
+    RayTrip q = rayTrip();
+    rayTripStep(q, r, light, wsToLight, -1.0, -1);
+    while (q.step != kRayDone) {
+        int hit;
+        float t = bvhTrace(q.from, q.dir, q.t0, q.t1, q.anyCaster, q.skip, hit);
+        rayTripStep(q, r, light, wsToLight, t, hit);
+    }
     ShadowSample result = kLitSample;
     result.traced = true;
-    RayStart start = rayStart(r, rayNormal(r), wsToLight, false);
-    vec3 dir;
-    float t = rayFrom(start, light, wsToLight, dir);
-    // Where the start faces away from the light, or a caster lies within 1/64 pixel of its
-    // plane, the raster's point may not lie on the triangle the pixel's own ray meets: its
-    // centre within the raster's rounding of an edge (the face beyond it drawn), past the
-    // edge behind a neighbour (a concave crease), or behind a surface crossing it that the
-    // depth test rounded away. The pixel's own ray's triangle decides.
-    if ((start.triangle < 0 || start.drawn) && t >= 0.0 &&
-        (t == 0.0 || t * dot(start.normal, dir) < pixelWorld(start.point) / 64.0)) {
-        RayStart own = rayStart(r, rayNormal(r), wsToLight, true);
-        if (own.triangle >= 0) t = rayFrom(own, light, wsToLight, dir);
-    }
-    result.visibility = t >= 0.0 ? 0.0 : 1.0;
+    result.visibility = q.t >= 0.0 ? 0.0 : 1.0;
     return result;
 }
 
