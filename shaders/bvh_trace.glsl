@@ -8,7 +8,9 @@
 layout(binding = 12) uniform highp sampler2D uBvhNodes;
 layout(binding = 13) uniform highp sampler2D uBvhTriangles;
 // Masked and blended casters' cut-outs (render/RayMasks.h): texture coordinates and rules per
-// triangle, and the textures' alphas four to a texel.
+// triangle, and the textures' alphas four to a texel. Read only under BVH_CUTOUTS (some caster
+// has them): a CPU driver runs the test's code for every pixel, masked off, wherever it is
+// written.
 layout(binding = 10) uniform highp sampler2D uBvhUvs;
 layout(binding = 11) uniform mediump sampler2D uBvhAlphas;
 
@@ -174,10 +176,12 @@ float bvhTrace(vec3 origin, vec3 dir, float tnear, float tfar, bool anyCaster, i
             vec3 bary;
             float t = bvhHitTriangle(r, c0.xyz, c1.xyz, c2.xyz, tnear, tfar, bary);
             if (t < 0.0) continue;
+#ifdef BVH_CUTOUTS
             // (The test in a bool of its own: in one && chain with a non-constant anyCaster,
             // Mesa 22.3 built a program in which masked casters blocked everywhere.)
             bool filtered = anyCaster && (flags & 2) != 0;
             if (filtered && !bvhTexelBlocks(i, bary)) continue;
+#endif
             best = t;
             tfar = t;
             hit = i;

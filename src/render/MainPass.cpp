@@ -320,9 +320,10 @@ void MainPass::drawShaded(const GpuScene& scene, const RenderOptions& options,
     if (compact) mRayMarks.bindFirstDraw();
     drawItems(scene, options, u, false, floor, Items::Opaque, RayDraw::Mark);
     FrameUniforms second = u;
-    second.rayPyramid = mRayMarks.trace(
-        *in.targetColour, *in.targetDepth,
-        {u.eye, in.rays->scale(), mMaxLights, mOrderCapacity / 4, in.pixelRays}, compact);
+    second.rayPyramid = mRayMarks.trace(*in.targetColour, *in.targetDepth,
+                                        {u.eye, in.rays->scale(), mMaxLights, mOrderCapacity / 4,
+                                         in.pixelRays, in.rays->masks().any()},
+                                        compact);
     scene.bind();
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);

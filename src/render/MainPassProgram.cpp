@@ -7,6 +7,7 @@
 #include "gl/Program.h"
 #include "render/MainPass.h"
 #include "render/MainVariant.h"
+#include "render/RayScene.h"
 
 namespace gnomon::render {
 
@@ -25,6 +26,7 @@ const gl::Program& MainPass::program(const RenderOptions& options, const MainPas
     v.pointFaces = in.pointFaces;
     v.constantFalloff = in.constantFalloff;
     if (!in.rays) v.shadowRays = 0;  // no caster to trace (shadows off, an empty scene)
+    v.rayCutouts = v.shadowRays != 0 && in.rays->masks().any();
     if (v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain)) {
         if (item.rays == RayDraw::Mark) v.shadowRays = MainVariant::kRaysMarked;
         // A job holds two lights; a draw with more shadowed ones (or loops over an unknown

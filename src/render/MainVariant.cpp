@@ -91,6 +91,7 @@ std::vector<std::string> choiceDefines(const MainVariant& v) {
     if (v.shadowRays == MainVariant::kRaysMarked) d.push_back("SHADOW_RAYS_MARK");
     if (v.raysResolve) d.push_back("SHADOW_RAYS_RESOLVE");
     if (v.rayOverflow) d.push_back("RAY_JOB_OVERFLOW");
+    if (v.rayCutouts) d.push_back("BVH_CUTOUTS");
     if (v.debugRays) d.push_back("DEBUG_RAYS");
     if (v.lightLists) d.push_back("LIGHT_LISTS");
     return d;

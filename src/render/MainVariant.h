@@ -60,7 +60,8 @@ struct MainVariant {
     // job's two (RAY_JOB_OVERFLOW: the draw may have more than two shadowed lights).
     Bits raysResolve : 1 = 0;
     Bits rayOverflow : 1 = 0;
-    Bits unused : 2 = 0;
+    Bits rayCutouts : 1 = 0;  // some caster a ray meets is masked or blended (BVH_CUTOUTS)
+    Bits unused : 1 = 0;
 
     // The bits as one number (memcpy: libc++ 14, the web build's, has no std::bit_cast).
     std::uint64_t key() const {

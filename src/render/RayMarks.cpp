@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "gl/Caps.h"
 #include "gl/Program.h"
@@ -177,13 +178,16 @@ void RayMarks::buildPrograms(const RayTraceInputs& in) {
                                         {GL_FRAGMENT_SHADER, "ray_pyramid.frag.glsl"}});
         mEmpty = gl::VertexArray("shadow-ray passes (no attributes)");
     }
-    if (!mTraceProgram || mTraceLights != in.maxLights) {
+    if (!mTraceProgram || mTraceLights != in.maxLights || mTraceCutouts != in.cutouts) {
+        std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(in.maxLights),
+                                            "ORDER_SLOTS " + std::to_string(in.orderSlots)};
+        if (in.cutouts) defines.push_back("BVH_CUTOUTS");
         mTraceProgram = gl::buildProgram("shadow rays of the marked pixels",
                                          {{GL_VERTEX_SHADER, "ray_trace.vert.glsl"},
                                           {GL_FRAGMENT_SHADER, "ray_trace.frag.glsl"}},
-                                         {"MAX_LIGHTS " + std::to_string(in.maxLights),
-                                          "ORDER_SLOTS " + std::to_string(in.orderSlots)});
+                                         defines);
         mTraceLights = in.maxLights;
+        mTraceCutouts = in.cutouts;
     }
 }
 

@@ -42,6 +42,7 @@ struct RayTraceInputs {
     float rayScale = 0.0f;
     int maxLights = 0, orderSlots = 0;
     PixelRayCamera pixelRays;
+    bool cutouts = false;  // some caster's texture decides (RayMasks::any)
 };
 
 class RayMarks {
@@ -83,7 +84,8 @@ private:
     void number(const gl::Texture& colour, glm::ivec4 marked);
 
     gl::Program mMarkProgram, mLevelOne, mLevelAbove, mTraceProgram;
-    int mTraceLights = 0;  // the MAX_LIGHTS mTraceProgram was built for
+    int mTraceLights = 0;        // the MAX_LIGHTS mTraceProgram was built for
+    bool mTraceCutouts = false;  // whether it was built with BVH_CUTOUTS
     gl::VertexArray mEmpty;
     gl::Texture mDepth;        // the marks' depth
     gl::Texture mJobs;         // two layers of RGBA32UI per pixel (main.frag.glsl)

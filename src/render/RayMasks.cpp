@@ -66,6 +66,7 @@ void RayMasks::build(const Scene& scene, const std::vector<RayCaster>& casters,
             bytes.push_back(tex.rgba[i]);
     }
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    mAny = !first.empty();
     if (first.empty()) {
         // A row each, as the shader reads them: its reads run for every pixel on a CPU driver,
         // masked off, and stay inside the texture.

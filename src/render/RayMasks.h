@@ -44,9 +44,13 @@ public:
                const std::vector<bvh::BvhTriangle>& triangles, int rowTexels);
     const gl::Texture& uvs() const { return mUvs; }
     const gl::Texture& alphas() const { return mAlphas; }
+    // Whether any triangle's texture decides: without, the shaders leave the test out
+    // (BVH_CUTOUTS, bvh_trace.glsl).
+    bool any() const { return mAny; }
 
 private:
     gl::Texture mUvs, mAlphas;
+    bool mAny = false;
 };
 
 }  // namespace gnomon::render

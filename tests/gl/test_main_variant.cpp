@@ -88,6 +88,7 @@ TEST(MainVariant, DistinctVariantsHaveDistinctDefines) {
     add([](MainVariant& v) { v.pointFaces = 1; });
     add([](MainVariant& v) { v.constantFalloff = 1; });
     add([](MainVariant& v) { v.noSpecular = 1; });
+    add([](MainVariant& v) { v.shadowRays = 1, v.rayCutouts = 1; });
     for (int kind = 0; kind <= 4; ++kind)
         add([&](MainVariant& v) { v.singleMapKind = MainVariant::Bits(kind); });
     for (int counts = 0; counts < 16 * 16; ++counts) {

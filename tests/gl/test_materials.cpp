@@ -244,6 +244,16 @@ TEST(Materials, ShadowRaysKeepTheCutOuts) {
     std::printf("masked plate, rays: %.4f%% misclassified\n", 100.0 * r.overall.misclassified);
     EXPECT_LE(r.overall.misclassified * double(r.overall.pixels),
               0.00005 * double(r.overall.pixels) + 1.0);
+    // So do the rays of the pixels a coarse map is unsure of (its edges, the cut's among them),
+    // traced in a pass of their own.
+    o.shadow.shadowRays = ShadowRayMode::Uncertain;
+    o.shadow.mapSize = 64;
+    const ScoreResult u = score(sharedRenderer(), texturedPlate(AlphaMode::Mask), o);
+    std::printf("masked plate, uncertain: %.4f%% misclassified, %.2f%% traced\n",
+                100.0 * u.overall.misclassified, 100.0 * u.overall.traced);
+    EXPECT_GT(u.overall.traced, 0.0);
+    EXPECT_LE(u.overall.misclassified * double(u.overall.pixels),
+              0.00005 * double(u.overall.pixels) + 1.0);
 }
 
 TEST(Materials, SrgbOutputEncodesTheLinearColours) {
