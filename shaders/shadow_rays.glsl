@@ -14,7 +14,7 @@ const float kRayEdgeOn = 1e-3;
 const float kFlatFaceSine = 3e-4;
 // The margin of rayLead, as shares of the scene's radius (every object's, as the reference
 // measures it: uRayScale) and of the position's size: the reference's (truth::ShadowRays::lead)
-// where the ray leaves its own triangle (rayStart), twice it elsewhere, for an interpolated
+// where the ray leaves its own triangle (rayStartBegin), twice it elsewhere, for an interpolated
 // position rounds more than one taken from its triangle's corners. Longer, a lead skips the
 // caster a few millimetres above a face all but edge-on to the light (glmark2's cat); shorter,
 // it meets its own surface's neighbours where the reference does not (the cat on a ground ten
@@ -128,8 +128,7 @@ vec3 rayNormal(Receiver r) {
 // start on the pixel's own ray (kRayFindOwn) and a shadow ray from there (kRayShadowOwn). The
 // caller's one loop traces every lane's next ray together. llvmpipe runs a shader as vectors of
 // pixels and a branch as a mask: each traversal written out runs its first steps for every
-// pixel whether it traces or not, so one trace in a loop costs less than four in a row (the
-// rays' pass took as long again with no lane tracing as its tracing took).
+// pixel whether it traces or not, so one trace in a loop costs less than four in a row.
 const int kRayBegin = 0;
 const int kRayFindStart = 1;
 const int kRayShadow = 2;

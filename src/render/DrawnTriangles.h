@@ -1,5 +1,5 @@
 // Which triangle of the scene the main pass drew at a pixel, for a shadow ray to start on it
-// as the reference's ray does (shaders/shadow_rays.glsl's rayStart): every object's triangles
+// as the reference's ray does (shaders/shadow_rays.glsl's rayStartBegin): every object's triangles
 // numbered one after another, objects in the scene's order and each object's triangles in the
 // order its mesh was uploaded (GpuScene reorders them for culling, splitForCulling and
 // cutIntoPieces). A draw's first triangle's number rides with its record (DrawItem's
