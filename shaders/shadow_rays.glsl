@@ -334,7 +334,7 @@ const uint kNoRayRecords = 0x7fff7fffu;
 // a ray must decide, and the pixel's ray job for the rays' pass (ray_trace.frag.glsl).
 // SHADOW_RAYS_RESOLVE (the second): that pass's answers for the lights of the pixel's job, a
 // ray here for any other (RAY_JOB_OVERFLOW: the draw has more than two shadowed lights).
-const float kUnsureCosine = 0.1;
+const float kUnsureCosine = 0.12;
 // main()'s `rayJob`: under SHADOW_RAYS_MARK the records of the lights to trace
 // (kNoRayRecords: none yet), under SHADOW_RAYS_RESOLVE their answers once read (kRayJobUnread:
 // not yet; no answer has the lit bit of an empty half).

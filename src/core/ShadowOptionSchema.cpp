@@ -135,7 +135,7 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
                 "answers where it is sure, a ray "
                 "where its filter's footprint is part lit and part shadowed (edges, thin "
                 "casters), where a texel is lit only within the tolerance band, or where it "
-                "finds lit a surface within 6 degrees of edge-on to the light, traced in a "
+                "finds lit a surface within 7 degrees of edge-on to the light, traced in a "
                 "pass of those pixels alone; under "
                 "pcss and the moment filters, whose penumbra is their look, the map answers "
                 "everywhere",
