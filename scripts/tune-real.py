@@ -6,11 +6,12 @@ whether the defaults are on the error-versus-time front, whether the best's gain
 view moved half a pixel four ways (tune's check: errors, best / defaults, per shift), and how
 long each search took.
 
-Usage: scripts/tune-real.py [--size 512x512] [--only a,b] [--scenes DIR]"""
+Usage: scripts/tune-real.py [--size 512x512] [--only a,b] [--scenes DIR] [--flags "..."]"""
 import argparse
 import json
 import os
 import subprocess
+import shlex
 import sys
 import tempfile
 import time
@@ -28,6 +29,8 @@ def main():
     ap.add_argument("--size", default="512x512")
     ap.add_argument("--only", help="comma-separated view names")
     ap.add_argument("--scenes", default=os.path.join(ROOT, "..", "shared", "scenes"))
+    ap.add_argument("--flags", default="", help="gnomon tune flags added to every view "
+                                                "(its start: \"--shadow-rays off\", the maps alone)")
     args = ap.parse_args()
     if not os.access(GNOMON, os.X_OK):
         sys.exit(f"tune-real: {GNOMON} is missing: run 'make build' first")
@@ -48,7 +51,8 @@ def main():
         out = os.path.join(work, view)
         start = time.monotonic()
         r = subprocess.run([GNOMON, "tune", "--scene", scene, "--size", args.size,
-                            "--out-dir", out], capture_output=True, text=True)
+                            "--out-dir", out] + shlex.split(args.flags),
+                           capture_output=True, text=True)
         seconds = time.monotonic() - start
         if r.returncode != 0:
             print(f"| {view} | failed: {r.stderr.strip()} | | | | | | |", flush=True)

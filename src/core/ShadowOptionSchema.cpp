@@ -122,7 +122,8 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          ENUM(shadow.blendShadows, BlendShadows)});
     add({.name = "shadow-rays",
          .group = G::ShadowMaps,
-         .doc = "all: each shadowed light's hard lookup is one ray through a BVH of the casters "
+         .doc = "off: the maps alone decide (the textbooks' way, and the textbook preset's). "
+                "all: each shadowed light's hard lookup is one ray through a BVH of the casters "
                 "instead of the map (directional and area lights along their direction, area "
                 "lights up to their plane as they light; spot and point lights to their "
                 "position) along the line through the point, its first stretch within a "

@@ -53,6 +53,7 @@ RenderOptions textbookSettings(RenderOptions o, DepthFormat format, MapFilter lo
     o.shadow.receiverPlane = false;
     o.shadow.cull = CullMode::None;
     o.shadow.pointMaps = PointMaps::Cube;  // the tutorial's point light is one cube map
+    o.shadow.shadowRays = ShadowRayMode::Off;
     return o;
 }
 

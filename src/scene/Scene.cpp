@@ -229,6 +229,7 @@ RenderOptions presetOptions(const Scene& scene, Preset preset) {
     o.shadow.cull = CullMode::None;
     o.shadow.filter = ShadowFilter::None;
     o.shadow.mapFilter = MapFilter::Nearest;
+    o.shadow.shadowRays = ShadowRayMode::Off;
     return o;
 }
 

@@ -410,6 +410,7 @@ void readLightingAndOptions(const Fields& root, Included included, Scene& out) {
     out.textbookOptions = included.textbook;
     if (const Json* tj = root.find("textbook-options")) {
         RenderOptions t = included.textbook.value_or(out.options);
+        if (!included.textbook) t.shadow.shadowRays = ShadowRayMode::Off;  // a textbook's maps
         applyOptions(r, *tj, root.at("textbook-options"), t);
         out.textbookOptions = t;
     }

@@ -17,6 +17,7 @@ PathScoreResult dolly(const std::string& pathName, bool stabilise) {
     o.width = o.height = 128;
     o.shadow.mapSize = 256;  // coarse texels: a slide of a fraction of one moves many edges
     o.shadow.stabilise = stabilise;
+    o.shadow.shadowRays = ShadowRayMode::Off;  // the maps' shimmer
     const ScenePath path = makeScenePath(pathName, s, 6);
     const Camera before = s.camera;
     PathScoreResult r = scorePath(sharedRenderer(), s, o, path, {}, true);

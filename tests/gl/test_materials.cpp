@@ -145,6 +145,7 @@ TEST(Materials, TextureTransformMovesTheCut) {
 TEST(Materials, BlendedCastersFollowTheBlendShadowRule) {
     const Scene s = texturedPlate(AlphaMode::Blend, 0.5f, false);
     RenderOptions o = s.options;
+    o.shadow.shadowRays = ShadowRayMode::Off;  // a ray meets the dithered plate whole
     o.shadow.blendShadows = BlendShadows::None;
     const double none = patch(sharedRenderer().render(s, o), 3.4f, 4.6f);
     o.shadow.blendShadows = BlendShadows::Opaque;

@@ -217,6 +217,7 @@ TEST(PointLights, FacesOfTheirOwnResolveWhatACubeBlurs) {
     const Scene s = barOnGround();
     RenderOptions o;
     o.width = o.height = 128;
+    o.shadow.shadowRays = ShadowRayMode::Off;  // what the maps resolve
     auto scored = [&](PointMaps maps, std::vector<MapUsage>& usage) {
         RenderOptions m = o;
         m.shadow.pointMaps = maps;
@@ -246,6 +247,7 @@ TEST(PointLights, AGroundThatCastsNothingLeavesTheMapsToTheBar) {
     const Scene s = barOnGround();
     RenderOptions o;
     o.width = o.height = 128;
+    o.shadow.shadowRays = ShadowRayMode::Off;  // what the maps resolve
     Scene receiveOnly = s;
     receiveOnly.objects[0].castsShadows = false;
     const ShadowScore receiving = score(sharedRenderer(), receiveOnly, o).overall;

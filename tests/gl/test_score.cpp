@@ -148,6 +148,7 @@ TEST(Score, NoBiasIsFalseShadowDefaultsAreNot) {
     bad.shadow.biasSlope = bad.shadow.biasUnits = bad.shadow.normalOffset = 0.0f;
     bad.shadow.cull = CullMode::None;
     bad.shadow.receiverPlane = false;
+    bad.shadow.shadowRays = ShadowRayMode::Off;  // rays where unsure mend acne too
     const ScoreResult acne = score(sharedRenderer(), s, bad);
     EXPECT_GT(acne.overall.falseShadow, 0.10);
     EXPECT_LT(acne.overall.leak, 0.001);

@@ -48,6 +48,7 @@ TEST(ShadowRays, BeatACoarseMap) {
     map.width = map.height = 128;
     map.shadow.mapSize = 64;
     map.shadow.filter = ShadowFilter::None;
+    map.shadow.shadowRays = ShadowRayMode::Off;
     RenderOptions rays = map;
     rays.shadow.shadowRays = ShadowRayMode::All;
     const ScoreResult m = score(sharedRenderer(), s, map);

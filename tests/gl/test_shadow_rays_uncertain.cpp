@@ -55,6 +55,7 @@ TEST(ShadowRaysUncertain, FixACoarseMapsEdges) {
     RenderOptions map = s.options;
     map.width = map.height = 128;
     map.shadow.mapSize = 64;
+    map.shadow.shadowRays = ShadowRayMode::Off;
     RenderOptions rays = map;
     rays.shadow.shadowRays = ShadowRayMode::Uncertain;
     const ScoreResult m = score(sharedRenderer(), s, map);

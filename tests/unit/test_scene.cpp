@@ -342,6 +342,7 @@ TEST(Presets, DefaultIsTheScenesOwnOptions) {
     const RenderOptions o = presetOptions(s, Preset::Default);
     EXPECT_EQ(o.shadow.biasConstant, s.options.shadow.biasConstant);
     EXPECT_EQ(o.shadow.depthFormat, DepthFormat::Depth32F);
+    EXPECT_EQ(o.shadow.shadowRays, ShadowRayMode::Uncertain);  // rays where the map is unsure
 }
 
 TEST(Presets, TextbookCarriesEachTextbooksNumbers) {
@@ -371,6 +372,7 @@ TEST(Presets, TextbookCarriesEachTextbooksNumbers) {
         EXPECT_EQ(t.shadow.normalOffset, 0.0f);
         EXPECT_FALSE(t.shadow.receiverPlane);
         EXPECT_EQ(t.shadow.biasDepthAware, 0.0f);
+        EXPECT_EQ(t.shadow.shadowRays, ShadowRayMode::Off);  // the maps alone decide
     }
 }
 
@@ -381,6 +383,7 @@ TEST(Presets, SceneWithoutTextbookGetsTheConstantToleranceMethod) {
     EXPECT_EQ(t.shadow.biasConstant, 0.005f);
     EXPECT_EQ(t.shadow.filter, ShadowFilter::None);
     EXPECT_EQ(t.shadow.cull, CullMode::None);
+    EXPECT_EQ(t.shadow.shadowRays, ShadowRayMode::Off);
     EXPECT_EQ(parsePreset("textbook"), Preset::Textbook);
     EXPECT_FALSE(parsePreset("fancy").has_value());
 }
