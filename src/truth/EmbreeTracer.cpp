@@ -61,6 +61,9 @@ void checkDevice(RTCDevice device, const char* what) {
 RTCScene buildScene(RTCDevice device, const TracerInput& in, bool castersOnly) {
     const Scene& scene = *in.scene;
     RTCScene s = rtcNewScene(device);
+    // Robust traversal: a ray through the edge two triangles share meets one of them, never
+    // slips between them to a surface behind (a pixel's ray of the reference did, on a lamp).
+    rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const Object& obj = scene.objects[o];
         if (castersOnly && !obj.castsShadows) continue;
