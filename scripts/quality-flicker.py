@@ -41,18 +41,15 @@ their extent while it covers the view; what stabilisation does is in docs/techni
 the spot of `sponza-capitals-spot` the part of its cone the view sees, each held between
 frames the same way; `--fit-to boxes` gives them the fixed cube and the whole cone."""
 
-# (settings name, flags) for every view and path: the defaults, then the maps alone (a ray where
-# the map is unsure would answer most of what their settings change).
-OFF = ["--shadow-rays", "off"]
+# (settings name, flags) for every view and path
 SETTINGS = [
-    ("defaults (pcf 3, cascades auto, stabilised, rays where unsure)", []),
-    ("--shadow-rays off", OFF),
-    ("--shadow-rays off --stabilise off", OFF + ["--stabilise", "off"]),
-    ("--shadow-rays off --cascades 3 --fit-to boxes", OFF + ["--cascades", "3", "--fit-to", "boxes"]),
-    ("--shadow-rays off --cascades 3 --fit-to boxes --stabilise off",
-     OFF + ["--cascades", "3", "--fit-to", "boxes", "--stabilise", "off"]),
-    ("--shadow-rays off --filter none", OFF + ["--filter", "none"]),
-    ("--shadow-rays off --filter poisson", OFF + ["--filter", "poisson"]),
+    ("defaults (pcf 3, cascades auto, stabilised)", []),
+    ("--stabilise off", ["--stabilise", "off"]),
+    ("--cascades 3 --fit-to boxes", ["--cascades", "3", "--fit-to", "boxes"]),
+    ("--cascades 3 --fit-to boxes --stabilise off",
+     ["--cascades", "3", "--fit-to", "boxes", "--stabilise", "off"]),
+    ("--filter none", ["--filter", "none"]),
+    ("--filter poisson", ["--filter", "poisson"]),
     ("--filter pcss", ["--filter", "pcss"]),
 ]
 RUNS = [("tutorial-room", "dolly"), ("tutorial-room", "orbit"), ("sponza-atrium", "dolly"),

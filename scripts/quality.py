@@ -18,21 +18,18 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # tree rebuilds mixes the two builds.
 GNOMON = os.environ.get("GNOMON") or os.path.join(ROOT, "build", "release", "apps", "gnomon", "gnomon")
 
-# (label, flags): the techniques compared on every scene. Beside the defaults (pcf 3 and a ray
-# where the map is unsure), the maps' techniques alone: rays would decide their edges.
-OFF = ["--shadow-rays", "off"]
+# (label, flags): the techniques compared on every scene.
 VARIANTS = [
     ("textbook preset", ["--preset", "textbook"]),
-    ("defaults (pcf 3, rays where unsure)", []),
-    ("maps alone (pcf 3)", OFF),
-    ("pcf 1", ["--pcf-size", "1"] + OFF),
-    ("pcf 5", ["--pcf-size", "5"] + OFF),
-    ("filter none", ["--filter", "none"] + OFF),
-    ("poisson 5", ["--filter", "poisson", "--pcf-size", "5"] + OFF),
+    ("defaults (pcf 3)", []),
+    ("pcf 1", ["--pcf-size", "1"]),
+    ("pcf 5", ["--pcf-size", "5"]),
+    ("filter none", ["--filter", "none"]),
+    ("poisson 5", ["--filter", "poisson", "--pcf-size", "5"]),
     ("pcss", ["--filter", "pcss"]),
     ("evsm4", ["--filter", "evsm4"]),
     ("msm", ["--filter", "msm"]),
-    ("4 cascades", ["--cascades", "4"] + OFF),
+    ("4 cascades", ["--cascades", "4"]),
 ]
 
 # Scenes beyond the built-in ones, each with its own variants: (name, scene file, variants).
@@ -40,7 +37,7 @@ VARIANTS = [
 # for; dithered blend shadows are the rule they replaced.
 EXTRA = [
     ("stained-glass", os.path.join(ROOT, "examples", "stained-glass.json"),
-     [("defaults (coloured)", []), ("blend dithered", ["--blend-shadows", "dithered"] + OFF),
+     [("defaults (coloured)", []), ("blend dithered", ["--blend-shadows", "dithered"]),
       ("pcss", ["--filter", "pcss"]), ("msm", ["--filter", "msm"])]),
 ]
 

@@ -171,11 +171,11 @@ struct ShadowOptions {
     // Screen-space contact shadows: each pixel marches this far (world units) towards each
     // shadowed light through the view's depth, for the contacts a map misses; 0 = off.
     float contactLength = 0.0f;
-    // Uncertain: the map decides where it is sure and a shadow ray where it is not; Off: the
-    // maps alone decide (the textbooks' way); All: a shadow ray per lookup decides (exact hard
+    // Off: the maps alone decide (the textbooks' way); Uncertain: the map decides where it is
+    // sure and a shadow ray where it is not; All: a shadow ray per lookup decides (exact hard
     // shadows, the error and timing reference; no map is drawn but for coloured shadows' tints
     // and --debug-view shadow-map).
-    ShadowRayMode shadowRays = ShadowRayMode::Uncertain;
+    ShadowRayMode shadowRays = ShadowRayMode::Off;
 
     bool operator==(const ShadowOptions&) const = default;
 };

@@ -342,7 +342,7 @@ TEST(Presets, DefaultIsTheScenesOwnOptions) {
     const RenderOptions o = presetOptions(s, Preset::Default);
     EXPECT_EQ(o.shadow.biasConstant, s.options.shadow.biasConstant);
     EXPECT_EQ(o.shadow.depthFormat, DepthFormat::Depth32F);
-    EXPECT_EQ(o.shadow.shadowRays, ShadowRayMode::Uncertain);  // rays where the map is unsure
+    EXPECT_EQ(o.shadow.shadowRays, ShadowRayMode::Off);  // the maps alone
 }
 
 TEST(Presets, TextbookCarriesEachTextbooksNumbers) {
