@@ -165,6 +165,16 @@ void Framebuffer::clearColour(const float rgba[4]) {
     glClearBufferfv(GL_COLOR, 0, rgba);
 }
 
+void Framebuffer::clearUnsignedZero(int buffer) {
+    const GLuint zero[4] = {0, 0, 0, 0};
+    if (dsa()) {
+        glClearNamedFramebufferuiv(id(), GL_COLOR, buffer, zero);
+        return;
+    }
+    EditBinding edit(id());
+    glClearBufferuiv(GL_COLOR, buffer, zero);
+}
+
 void Framebuffer::blitDepthFrom(const Framebuffer& source, int width, int height) {
     if (dsa()) {
         glBlitNamedFramebuffer(source.id(), id(), 0, 0, width, height, 0, 0, width, height,

@@ -29,6 +29,9 @@ GLenum glCheckNamedFramebufferStatus(GLuint, GLenum) {
 void glClearNamedFramebufferfv(GLuint, GLenum, GLint, const GLfloat*) {
     absent("glClearNamedFramebufferfv");
 }
+void glClearNamedFramebufferuiv(GLuint, GLenum, GLint, const GLuint*) {
+    absent("glClearNamedFramebufferuiv");
+}
 void glClearTexImage(GLuint, GLint, GLenum, GLenum, const void*) {
     absent("glClearTexImage");
 }

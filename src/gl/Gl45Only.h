@@ -36,6 +36,7 @@ void glBlitNamedFramebuffer(GLuint, GLuint, GLint, GLint, GLint, GLint, GLint, G
                             GLbitfield, GLenum);
 GLenum glCheckNamedFramebufferStatus(GLuint, GLenum);
 void glClearNamedFramebufferfv(GLuint, GLenum, GLint, const GLfloat*);
+void glClearNamedFramebufferuiv(GLuint, GLenum, GLint, const GLuint*);
 void glClearTexImage(GLuint, GLint, GLenum, GLenum, const void*);
 void glClearTexSubImage(GLuint, GLint, GLint, GLint, GLint, GLsizei, GLsizei, GLsizei, GLenum,
                         GLenum, const void*);

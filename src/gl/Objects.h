@@ -196,6 +196,8 @@ public:
     void drawBuffers(const std::vector<GLenum>& buffers);
     void clearDepth(float depth);
     void clearColour(const float rgba[4]);
+    // Draw buffer `buffer` (an unsigned-integer one) set to 0, under the scissor test if on.
+    void clearUnsignedZero(int buffer);
     // The depth of `source`'s rectangle (0, 0, width, height) copied in.
     void blitDepthFrom(const Framebuffer& source, int width, int height);
 

@@ -102,6 +102,15 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
         mLevels[k].drawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2});
         mLevels[k].checkComplete();
     }
+    // The levels' passes draw only the texels over the image (number()): every other texel
+    // reads 0, as cleared here once. A clear obeys the scissor test, which a tile may have on.
+    const bool scissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+    if (scissor) glDisable(GL_SCISSOR_TEST);
+    for (gl::Framebuffer& levels : mLevels) {
+        for (int buffer = 0; buffer < 3; ++buffer)
+            levels.clearUnsignedZero(buffer);
+    }
+    if (scissor) glEnable(GL_SCISSOR_TEST);
     mTrace = gl::Framebuffer("shadow-ray answers");
     mTrace.attach(GL_COLOR_ATTACHMENT0, mPyramid);
     mTrace.drawColour0();
@@ -202,26 +211,24 @@ void RayMarks::mark(const gl::Texture& colour, const gl::Texture& depth) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-// The pyramid: level one, then the levels above in groups of up to four (a texel of the
-// fourth sums 256 of the level below the group), each group into its columns of mPyramid, of
-// mPyramidRead (which the rays' pass reads while it writes its answers under the pyramid in
-// mPyramid) and of a copy, read by the next group from the other copy. `marked`: x0, y0, x1,
-// y1 of the pixels this draw marked.
+// The pyramid, a level a pass, each into its columns of mPyramid, of mPyramidRead (which the
+// rays' pass reads while it writes its answers under the pyramid in mPyramid) and of a copy,
+// read by the next level from the other copy. A pass draws only the texels over the image
+// (the rest stay as allocate() cleared them): on llvmpipe a pass costs little more than its
+// fragments, and a level a pass measured faster than several levels summed in one.
+// `marked`: x0, y0, x1, y1 of the pixels this draw marked.
 void RayMarks::number(const gl::Texture& colour, glm::ivec4 marked) {
-    constexpr int kGroup = 4;
-    int below = 0;  // the level the last pass drew (0: none yet)
-    for (std::size_t pass = 0; below < mLevelCount; ++pass) {
-        const int first = below + 1, last = below == 0 ? 1 : std::min(below + kGroup, mLevelCount);
-        const int column = mSide - (mSide >> (first - 1));
-        const int width = (mSide >> (first - 1)) - (mSide >> last);  // columns of first..last
+    for (int level = 1; level <= mLevelCount; ++level) {
+        const int pass = level - 1;
         glBindFramebuffer(GL_FRAMEBUFFER, mLevels[pass & 1].id());
-        glViewport(column, 0, width, mSide >> first);
-        gl::use(below == 0 ? mLevelOne : mLevelAbove);
-        bindRaw(14, below == 0 ? colour : mCopies[(pass - 1) & 1]);
-        gl::uniform(0, glm::ivec4(first, last, below, mSide));
+        const int round = (1 << level) - 1;
+        glViewport(mSide - (mSide >> (level - 1)), 0, (mWidth + round) >> level,
+                   (mHeight + round) >> level);
+        gl::use(level == 1 ? mLevelOne : mLevelAbove);
+        bindRaw(14, level == 1 ? colour : mCopies[(pass - 1) & 1]);
+        gl::uniform(0, glm::ivec2(level, mSide));
         gl::uniform(1, marked);
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        below = last;
     }
 }
 
