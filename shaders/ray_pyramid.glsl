@@ -1,14 +1,29 @@
-// The ray jobs' numbering (render/RayMarks.h): a histogram pyramid (Ziegler, Tevs, Theobalt and
-// Seidel, "On-the-fly Point Clouds through Histogram Pyramids", 2006) over the pixels the main
-// pass's first draw marked. It numbers them 0..N-1 in a fixed order, so that a pass of N
-// fragments traces one marked pixel each with every lane of a vector busy, and a marked pixel
-// finds its number again. Level 1 holds, per 2x2 block of pixels, a mask of the marked ones
-// (bit (y & 1) * 2 + (x & 1)); each level above, per 2x2 block of the one below, their count;
-// the top level L, one texel, the total. The levels lie side by side in one R32UI texture:
-// level l, (P >> l) texels square, from column P - (P >> (l - 1)); from row P / 2 the rays'
-// answers follow (ray_trace.frag.glsl, rayAnswerTexel).
+// The ray jobs' numbering (render/RayMarks.h): the pixels the main pass's first draw marked,
+// numbered 0..N-1 so that a pass of N fragments traces one marked pixel each with every lane
+// of a vector busy.
+// OpenGL 4.5: a list. The marks pass (ray_marks.frag.glsl) counts them with an image atomic
+// in texel (0, 0) and writes each marked pixel, x | y << 16, at its number's rayAnswerTexel.
+// OpenGL ES 3.0 (WebGL2), which has no image stores: a histogram pyramid (Ziegler, Tevs,
+// Theobalt and Seidel, "On-the-fly Point Clouds through Histogram Pyramids", 2006), in a fixed
+// order, from which a marked pixel also finds its number again. Level 1 holds, per 2x2 block of
+// pixels, a mask of the marked ones (bit (y & 1) * 2 + (x & 1)); each level above, per 2x2
+// block of the one below, their count; the top level L, one texel, the total. The levels lie
+// side by side in one R32UI texture: level l, (P >> l) texels square, from column
+// P - (P >> (l - 1)); from row P / 2 the rays' answers follow (ray_answers.glsl).
+#include "ray_answers.glsl"
 layout(binding = 14) uniform highp usampler2D uRayPyramid;
-layout(location = 17) uniform ivec2 uRayPyramidSize;  // P (a power of two), L = log2 P
+
+#ifndef GNOMON_GLES
+int rayJobCount() {
+    return int(texelFetch(uRayPyramid, ivec2(0), 0).r);
+}
+
+// The marked pixel numbered j (below rayJobCount()).
+ivec2 rayJobPixel(int j) {
+    uint v = texelFetch(uRayPyramid, rayAnswerTexel(j), 0).r;
+    return ivec2(int(v & 0xffffu), int(v >> 16));
+}
+#else
 
 ivec2 rayPyramidTexel(int level, ivec2 c) {
     return ivec2(uRayPyramidSize.x - (uRayPyramidSize.x >> (level - 1)) + c.x, c.y);
@@ -76,17 +91,4 @@ ivec2 rayJobPixel(int j) {
     }
     return 2 * c + ivec2(bit & 1, bit >> 1);
 }
-
-// Where job j's answer lies, from row P / 2 of the pyramid's texture: sixteen jobs to a 4x4
-// block of texels, the block llvmpipe shades at once (neighbours in the numbering lie near each
-// other on screen, and their rays take about as long), P / 4 blocks to a row.
-ivec2 rayAnswerTexel(int j) {
-    int block = j >> 4, blocksPerRow = uRayPyramidSize.x >> 2;
-    return ivec2((block % blocksPerRow) * 4 + (j & 3),
-                 uRayPyramidSize.x / 2 + (block / blocksPerRow) * 4 + ((j >> 2) & 3));
-}
-
-// The job whose answer lies at texel t of the answers (their row 0 at the pyramid's P / 2).
-int rayJobAt(ivec2 t) {
-    return ((t.y >> 2) * (uRayPyramidSize.x >> 2) + (t.x >> 2)) * 16 + (t.y & 3) * 4 + (t.x & 3);
-}
+#endif

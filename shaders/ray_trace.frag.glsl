@@ -3,7 +3,9 @@
 // fragment per marked pixel (ray_pyramid.glsl numbers them): the pixel's ray job (its point,
 // its normal, the records of up to two lights a map was unsure of: shadow_rays.glsl's
 // SHADOW_RAYS_MARK) traced as the main pass would (rayVisibility), each light's answer as the
-// top bit of its record's half.
+// top bit of its record's half: under the pyramid in its fragment's texel and, on OpenGL 4.5,
+// at the pixel too, where the second draw reads it (ES 3.0 has no image stores: the second
+// draw finds the pixel's number in the pyramid).
 #include "lights.glsl"
 #include "shadow_sample.glsl"
 layout(location = 5) uniform vec3 uEye;
@@ -11,6 +13,9 @@ layout(location = 5) uniform vec3 uEye;
 #include "shadow_rays.glsl"
 layout(binding = 15) uniform highp usampler2DArray uRayJobs;
 layout(location = 0) out uint fResult;
+#ifndef GNOMON_GLES
+layout(r32ui, binding = 1) uniform writeonly uimage2D uRayAnswersImage;
+#endif
 
 // Past slot `slot` (-1: before the first), the job's next light: its slot (2: none left),
 // light and direction, and the first steps of its rays (rayTripStep).
@@ -68,4 +73,7 @@ void main() {
         }
     }
     fResult = result;
+#ifndef GNOMON_GLES
+    imageStore(uRayAnswersImage, p, uvec4(result));
+#endif
 }

@@ -355,11 +355,16 @@ void noteRayJob(inout uint job, int record) {
     fRayJobNormal = uvec4(floatBitsToUint(rayNormal(r)), uint(r.object));
 #elif defined(SHADOW_RAYS_RESOLVE)
 #define RAY_JOB_START kRayJobUnread
+#ifdef GNOMON_GLES
 #include "ray_pyramid.glsl"
+#define RAY_ANSWER_OF(p) texelFetch(uRayPyramid, rayAnswerTexel(rayJobOf(p)), 0).r
+#else
+layout(binding = 14) uniform highp usampler2D uRayAnswers;  // per pixel (ray_trace.frag.glsl)
+#define RAY_ANSWER_OF(p) texelFetch(uRayAnswers, p, 0).r
+#endif
 // 1 or 0 when this pixel's job traced `record`'s light (visible or not); -1 when it did not.
 int rayJobAnswer(inout uint job, int record) {
-    if (job == kRayJobUnread)
-        job = texelFetch(uRayPyramid, rayAnswerTexel(rayJobOf(ivec2(gl_FragCoord.xy))), 0).r;
+    if (job == kRayJobUnread) job = RAY_ANSWER_OF(ivec2(gl_FragCoord.xy));
     if ((job & kRayRecordBits) == uint(record)) return int((job & kRayLitBit) != 0u);
     uint high = job >> 16;
     if ((high & kRayRecordBits) == uint(record)) return int((high & kRayLitBit) != 0u);

@@ -25,10 +25,10 @@ void setSrgbWrites(bool on) {
     on ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
-void bindImage(int unit, const Texture& texture, GLenum format) {
+void bindImage(int unit, const Texture& texture, GLenum format, GLenum access) {
     requireImages();
     const GLboolean layered = texture.target() == GL_TEXTURE_2D ? GL_FALSE : GL_TRUE;
-    glBindImageTexture(GLuint(unit), texture.id(), 0, layered, 0, GL_WRITE_ONLY, format);
+    glBindImageTexture(GLuint(unit), texture.id(), 0, layered, 0, access, format);
 }
 
 void unbindImage(int unit, GLenum format) {
@@ -39,6 +39,12 @@ void unbindImage(int unit, GLenum format) {
 void imageStoresDone() {
     requireImages();
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+void imageStoresRead() {
+    requireImages();
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 #ifdef __EMSCRIPTEN__

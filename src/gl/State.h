@@ -13,11 +13,14 @@ void setDepthClamp(bool on);
 // Linear-to-sRGB encoding of writes to sRGB targets. ES always encodes, so this switch
 // exists only on OpenGL 4.5 (Caps::srgbWriteControl).
 void setSrgbWrites(bool on);
-// `texture` (level 0, every layer) as image unit `unit`, write only, texels of `format`.
-void bindImage(int unit, const Texture& texture, GLenum format);
+// `texture` (level 0, every layer) as image unit `unit`, texels of `format`; `access`
+// GL_READ_WRITE for image atomics.
+void bindImage(int unit, const Texture& texture, GLenum format, GLenum access = GL_WRITE_ONLY);
 void unbindImage(int unit, GLenum format);
 // Image stores made so far are seen by texture reads and readbacks that follow.
 void imageStoresDone();
+// ... and also by the image loads, atomics and texture clears of later passes.
+void imageStoresRead();
 
 // Waits until the GPU has done every command given so far (pass timing). glFinish natively; a
 // browser's WebGL finish() does not wait, so in the page a one-texel read of a target of its

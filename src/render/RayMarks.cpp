@@ -6,6 +6,7 @@
 
 #include "gl/Caps.h"
 #include "gl/Program.h"
+#include "gl/State.h"
 #include "gnomon/Error.h"
 #include "scene/CameraMath.h"
 
@@ -72,12 +73,13 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mColour = mFrameDepth = 0;  // set once all is made: a refusal leaves nothing half made
     mLastCount = -1;            // a count of another size's pixels says nothing here
     mCounting = false;
-    mSide = 4;  // answers lie in blocks of 4x4 (ray_pyramid.glsl)
+    mSide = 4;  // answers lie in blocks of 4x4 (ray_answers.glsl)
     mLevelCount = 2;
     while (mSide < std::max(mWidth, mHeight)) {
         mSide *= 2;
         ++mLevelCount;
     }
+    mList = gl::activeCaps().api == gl::Api::Gl45;
     mDepth = gl::Texture::plain2D("shadow-ray marks", GL_DEPTH_COMPONENT32F, mWidth, mHeight);
     mJobs = gl::Texture::array2D("shadow-ray jobs", GL_RGBA32UI, mWidth, mHeight, 2);
     require(mJobs, "the ray jobs of the output's pixels", 32LL * mWidth * mHeight);
@@ -87,12 +89,30 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     mResultRows = 4 * int((pixels + 4 * mSide - 1) / (4 * mSide));
     mPyramid = integers("shadow-ray pyramid and answers", mSide, mSide / 2 + mResultRows);
     // The same size as the pyramid's: WebGL draws into no framebuffer whose attachments differ.
-    mPyramidRead = integers("shadow-ray pyramid", mSide, mSide / 2 + mResultRows);
-    for (gl::Texture& copy : mCopies)
+    mPyramidRead =
+        integers(mList ? "shadow-ray list" : "shadow-ray pyramid", mSide, mSide / 2 + mResultRows);
+    const long long numbering = 4LL * mSide * (mSide / 2 + mResultRows);
+    for (const gl::Texture* t : {&mPyramid, &mPyramidRead})
+        require(*t, "the numbering of the marked pixels", (mList ? 2 : 4) * numbering);
+    if (mList) {
+        mAnswers = integers("shadow-ray answers", mWidth, mHeight);
+        require(mAnswers, "the rays' answers", 4LL * mWidth * mHeight);
+    } else {
+        allocateLevels(numbering);
+    }
+    mTrace = gl::Framebuffer("shadow-ray answers");
+    mTrace.attach(GL_COLOR_ATTACHMENT0, mPyramid);
+    mTrace.drawColour0();
+    mTrace.checkComplete();
+    allocateDraws(colour, depth);
+}
+
+// The pyramid's levels (ES 3.0): copies for each level to read the last from, and their
+// framebuffers, all cleared to 0 (number()). `bytes`: one texture's size.
+void RayMarks::allocateLevels(long long bytes) {
+    for (gl::Texture& copy : mCopies) {
         copy = integers("shadow-ray pyramid level", mSide, mSide / 2 + mResultRows);
-    for (const gl::Texture* t : {&mPyramid, &mPyramidRead, &mCopies[0], &mCopies[1]}) {
-        require(*t, "the numbering of the marked pixels",
-                4LL * 4 * mSide * (mSide / 2 + mResultRows));
+        require(copy, "the numbering of the marked pixels", 4 * bytes);
     }
     for (std::size_t k = 0; k < 2; ++k) {
         mLevels[k] = gl::Framebuffer("shadow-ray pyramid");
@@ -111,11 +131,10 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
             levels.clearUnsignedZero(buffer);
     }
     if (scissor) glEnable(GL_SCISSOR_TEST);
-    mTrace = gl::Framebuffer("shadow-ray answers");
-    mTrace.attach(GL_COLOR_ATTACHMENT0, mPyramid);
-    mTrace.drawColour0();
-    mTrace.checkComplete();
+}
 
+// The first draw's target, the marks' and the second draw's.
+void RayMarks::allocateDraws(const gl::Texture& colour, const gl::Texture& depth) {
     mFirst = gl::Framebuffer("shadow-ray first draw");
     mFirst.attach(GL_COLOR_ATTACHMENT0, colour);
     mFirst.attachLayer(GL_COLOR_ATTACHMENT1, mJobs, 0);
@@ -178,6 +197,15 @@ void RayMarks::buildPrograms(const RayTraceInputs& in) {
         mMarkProgram =
             gl::buildProgram("shadow-ray marks", {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                                   {GL_FRAGMENT_SHADER, "ray_marks.frag.glsl"}});
+        mEmpty = gl::VertexArray("shadow-ray passes (no attributes)");
+    }
+    if (mList && !mListProgram) {
+        mListProgram = gl::buildProgram("shadow-ray list",
+                                        {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                         {GL_FRAGMENT_SHADER, "ray_list.frag.glsl"}},
+                                        {"AT_NEAR"});
+    }
+    if (!mList && !mLevelOne) {
         mLevelOne = gl::buildProgram("shadow-ray pyramid (marks)",
                                      {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                       {GL_FRAGMENT_SHADER, "ray_pyramid.frag.glsl"}},
@@ -185,7 +213,6 @@ void RayMarks::buildPrograms(const RayTraceInputs& in) {
         mLevelAbove = gl::buildProgram("shadow-ray pyramid (counts)",
                                        {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
                                         {GL_FRAGMENT_SHADER, "ray_pyramid.frag.glsl"}});
-        mEmpty = gl::VertexArray("shadow-ray passes (no attributes)");
     }
     if (!mTraceProgram || mTraceLights != in.maxLights || mTraceCutouts != in.cutouts) {
         std::vector<std::string> defines = {"MAX_LIGHTS " + std::to_string(in.maxLights),
@@ -209,6 +236,21 @@ void RayMarks::mark(const gl::Texture& colour, const gl::Texture& depth) {
     bindRaw(14, colour);
     bindRaw(15, depth);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// OpenGL 4.5: the marked pixels listed (ray_list.frag.glsl), over the marks' depth, its count
+// first set to 0.
+void RayMarks::list() {
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    gl::use(mListProgram);
+    mPyramidRead.clearUnsignedZero(0, 0, 1, 1);
+    gl::imageStoresRead();
+    gl::bindImage(0, mPyramidRead, GL_R32UI, GL_READ_WRITE);
+    gl::uniform(17, glm::ivec2(mSide, mLevelCount));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    gl::imageStoresRead();
+    gl::unbindImage(0, GL_R32UI);
 }
 
 // The pyramid, a level a pass, each into its columns of mPyramid, of mPyramidRead (which the
@@ -242,6 +284,7 @@ glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
         return glm::ivec2(0);
     }
 
+    if (mList) list();  // under a tile's scissor: only the pixels this draw marked
     const bool scissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
     glm::ivec4 marked(0, 0, mWidth, mHeight);
     if (scissor) {
@@ -249,7 +292,7 @@ glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
         marked = glm::ivec4(marked.x, marked.y, marked.x + marked.z, marked.y + marked.w);
         glDisable(GL_SCISSOR_TEST);
     }
-    number(colour, marked);
+    if (!mList) number(colour, marked);
 
     const glm::ivec2 numbering(mSide, mLevelCount);
     glBindFramebuffer(GL_FRAMEBUFFER, mTrace.id());
@@ -262,13 +305,18 @@ glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
     gl::uniform(16, in.rayScale);
     gl::uniform(17, numbering);
     setPixelRayUniforms(in.pixelRays);
+    if (mList) gl::bindImage(1, mAnswers, GL_R32UI);
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    if (mList) {
+        gl::imageStoresRead();
+        gl::unbindImage(1, GL_R32UI);
+    }
 
     if (scissor) glEnable(GL_SCISSOR_TEST);
     glViewport(0, 0, mWidth, mHeight);
     glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
-    bindRaw(14, mPyramid);
-    return numbering;
+    bindRaw(14, mList ? mAnswers : mPyramid);
+    return mList ? glm::ivec2(0) : numbering;
 }
 
 }  // namespace gnomon::render

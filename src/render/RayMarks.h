@@ -3,8 +3,9 @@
 // where some lookup was unsure and, into bindFirstDraw()'s target, beside the colour that
 // pixel's ray job (its point, normal and the lights to trace: main.frag.glsl's
 // SHADOW_RAYS_MARK). Then trace() turns the marked pixels into a depth target holding their
-// depth and 0 elsewhere, numbers them (a histogram pyramid, shaders/ray_pyramid.glsl) and
-// traces their jobs in a pass of one fragment per marked pixel (ray_trace.frag.glsl); the
+// depth and 0 elsewhere, numbers them (OpenGL 4.5: a list the marks pass appends to; ES 3.0: a
+// histogram pyramid; shaders/ray_pyramid.glsl) and traces their jobs in a pass of one fragment
+// per marked pixel (ray_trace.frag.glsl); the
 // opaque surfaces drawn again into target() (depth LEQUAL, no writes) are shaded only there,
 // with those rays' answers (SHADOW_RAYS_RESOLVE). A frame with few marked pixels skips the
 // jobs and the pass, and its second draw traces them itself (compacts()). On a CPU driver an `if`
@@ -63,9 +64,10 @@ public:
     // beside them (draw buffers 1 and 2).
     void bindFirstDraw();
     // After the first draw: marks the pixels whose alpha in `colour` is 0 with their depth from
-    // `depth`, and leaves target() bound. With `compact`, also numbers them, traces their jobs,
-    // binds the numbering and the answers on texture unit 14 and returns the numbering's size
-    // (P, log2 P) for the second draw's programs (ray_pyramid.glsl; 0 without `compact`);
+    // `depth`, and leaves target() bound. With `compact`, also numbers them, traces their jobs
+    // and binds the answers on texture unit 14: on OpenGL 4.5 at their pixels (returns 0); on
+    // ES 3.0 under the numbering, and returns its size (P, log2 P) for the second draw's
+    // programs (ray_pyramid.glsl). Without `compact`, returns 0;
     // unit 15 is left to the caller to bind again (the scene's object records). The light records,
     // casters and their masks stay bound as the main pass left them; the viewport is put back on
     // `colour`, the scissor as it was (a screen tile's: only its pixels are marked).
@@ -79,18 +81,24 @@ public:
 
 private:
     void allocate(const gl::Texture& colour, const gl::Texture& depth);
+    void allocateLevels(long long bytes);
+    void allocateDraws(const gl::Texture& colour, const gl::Texture& depth);
     void buildPrograms(const RayTraceInputs& in);
     void mark(const gl::Texture& colour, const gl::Texture& depth);
     void number(const gl::Texture& colour, glm::ivec4 marked);
+    void list();
 
-    gl::Program mMarkProgram, mLevelOne, mLevelAbove, mTraceProgram;
+    gl::Program mMarkProgram, mLevelOne, mLevelAbove, mListProgram, mTraceProgram;
     int mTraceLights = 0;        // the MAX_LIGHTS mTraceProgram was built for
     bool mTraceCutouts = false;  // whether it was built with BVH_CUTOUTS
     gl::VertexArray mEmpty;
-    gl::Texture mDepth;        // the marks' depth
-    gl::Texture mJobs;         // two layers of RGBA32UI per pixel (main.frag.glsl)
-    gl::Texture mPyramid;      // every level side by side (ray_pyramid.glsl), answers under
-    gl::Texture mPyramidRead;  // the levels again, for the rays' pass to read
+    gl::Texture mDepth;    // the marks' depth
+    gl::Texture mJobs;     // two layers of RGBA32UI per pixel (main.frag.glsl)
+    gl::Texture mPyramid;  // every level side by side (ray_pyramid.glsl), answers under
+    gl::Texture
+        mPyramidRead;      // the levels again, for the rays' pass to read (OpenGL 4.5: the list)
+    gl::Texture mAnswers;  // OpenGL 4.5: the rays' answers at their pixels
+    bool mList = false;    // OpenGL 4.5: the marks pass lists the marked pixels
     std::array<gl::Texture, 2> mCopies;  // the last level drawn, for the next one to read
     int mResultRows = 1;                 // rows of answers under the pyramid
     gl::Framebuffer mFirst, mMarks, mTarget, mTrace;

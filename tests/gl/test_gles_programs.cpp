@@ -72,6 +72,17 @@ void checkProgram(const Spec& spec) {
         wanted = activeIn(native, sources);
     }
     wanted.samplers.erase("uRayStarts");
+    // --shadow-rays uncertain numbers its ray jobs per API (render/RayMarks.h): on OpenGL 4.5
+    // the marks pass lists them where their answers will lie (uRayPyramidSize) and the second
+    // draw reads the answers at their pixels (uRayAnswers); on ES the pyramid's passes number
+    // them and the second draw reads the answers through it.
+    if (spec.label == "shadow-ray marks") wanted.uniforms.erase("uRayPyramidSize");
+    if (std::find(spec.defines.begin(), spec.defines.end(), "SHADOW_RAYS_RESOLVE") !=
+        spec.defines.end()) {
+        wanted.samplers.erase("uRayAnswers");
+        wanted.samplers.insert("uRayPyramid");
+        wanted.uniforms.insert("uRayPyramidSize");
+    }
     for (const gl::AssembledSource& s : sources) {
         if (std::find(s.locations.begin(), s.locations.end(),
                       gl::FixedSlot{gl::kDrawBaseLocation, "uDrawBase"}) != s.locations.end()) {
@@ -352,9 +363,15 @@ int lineStarting(const std::string& file, const std::string& start) {
     return 0;
 }
 
-// What WebGL2 cannot have fails where it is asked for: gl_Layer's extension.
+// What WebGL2 cannot have fails where it is asked for: gl_Layer's extension; the image atomics
+// of the shadow rays' list (render/RayMarks.h numbers them in a pyramid there).
 TEST(GlesPrograms, WebGL2Lacks) {
     useEs();
+    EXPECT_THROW(gl::buildProgram("shadow-ray list",
+                                  {{GL_VERTEX_SHADER, "fullscreen.vert.glsl"},
+                                   {GL_FRAGMENT_SHADER, "ray_list.frag.glsl"}},
+                                  {"AT_NEAR"}),
+                 Error);
     try {
         gl::buildProgram("shadow depth cube", {{GL_VERTEX_SHADER, "depth_cube.vert.glsl"}});
         ADD_FAILURE() << "depth_cube.vert compiled in GLSL ES: build it there too";
@@ -411,7 +428,8 @@ TEST(GlesPrograms, EveryRootShaderIsBuilt) {
         "moments.frag.glsl",     "debug_maps.frag.glsl",   "debug_lines.vert.glsl",
         "debug_lines.frag.glsl", "main.vert.glsl",         "main.frag.glsl",
         "depth_cube.vert.glsl",  "bvh_rays.frag.glsl",     "ray_marks.frag.glsl",
-        "ray_pyramid.frag.glsl", "ray_trace.vert.glsl",    "ray_trace.frag.glsl"};
+        "ray_pyramid.frag.glsl", "ray_trace.vert.glsl",    "ray_trace.frag.glsl",
+        "ray_list.frag.glsl"};
     for (const std::string& name : gl::embeddedShaderNames()) {
         if (name.ends_with(".vert.glsl") || name.ends_with(".frag.glsl")) {
             EXPECT_EQ(built.count(name), 1u) << name;

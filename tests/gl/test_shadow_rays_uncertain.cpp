@@ -129,6 +129,23 @@ TEST(ShadowRaysUncertain, EitherWayTheRaysRunPaintsTheSame) {
     EXPECT_TRUE(opaque);
 }
 
+// A main pass drawn a screen tile at a time marks, numbers and traces each tile's pixels in
+// turn (only those: the others keep the answers of their own tile): the untiled picture.
+TEST(ShadowRaysUncertain, ScreenTilesPaintTheSame) {
+    const Scene s = builtinScene("mixed-lights");
+    RenderOptions o = uncertain(s, 256);
+    o.height = 251;  // a size of its own: every tile takes the rays' pass
+    o.shading.lightTiles = LightTiles::Draws;
+    Renderer& renderer = sharedRenderer();
+    const Image tiled = renderer.render(s, o);
+    EXPECT_GT(renderer.lastFrameStats().lightTiles, 1);
+    EXPECT_EQ(renderer.lastFrameStats().shadowRayPasses, renderer.lastFrameStats().lightTiles);
+    o.shading.lightTiles = LightTiles::Off;
+    bool opaque = false;
+    EXPECT_EQ(differing(tiled, renderer.render(s, o), opaque), 0);
+    EXPECT_TRUE(opaque);
+}
+
 // PCSS and the moment filters keep their penumbra: no hierarchy, no ray, the same picture.
 TEST(ShadowRaysUncertain, PenumbraFiltersKeepTheirLook) {
     const Scene s = builtinScene("tutorial-room");
