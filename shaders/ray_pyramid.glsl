@@ -1,8 +1,9 @@
 // The ray jobs' numbering (render/RayMarks.h): the pixels the main pass's first draw marked,
 // numbered 0..N-1 so that a pass of N fragments traces one marked pixel each with every lane
 // of a vector busy.
-// OpenGL 4.5: a list. The marks pass (ray_marks.frag.glsl) counts them with an image atomic
-// in texel (0, 0) and writes each marked pixel, x | y << 16, at its number's rayAnswerTexel.
+// OpenGL 4.5: a list. A pass over the marks (ray_list.frag.glsl) counts them with an image
+// atomic in texel (0, 0) and writes each marked pixel, x | y << 16, at its number's
+// rayAnswerTexel.
 // OpenGL ES 3.0 (WebGL2), which has no image stores: a histogram pyramid (Ziegler, Tevs,
 // Theobalt and Seidel, "On-the-fly Point Clouds through Histogram Pyramids", 2006), in a fixed
 // order, from which a marked pixel also finds its number again. Level 1 holds, per 2x2 block of
