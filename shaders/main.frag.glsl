@@ -22,7 +22,7 @@
 // BVH (shadow_rays.glsl); SHADOW_RAYS_MARK: maps' answers, alpha 0 and a ray job where rays
 // must decide; SHADOW_RAYS_RESOLVE: the answers of those rays (render/RayMarks.h).
 // RAYS_FROM_DRAWN: as main.vert.glsl defines it.
-#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN) && !defined(GNOMON_GLES)
+#if defined(SHADOW_RAYS) && !defined(GNOMON_GLES)
 #define RAYS_FROM_DRAWN
 #endif
 #include "lights.glsl"

@@ -3,10 +3,10 @@
 // looked up, and to clip space for the rasteriser. (Lighting in view space too would cost
 // two more interpolated vectors and a rotation per light.)
 #include "scene_data.glsl"
-// RAYS_FROM_DRAWN: --shadow-rays all on OpenGL 4.5 starts each ray on the triangle drawn
-// (render/DrawnTriangles.h, shadow_rays.glsl's rayStartBegin). Not under uncertain, whose map
-// decides most pixels: its main pass measured slower for it (docs/techniques/shadow-maps.md).
-#if defined(SHADOW_RAYS) && !defined(SHADOW_RAYS_UNCERTAIN) && !defined(GNOMON_GLES)
+// RAYS_FROM_DRAWN: shadow rays on OpenGL 4.5 start on the triangle drawn
+// (render/DrawnTriangles.h, shadow_rays.glsl's rayStartBegin); uncertain's first draw writes it
+// into the pixel's ray job (shadow_rays.glsl's rayJobSurface).
+#if defined(SHADOW_RAYS) && !defined(GNOMON_GLES)
 #define RAYS_FROM_DRAWN
 #endif
 

@@ -52,8 +52,9 @@ void main() {
     r.viewDepth = 0.0;
     r.standInError = 0.0;
     r.pixel = vec2(p) + 0.5;
-    r.object = float(normal.w);
-    r.drawn = -1;  // uncertain's draws name no triangle (main.frag.glsl's RAYS_FROM_DRAWN)
+    bool drawn = (normal.w & 0x80000000u) == 0u;
+    r.object = drawn ? -1.0 : float(normal.w & 0x7fffffffu);
+    r.drawn = drawn ? int(normal.w) : -1;
     uint result = job.w;
     // Both lights' rays in one loop of one trace (shadow_rays.glsl's RayTrip): each lane goes
     // on to its second light as soon as its first is answered.

@@ -74,8 +74,7 @@ void pixelRay(vec2 pixel, out vec3 from, out vec3 dir) {
 
 // The hierarchy's triangle the main pass drew as triangle `drawn` (render/DrawnTriangles.h),
 // from render::RayScene's start table (four to a texel, as floats); -1 where it is none (no
-// caster, not known: uncertain's draws and WebGL2's name none, main.frag.glsl's
-// RAYS_FROM_DRAWN).
+// caster, not known: WebGL2's draws name none, main.frag.glsl's RAYS_FROM_DRAWN).
 #ifndef GNOMON_GLES
 layout(binding = 16) uniform highp sampler2D uRayStarts;
 #endif
@@ -350,9 +349,13 @@ void noteRayJob(inout uint job, int record) {
         job = (job & kRayRecordBits) | (uint(record) << 16);
     }
 }
+// The job's surface: the triangle drawn where known, else the object with the top bit set.
+uint rayJobSurface(Receiver r) {
+    return r.drawn >= 0 ? uint(r.drawn) : (0x80000000u | uint(r.object));
+}
 #define WRITE_RAY_JOB(r, job)                                   \
     fRayJob = uvec4(floatBitsToUint(r.position), job);          \
-    fRayJobNormal = uvec4(floatBitsToUint(rayNormal(r)), uint(r.object));
+    fRayJobNormal = uvec4(floatBitsToUint(rayNormal(r)), rayJobSurface(r));
 #elif defined(SHADOW_RAYS_RESOLVE)
 #define RAY_JOB_START kRayJobUnread
 #ifdef GNOMON_GLES

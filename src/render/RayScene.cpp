@@ -65,9 +65,9 @@ const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& opti
     const std::uint64_t before = mBuilds;
     update(scene, options.time, gpuScene.revision(), gpuScene.geometryHash(), options.shadow);
     built = int(mBuilds - before);
-    // Under all on OpenGL 4.5 the main pass names the triangle it drew (main.frag.glsl's
+    // With rays on OpenGL 4.5 the main pass names the triangle it drew (main.frag.glsl's
     // RAYS_FROM_DRAWN).
-    if (gl::activeCaps().drawIndirect && options.shadow.shadowRays == ShadowRayMode::All)
+    if (gl::activeCaps().drawIndirect && options.shadow.shadowRays != ShadowRayMode::Off)
         updateStarts(gpuScene.drawnTriangles());
     return this;
 }
