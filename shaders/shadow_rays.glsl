@@ -341,7 +341,7 @@ const uint kRayJobUnread = 0xffffffffu;
 #ifdef SHADOW_RAYS_MARK
 #define RAY_JOB_START kNoRayRecords
 layout(location = 1) out uvec4 fRayJob;        // the point's bits, the lights' records
-layout(location = 2) out uvec4 fRayJobNormal;  // rayNormal's bits
+layout(location = 2) out uvec4 fRayJobNormal;  // rayNormal's bits, rayJobSurface
 void noteRayJob(inout uint job, int record) {
     if ((job & kRayRecordBits) == kNoRayRecord) {
         job = (job & ~kRayRecordBits) | uint(record);
