@@ -5,7 +5,8 @@
 // cutIntoPieces). A draw's first triangle's number rides with its record (DrawItem's
 // firstTriangle, an instanced attribute) and a fragment adds gl_PrimitiveID, which counts the
 // triangles of its draw; render::RayScene turns the number into its hierarchy's triangle.
-// Read under --shadow-rays all on OpenGL 4.5 only (shaders/main.frag.glsl's RAYS_FROM_DRAWN):
+// Read under --shadow-rays all and uncertain on OpenGL 4.5 only (shaders/main.frag.glsl's
+// RAYS_FROM_DRAWN):
 // OpenGL ES 3.0 (WebGL2) has neither base instances nor gl_PrimitiveID.
 // No GL here.
 #pragma once

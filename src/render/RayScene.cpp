@@ -74,7 +74,7 @@ const RayScene* RayScene::forFrame(const Scene& scene, const RenderOptions& opti
 
 void RayScene::updateStarts(const DrawnTriangles& drawn) {
     const std::size_t objects = mCasters.size();
-    // The hierarchy may have been built for frames that read no table (uncertain's).
+    // Made again only when the hierarchy was rebuilt or the drawn numbering changed.
     bool same = mStarts && mStartsBuild == mBuilds && mStartKey.size() == objects;
     for (std::size_t o = 0; same && o < objects; ++o)
         same = mStartKey[o] == drawn.objectFirst(o);
