@@ -8,8 +8,8 @@ namespace {
 void requireImages() {
     if (!activeCaps().imageStore) {
         throw Error(ErrorKind::Gl,
-                    "image stores (gnomon score's visibility) are not available in OpenGL ES "
-                    "3.0 / WebGL2");
+                    "image stores (gnomon score's visibility, the shadow rays' list) are not "
+                    "available in OpenGL ES 3.0 / WebGL2");
     }
 }
 }  // namespace
@@ -23,6 +23,16 @@ void setDepthClamp(bool on) {
 void setSrgbWrites(bool on) {
     if (!activeCaps().srgbWriteControl) return;
     on ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
+}
+
+ScissorPause::ScissorPause() : mOn(glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE) {
+    if (!mOn) return;
+    glGetIntegerv(GL_SCISSOR_BOX, mBox);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+ScissorPause::~ScissorPause() {
+    if (mOn) glEnable(GL_SCISSOR_TEST);
 }
 
 void bindImage(int unit, const Texture& texture, GLenum format, GLenum access) {

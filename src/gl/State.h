@@ -22,6 +22,23 @@ void imageStoresDone();
 // ... and also by the image loads, atomics and texture clears of later passes.
 void imageStoresRead();
 
+// Turns the scissor test off for its lifetime, and on again after if it was on: a clear or a
+// pass over a whole texture inside a screen tile's scissor.
+class ScissorPause {
+public:
+    ScissorPause();
+    ~ScissorPause();
+    ScissorPause(const ScissorPause&) = delete;
+    ScissorPause& operator=(const ScissorPause&) = delete;
+    bool wasOn() const { return mOn; }
+    // The scissor's box as it was (x, y, width, height); meaningful where wasOn().
+    const GLint* box() const { return mBox; }
+
+private:
+    bool mOn = false;
+    GLint mBox[4] = {0, 0, 0, 0};
+};
+
 // Waits until the GPU has done every command given so far (pass timing). glFinish natively; a
 // browser's WebGL finish() does not wait, so in the page a one-texel read of a target of its
 // own, which the browser answers only once the commands before it are done.

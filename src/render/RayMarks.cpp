@@ -124,13 +124,11 @@ void RayMarks::allocateLevels(long long bytes) {
     }
     // The levels' passes draw only the texels over the image (number()): every other texel
     // reads 0, as cleared here once. A clear obeys the scissor test, which a tile may have on.
-    const bool scissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
-    if (scissor) glDisable(GL_SCISSOR_TEST);
+    const gl::ScissorPause whole;
     for (gl::Framebuffer& levels : mLevels) {
         for (int buffer = 0; buffer < 3; ++buffer)
             levels.clearUnsignedZero(buffer);
     }
-    if (scissor) glEnable(GL_SCISSOR_TEST);
 }
 
 // The first draw's target, the marks' and the second draw's.
@@ -285,16 +283,25 @@ glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
     }
 
     if (mList) list();  // under a tile's scissor: only the pixels this draw marked
-    const bool scissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
-    glm::ivec4 marked(0, 0, mWidth, mHeight);
-    if (scissor) {
-        glGetIntegerv(GL_SCISSOR_BOX, &marked.x);
-        marked = glm::ivec4(marked.x, marked.y, marked.x + marked.z, marked.y + marked.w);
-        glDisable(GL_SCISSOR_TEST);
-    }
-    if (!mList) number(colour, marked);
-
     const glm::ivec2 numbering(mSide, mLevelCount);
+    {
+        const gl::ScissorPause whole;  // the numbering and the rays' pass cover their textures
+        const GLint* b = whole.box();
+        if (!mList) {
+            number(colour, whole.wasOn() ? glm::ivec4(b[0], b[1], b[0] + b[2], b[1] + b[3])
+                                         : glm::ivec4(0, 0, mWidth, mHeight));
+        }
+        traceJobs(in, numbering);
+    }
+    glViewport(0, 0, mWidth, mHeight);
+    glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
+    bindRaw(14, mList ? mAnswers : mPyramid);
+    return mList ? glm::ivec2(0) : numbering;
+}
+
+// The rays' pass: a fragment per numbered job, its answer under the pyramid (and, on OpenGL
+// 4.5, at its pixel in mAnswers).
+void RayMarks::traceJobs(const RayTraceInputs& in, glm::ivec2 numbering) {
     glBindFramebuffer(GL_FRAMEBUFFER, mTrace.id());
     glViewport(0, mSide / 2, mSide, mResultRows);
     gl::use(mTraceProgram);
@@ -311,12 +318,6 @@ glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
         gl::imageStoresRead();
         gl::unbindImage(1, GL_R32UI);
     }
-
-    if (scissor) glEnable(GL_SCISSOR_TEST);
-    glViewport(0, 0, mWidth, mHeight);
-    glBindFramebuffer(GL_FRAMEBUFFER, mTarget.id());
-    bindRaw(14, mList ? mAnswers : mPyramid);
-    return mList ? glm::ivec2(0) : numbering;
 }
 
 }  // namespace gnomon::render

@@ -87,6 +87,7 @@ private:
     void mark(const gl::Texture& colour, const gl::Texture& depth);
     void number(const gl::Texture& colour, glm::ivec4 marked);
     void list();
+    void traceJobs(const RayTraceInputs& in, glm::ivec2 numbering);
 
     gl::Program mMarkProgram, mLevelOne, mLevelAbove, mListProgram, mTraceProgram;
     int mTraceLights = 0;        // the MAX_LIGHTS mTraceProgram was built for
