@@ -11,7 +11,7 @@
 layout(location = 5) uniform vec3 uEye;
 #include "ray_pyramid.glsl"
 #include "shadow_rays.glsl"
-layout(binding = 15) uniform highp usampler2DArray uRayJobs;
+layout(binding = 15) uniform highp usampler2D uRayJobs;
 layout(location = 0) out uint fResult;
 #ifndef GNOMON_GLES
 layout(r32ui, binding = 1) uniform writeonly uimage2D uRayAnswersImage;
@@ -38,30 +38,29 @@ int nextLight(uint records, int slot, Receiver r, out RayTrip q, out LightRecord
 }
 
 void main() {
-    ivec2 t = ivec2(gl_FragCoord.xy) - ivec2(0, uRayPyramidSize.x / 2);  // under the pyramid
+    ivec2 t = ivec2(gl_FragCoord.xy) - ivec2(0, rayAnswerRow());
     int j = rayJobAt(t);
     fResult = 0u;
     if (j >= rayJobCount()) return;
     ivec2 p = rayJobPixel(j);
-    uvec4 job = texelFetch(uRayJobs, ivec3(p, 0), 0);
+    uvec4 job = texelFetch(uRayJobs, p, 0);  // shadow_rays.glsl's WRITE_RAY_JOB
     Receiver r;
-    r.position = uintBitsToFloat(job.xyz);
-    uvec4 normal = texelFetch(uRayJobs, ivec3(p, 1), 0);
-    r.normal = uintBitsToFloat(normal.xyz);
+    r.pixel = vec2(p) + 0.5;
+    r.position = rayJobPoint(r.pixel, uintBitsToFloat(job.x));
+    r.normal = rayFromOctahedral(unpackSnorm2x16(job.z));
     r.planeNormal = r.normal;
     r.viewDepth = 0.0;
     r.standInError = 0.0;
-    r.pixel = vec2(p) + 0.5;
-    bool drawn = (normal.w & 0x80000000u) == 0u;
-    r.object = drawn ? -1.0 : float(normal.w & 0x7fffffffu);
-    r.drawn = drawn ? int(normal.w) : -1;
-    uint result = job.w;
+    bool drawn = (job.w & 0x80000000u) == 0u;
+    r.object = drawn ? -1.0 : float(job.w & 0x7fffffffu);
+    r.drawn = drawn ? int(job.w) : -1;
+    uint records = job.y, result = records;
     // Both lights' rays in one loop of one trace (shadow_rays.glsl's RayTrip): each lane goes
     // on to its second light as soon as its first is answered.
     RayTrip q;
     LightRecord light;
     vec3 toLight;
-    int slot = nextLight(job.w, -1, r, q, light, toLight);
+    int slot = nextLight(records, -1, r, q, light, toLight);
     while (slot < 2) {
         if (q.step != kRayDone) {
             int hit;
@@ -70,7 +69,7 @@ void main() {
         }
         if (q.step == kRayDone) {
             if (q.t < 0.0) result |= kRayLitBit << uint(16 * slot);
-            slot = nextLight(job.w, slot, r, q, light, toLight);
+            slot = nextLight(records, slot, r, q, light, toLight);
         }
     }
     fResult = result;

@@ -320,6 +320,28 @@ const uint kNoRayRecord = 0x7fffu;
 const uint kRayLitBit = 0x8000u;
 const uint kNoRayRecords = 0x7fff7fffu;
 
+// A ray job in one texel: the point as its distance along the pixel's own ray, the lights'
+// records, rayNormal in octahedral form at 16 bits a coordinate (Cigolle et al., "A Survey of
+// Efficient Representations for Independent Unit Vectors", JCGT 2014) and the surface
+// (rayJobSurface).
+vec2 rayOctahedral(vec3 n) {
+    vec2 p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
+    vec2 s = vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    return n.z >= 0.0 ? p : (1.0 - abs(p.yx)) * s;
+}
+vec3 rayFromOctahedral(vec2 e) {
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    vec2 s = vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+    if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * s;
+    return normalize(n);
+}
+// The job's point from its distance along the pixel's ray (pixelRay).
+vec3 rayJobPoint(vec2 pixel, float along) {
+    vec3 from, dir;
+    pixelRay(pixel, from, dir);
+    return from + along * dir;
+}
+
 #ifdef SHADOW_RAYS_UNCERTAIN
 // Hybrid shadows (J. Story, "Hybrid Ray-Traced Shadows", GDC 2015): the map is unsure where its
 // filter's footprint holds both lit and shadowed texels (a shadow's edge, a caster thinner than
@@ -340,8 +362,7 @@ const float kUnsureCosine = 0.12;
 const uint kRayJobUnread = 0xffffffffu;
 #ifdef SHADOW_RAYS_MARK
 #define RAY_JOB_START kNoRayRecords
-layout(location = 1) out uvec4 fRayJob;        // the point's bits, the lights' records
-layout(location = 2) out uvec4 fRayJobNormal;  // rayNormal's bits, rayJobSurface
+layout(location = 1) out uvec4 fRayJob;  // rayJobAlong's bits, the records, the normal, surface
 void noteRayJob(inout uint job, int record) {
     if ((job & kRayRecordBits) == kNoRayRecord) {
         job = (job & ~kRayRecordBits) | uint(record);
@@ -353,9 +374,15 @@ void noteRayJob(inout uint job, int record) {
 uint rayJobSurface(Receiver r) {
     return r.drawn >= 0 ? uint(r.drawn) : (0x80000000u | uint(r.object));
 }
-#define WRITE_RAY_JOB(r, job)                                   \
-    fRayJob = uvec4(floatBitsToUint(r.position), job);          \
-    fRayJobNormal = uvec4(floatBitsToUint(rayNormal(r)), rayJobSurface(r));
+// How far along the pixel's own ray its point lies.
+float rayJobAlong(Receiver r) {
+    vec3 from, dir;
+    pixelRay(r.pixel, from, dir);
+    return dot(r.position - from, dir);
+}
+#define WRITE_RAY_JOB(r, job)                                                      \
+    fRayJob = uvec4(floatBitsToUint(rayJobAlong(r)), job,                          \
+                    packSnorm2x16(rayOctahedral(rayNormal(r))), rayJobSurface(r));
 #elif defined(SHADOW_RAYS_RESOLVE)
 #define RAY_JOB_START kRayJobUnread
 #ifdef GNOMON_GLES

@@ -138,6 +138,16 @@ void Framebuffer::drawColour0() {
     glDrawBuffers(1, &colour0);
 }
 
+void Framebuffer::emptyOfSize(int width, int height) {
+    if (!dsa()) {
+        throw Error(ErrorKind::Gl,
+                    "framebuffer '" + mLabel + "': one without attachments needs OpenGL 4.5");
+    }
+    glNamedFramebufferParameteri(id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
+    glNamedFramebufferParameteri(id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+    glNamedFramebufferDrawBuffer(id(), GL_NONE);
+}
+
 void Framebuffer::drawBuffers(const std::vector<GLenum>& buffers) {
     if (dsa()) {
         glNamedFramebufferDrawBuffers(id(), GLsizei(buffers.size()), buffers.data());

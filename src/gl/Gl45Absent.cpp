@@ -92,6 +92,9 @@ void glNamedBufferSubData(GLuint, GLintptr, GLsizeiptr, const void*) {
 void glNamedFramebufferDrawBuffer(GLuint, GLenum) {
     absent("glNamedFramebufferDrawBuffer");
 }
+void glNamedFramebufferParameteri(GLuint, GLenum, GLint) {
+    absent("glNamedFramebufferParameteri");
+}
 void glNamedFramebufferDrawBuffers(GLuint, GLsizei, const GLenum*) {
     absent("glNamedFramebufferDrawBuffers");
 }

@@ -19,6 +19,8 @@
 #define GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS 0x8DA8
 #define GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER 0x8CDC
 #define GL_FRAMEBUFFER_SRGB 0x8DB9
+#define GL_FRAMEBUFFER_DEFAULT_WIDTH 0x9310
+#define GL_FRAMEBUFFER_DEFAULT_HEIGHT 0x9311
 #define GL_MAX_TEXTURE_BUFFER_SIZE 0x8C2B
 #define GL_RGBA16 0x805B
 #define GL_SAMPLES_PASSED 0x8914
@@ -62,6 +64,7 @@ void glMultiDrawElementsIndirect(GLenum, GLenum, const void*, GLsizei, GLsizei);
 void glNamedBufferStorage(GLuint, GLsizeiptr, const void*, GLbitfield);
 void glNamedBufferSubData(GLuint, GLintptr, GLsizeiptr, const void*);
 void glNamedFramebufferDrawBuffer(GLuint, GLenum);
+void glNamedFramebufferParameteri(GLuint, GLenum, GLint);
 void glNamedFramebufferDrawBuffers(GLuint, GLsizei, const GLenum*);
 void glNamedFramebufferReadBuffer(GLuint, GLenum);
 void glNamedFramebufferTexture(GLuint, GLenum, GLuint, GLint);

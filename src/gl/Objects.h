@@ -194,6 +194,9 @@ public:
     void depthOnly();
     // Draws into colour attachment 0 only.
     void drawColour0();
+    // No attachments: draws of width x height pixels whose fragments only store to images
+    // (OpenGL 4.5; ES 3.0 has no such framebuffer).
+    void emptyOfSize(int width, int height);
     // Fragment output i goes to buffers[i] (GL_COLOR_ATTACHMENTi or GL_NONE).
     void drawBuffers(const std::vector<GLenum>& buffers);
     void clearDepth(float depth);

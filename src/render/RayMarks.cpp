@@ -81,28 +81,34 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
     }
     mList = gl::activeCaps().api == gl::Api::Gl45;
     mDepth = gl::Texture::plain2D("shadow-ray marks", GL_DEPTH_COMPONENT32F, mWidth, mHeight);
-    mJobs = gl::Texture::array2D("shadow-ray jobs", GL_RGBA32UI, mWidth, mHeight, 2);
-    require(mJobs, "the ray jobs of the output's pixels", 32LL * mWidth * mHeight);
+    mJobs = gl::Texture::plain2D("shadow-ray jobs", GL_RGBA32UI, mWidth, mHeight);
+    require(mJobs, "the ray jobs of the output's pixels", 16LL * mWidth * mHeight);
     nearest(mJobs);
-    // The pyramid (rows 0 to P / 2) with the rays' answers under it (rayAnswerTexel).
+    // The jobs' rows (rayAnswerTexel) from row mAnswerRow, a multiple of 4 (a job's block of
+    // 4x4 is one llvmpipe shades at once): under the list's count (OpenGL 4.5), or under the
+    // pyramid (rows 0 to P / 2), where the rays' pass writes their answers.
     const long long pixels = static_cast<long long>(mWidth) * mHeight;
     mResultRows = 4 * int((pixels + 4 * mSide - 1) / (4 * mSide));
-    mPyramid = integers("shadow-ray pyramid and answers", mSide, mSide / 2 + mResultRows);
-    // The same size as the pyramid's: WebGL draws into no framebuffer whose attachments differ.
-    mPyramidRead =
-        integers(mList ? "shadow-ray list" : "shadow-ray pyramid", mSide, mSide / 2 + mResultRows);
-    const long long numbering = 4LL * mSide * (mSide / 2 + mResultRows);
-    for (const gl::Texture* t : {&mPyramid, &mPyramidRead})
-        require(*t, "the numbering of the marked pixels", (mList ? 2 : 4) * numbering);
+    mAnswerRow = mList ? 4 : mSide / 2;
+    const int rows = mAnswerRow + mResultRows;
+    const long long numbering = 4LL * mSide * rows;
+    mPyramidRead = integers(mList ? "shadow-ray list" : "shadow-ray pyramid", mSide, rows);
+    require(mPyramidRead, "the numbering of the marked pixels", (mList ? 1 : 4) * numbering);
+    mTrace = gl::Framebuffer("shadow-ray answers");
     if (mList) {
+        // The answers go to their pixels as image stores: the pass draws into no texture.
         mAnswers = integers("shadow-ray answers", mWidth, mHeight);
         require(mAnswers, "the rays' answers", 4LL * mWidth * mHeight);
+        mTrace.emptyOfSize(mSide, rows);
     } else {
+        // The same size as the pyramid's: WebGL draws into no framebuffer whose attachments
+        // differ.
+        mPyramid = integers("shadow-ray pyramid and answers", mSide, rows);
+        require(mPyramid, "the numbering of the marked pixels", 4 * numbering);
         allocateLevels(numbering);
+        mTrace.attach(GL_COLOR_ATTACHMENT0, mPyramid);
+        mTrace.drawColour0();
     }
-    mTrace = gl::Framebuffer("shadow-ray answers");
-    mTrace.attach(GL_COLOR_ATTACHMENT0, mPyramid);
-    mTrace.drawColour0();
     mTrace.checkComplete();
     allocateDraws(colour, depth);
 }
@@ -111,7 +117,7 @@ void RayMarks::allocate(const gl::Texture& colour, const gl::Texture& depth) {
 // framebuffers, all cleared to 0 (number()). `bytes`: one texture's size.
 void RayMarks::allocateLevels(long long bytes) {
     for (gl::Texture& copy : mCopies) {
-        copy = integers("shadow-ray pyramid level", mSide, mSide / 2 + mResultRows);
+        copy = integers("shadow-ray pyramid level", mSide, mAnswerRow + mResultRows);
         require(copy, "the numbering of the marked pixels", 4 * bytes);
     }
     for (std::size_t k = 0; k < 2; ++k) {
@@ -135,10 +141,9 @@ void RayMarks::allocateLevels(long long bytes) {
 void RayMarks::allocateDraws(const gl::Texture& colour, const gl::Texture& depth) {
     mFirst = gl::Framebuffer("shadow-ray first draw");
     mFirst.attach(GL_COLOR_ATTACHMENT0, colour);
-    mFirst.attachLayer(GL_COLOR_ATTACHMENT1, mJobs, 0);
-    mFirst.attachLayer(GL_COLOR_ATTACHMENT2, mJobs, 1);
+    mFirst.attach(GL_COLOR_ATTACHMENT1, mJobs);
     mFirst.attach(GL_DEPTH_ATTACHMENT, depth);
-    mFirst.drawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2});
+    mFirst.drawBuffers({GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
     mFirst.checkComplete();
     mMarks = gl::Framebuffer("shadow-ray marks");
     mMarks.depthOnly();
@@ -303,7 +308,7 @@ glm::ivec2 RayMarks::trace(const gl::Texture& colour, const gl::Texture& depth,
 // 4.5, at its pixel in mAnswers).
 void RayMarks::traceJobs(const RayTraceInputs& in, glm::ivec2 numbering) {
     glBindFramebuffer(GL_FRAMEBUFFER, mTrace.id());
-    glViewport(0, mSide / 2, mSide, mResultRows);
+    glViewport(0, mAnswerRow, mSide, mResultRows);
     gl::use(mTraceProgram);
     bindRaw(14, mPyramidRead);
     bindRaw(15, mJobs);

@@ -61,7 +61,7 @@ public:
     // pass. After prepare().
     bool compacts();
     // Binds the first draw's target when compacts(): `colour` and `depth` with the ray jobs
-    // beside them (draw buffers 1 and 2).
+    // beside them (draw buffer 1).
     void bindFirstDraw();
     // After the first draw: marks the pixels whose alpha in `colour` is 0 with their depth from
     // `depth`, and leaves target() bound. With `compact`, also numbers them, traces their jobs
@@ -94,14 +94,15 @@ private:
     bool mTraceCutouts = false;  // whether it was built with BVH_CUTOUTS
     gl::VertexArray mEmpty;
     gl::Texture mDepth;    // the marks' depth
-    gl::Texture mJobs;     // two layers of RGBA32UI per pixel (main.frag.glsl)
-    gl::Texture mPyramid;  // every level side by side (ray_pyramid.glsl), answers under
+    gl::Texture mJobs;     // a texel of RGBA32UI per pixel (shadow_rays.glsl WRITE_RAY_JOB)
+    gl::Texture mPyramid;  // ES 3.0: every level side by side (ray_pyramid.glsl), answers under
     gl::Texture
         mPyramidRead;      // the levels again, for the rays' pass to read (OpenGL 4.5: the list)
     gl::Texture mAnswers;  // OpenGL 4.5: the rays' answers at their pixels
     bool mList = false;    // OpenGL 4.5: the marks pass lists the marked pixels
     std::array<gl::Texture, 2> mCopies;  // the last level drawn, for the next one to read
-    int mResultRows = 1;                 // rows of answers under the pyramid
+    int mResultRows = 1;                 // rows of jobs (rayAnswerTexel)
+    int mAnswerRow = 4;                  // the first of them: 4 (the list) or P / 2 (pyramid)
     gl::Framebuffer mFirst, mMarks, mTarget, mTrace;
     std::array<gl::Framebuffer, 2> mLevels;  // the pyramid with either copy
     GLuint mColour = 0, mFrameDepth = 0;     // the textures mFirst and mTarget hold
