@@ -1,18 +1,18 @@
 // Shadow rays only where the maps were unsure, in passes of their own (--shadow-rays
 // uncertain). The main pass first draws every opaque surface with the maps' answers: alpha 0
 // where some lookup was unsure and, into bindFirstDraw()'s target, beside the colour that
-// pixel's ray job (its point, normal and the lights to trace: main.frag.glsl's
-// SHADOW_RAYS_MARK). Then trace() turns the marked pixels into a depth target holding their
-// depth and 0 elsewhere, numbers them (OpenGL 4.5: a list the marks pass appends to; ES 3.0: a
-// histogram pyramid; shaders/ray_pyramid.glsl) and traces their jobs in a pass of one fragment
-// per marked pixel (ray_trace.frag.glsl); the
-// opaque surfaces drawn again into target() (depth LEQUAL, no writes) are shaded only there,
-// with those rays' answers (SHADOW_RAYS_RESOLVE). A frame with few marked pixels skips the
-// jobs and the pass, and its second draw traces them itself (compacts()). On a CPU driver an `if`
-// only masks lanes: ray code in the first draw cost every pixel the set-up and first steps of a
-// traversal whether it traced or not, and rays traced in the second draw ran one marked pixel to a
-// vector whose other lanes waited; a failed depth test skips whole blocks of pixels before their
-// shader runs.
+// pixel's ray job (its point, normal and the lights to trace: shadow_rays.glsl's
+// WRITE_RAY_JOB). Then trace() turns the marked pixels into a depth target holding their
+// depth and 0 elsewhere, numbers them (OpenGL 4.5: a pass over the marked pixels alone appends
+// them to a list; ES 3.0: a histogram pyramid; shaders/ray_pyramid.glsl) and traces their jobs
+// in a pass of one fragment per marked pixel (ray_trace.frag.glsl); the opaque surfaces drawn
+// again into target() (depth LEQUAL, no writes) are shaded only there, with those rays'
+// answers (SHADOW_RAYS_RESOLVE). A frame with few marked pixels skips the jobs and the pass,
+// and its second draw traces them itself (compacts()). On a CPU driver an `if` only masks
+// lanes: ray code in the first draw cost every pixel the set-up and first steps of a traversal
+// whether it traced or not, and rays traced in the second draw ran one marked pixel to a
+// vector whose other lanes waited; a failed depth test skips whole blocks of pixels before
+// their shader runs.
 #pragma once
 
 #include <array>
@@ -99,7 +99,7 @@ private:
     gl::Texture
         mPyramidRead;      // the levels again, for the rays' pass to read (OpenGL 4.5: the list)
     gl::Texture mAnswers;  // OpenGL 4.5: the rays' answers at their pixels
-    bool mList = false;    // OpenGL 4.5: the marks pass lists the marked pixels
+    bool mList = false;    // OpenGL 4.5: list() numbers the marked pixels
     std::array<gl::Texture, 2> mCopies;  // the last level drawn, for the next one to read
     int mResultRows = 1;                 // rows of jobs (rayAnswerTexel)
     int mAnswerRow = 4;                  // the first of them: 4 (the list) or P / 2 (pyramid)
