@@ -3,9 +3,10 @@
 // fragment per marked pixel (ray_pyramid.glsl numbers them): the pixel's ray job (its point,
 // its normal, the triangle drawn or the object, the records of up to two lights a map was
 // unsure of: shadow_rays.glsl's SHADOW_RAYS_MARK) traced as the main pass would
-// (rayVisibility), each light's answer as the top bit of its record's half: under the pyramid
-// in its fragment's texel and, on OpenGL 4.5, at the pixel too, where the second draw reads it
-// (ES 3.0 has no image stores: the second draw finds the pixel's number in the pyramid).
+// (rayVisibility), each light's answer as the top bit of its record's half, where the second
+// draw reads it: on OpenGL 4.5 stored at the pixel (the pass draws into no texture); on ES 3.0,
+// which has no image stores, in the fragment's texel under the pyramid, where the second draw
+// finds the pixel's number.
 #include "lights.glsl"
 #include "shadow_sample.glsl"
 layout(location = 5) uniform vec3 uEye;
