@@ -235,6 +235,37 @@ TapPlane mapPlane(LightRecord light, Receiver r, vec3 wsToLight, vec4 clip, vec3
     return plane;
 }
 
+#if defined(EDGE_MAPS) && defined(RECEIVER_PLANE)
+// The casters' outlines beside the 2D maps (render/EdgeMaps.h): per texel the nearest line's
+// point there, its 1 - depth in 24 bits above its offset from the texel's centre (0: none).
+layout(binding = 17) uniform highp usampler2DArray uEdgeMaps;
+// The share of a texel's step along the receiver's plane, and the depth, by which a line must
+// lie nearer the light than the plane: what the plane's rounding and the offsets' eighths of
+// a texel may stray.
+const float kEdgeSlack = 0.1;
+const float kEdgeDepthSlack = 4e-7;
+// Does a caster's outline in the four texels around the receiver's own point `p` (map
+// coordinates and depth, without the lookup's offsets) lie nearer the light than the
+// receiver's plane at that line's point? Then something may shadow the receiver that the map,
+// which holds only its texels' centres, does not show.
+bool edgeAbovePlane(MapTap m, TapPlane plane, vec3 p) {
+    vec2 uvP = m.origin + p.xy * m.scale;
+    vec2 s = uvP / m.texelUv - 0.5;
+    vec2 first = floor(m.origin / m.texelUv + 0.5);
+    vec2 last = first + floor(m.scale / m.texelUv + 0.5) - 2.0;
+    vec2 base = clamp(floor(s), first, last);
+    // x (k, k+1), y (k+1, k+1), z (k+1, k), w (k, k) as (column, row), as GATHER_LAYER.
+    uvec4 e = textureGather(uEdgeMaps, vec3((base + 1.0) * m.texelUv, m.layer));
+    vec4 depth = 1.0 - vec4(e >> 8u) / 16777215.0;
+    vec4 ox = vec4((e >> 4u) & 15u) / 8.0 - 1.0, oy = vec4(e & 15u) / 8.0 - 1.0;
+    vec2 full = plane.full * m.texelUv;  // per texel
+    vec2 o = base - s;                   // texel k's centre from the point, in texels
+    vec4 along = dot(full, o) + full.x * (vec4(0.0, 1.0, 1.0, 0.0) + ox) +
+                 full.y * (vec4(1.0, 1.0, 0.0, 0.0) + oy);
+    float slack = kEdgeSlack * (abs(full.x) + abs(full.y)) + kEdgeDepthSlack;
+    return any(lessThan(depth, p.z + along - slack));
+}
+#endif
 // One single-frustum map: orthographic or perspective, a light's own or one cascade's.
 ShadowSample mapVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
     ShadowSample result = kLitSample;
@@ -275,6 +306,11 @@ ShadowSample mapVisibility(LightRecord light, Receiver r, vec3 wsToLight) {
 #endif
     TapPlane plane = mapPlane(light, r, wsToLight, shadowCoord, coord, texelWorld, m);
     result.visibility = mapFilter(light, r, wsToLight, m, plane, coord.z);
+#if defined(EDGE_MAPS) && defined(RECEIVER_PLANE)
+    if (result.visibility == 1.0 && clip.w > 0.0 && edgeAbovePlane(m, plane, clip.xyz / clip.w)) {
+        result.visibility = 0.5;  // unsure: a ray decides (shadow_rays.glsl)
+    }
+#endif
     return result;
 }
 

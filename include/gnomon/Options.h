@@ -176,6 +176,10 @@ struct ShadowOptions {
     // shadows, the error and timing reference; no map is drawn but for coloured shadows' tints
     // and --debug-view shadow-map).
     ShadowRayMode shadowRays = ShadowRayMode::Off;
+    // Under Uncertain (OpenGL 4.5): each single-frustum map's casters' outlines drawn beside it,
+    // so that a caster thinner than a texel, missing from the map, still sends the lookups
+    // within a texel of it to rays (render/EdgeMaps.h).
+    bool casterOutlines = true;
 
     bool operator==(const ShadowOptions&) const = default;
 };

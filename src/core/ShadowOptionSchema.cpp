@@ -12,6 +12,9 @@ bool raysTraced(const RenderOptions& o) {
     return o.shadow.shadowRays == ShadowRayMode::Off ? o.shadow.enabled
                                                      : tracesShadowRays(o.shadow);
 }
+bool outlinesDrawn(const RenderOptions& o) {
+    return o.shadow.shadowRays == ShadowRayMode::Uncertain && tracesShadowRays(o.shadow);
+}
 bool momentFilters(const RenderOptions& o) {
     return isMomentFilter(o.shadow.filter);
 }
@@ -135,8 +138,11 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
                 "for coloured shadows' tints and --debug-view shadow-map. uncertain: the map "
                 "answers where it is sure, a ray "
                 "where its filter's footprint is part lit and part shadowed (edges, thin "
-                "casters), where a texel is lit only within the tolerance band, or where it "
-                "finds lit a surface within 7 degrees of edge-on to the light, traced in a "
+                "casters), where a texel is lit only within the tolerance band, where it "
+                "finds lit a surface within 7 degrees of edge-on to the light, or (OpenGL 4.5, "
+                "single-frustum maps) where a caster's outline as the light sees it, drawn "
+                "beside the map as lines, passes within a texel nearer the light than the "
+                "surface (a caster thinner than a texel), traced in a "
                 "pass of those pixels alone; under "
                 "pcss and the moment filters, whose penumbra is their look, the map answers "
                 "everywhere",
@@ -146,6 +152,20 @@ void addShadowMaps(std::vector<OptionSpec>& s) {
          .matters = raysTraced,
          .onlyWith = "--shadows on (uncertain: with a filter whose look is no wider penumbra: "
                      "none, hw2x2, pcf, poisson)"});
+    add({.name = "caster-outlines",
+         .group = G::ShadowMaps,
+         .doc = "under --shadow-rays uncertain (OpenGL 4.5): draw each single-frustum map's "
+                "casters' outlines as the light sees them (edges between a triangle facing it "
+                "and one facing away, and open borders) beside the map as lines, and send to a "
+                "ray a lookup the map is sure of where an outline within its four texels lies "
+                "nearer the light than the surface: a caster thinner than a texel, which the map "
+                "can miss, keeps its shadow. off: no outline pass and no outline memory (4 bytes "
+                "a map texel), and such casters leak",
+         .kind = K::Switch,
+         .max = 1,
+         NUMBER(shadow.casterOutlines, bool),
+         .matters = outlinesDrawn,
+         .onlyWith = "--shadow-rays uncertain"});
 }
 
 // What keeps lit surfaces from shadowing themselves.

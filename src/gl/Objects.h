@@ -145,8 +145,9 @@ public:
     // The 6 faces of cube `cube` of a cube-map array set to `depth` (OpenGL 4.5; ES clears
     // through framebuffers).
     void clearCubeDepth(int cube, float depth);
-    // A rectangle of level 0 of an unsigned integer texture set to 0 (OpenGL 4.5).
-    void clearUnsignedZero(int x, int y, int width, int height);
+    // A rectangle of level 0 (of layer `layer`) of an unsigned integer texture set to 0
+    // (OpenGL 4.5).
+    void clearUnsignedZero(int x, int y, int width, int height, int layer = 0);
     // GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP_ARRAY or GL_TEXTURE_BUFFER;
     // cube-map arrays are GL_TEXTURE_2D_ARRAY of 6 layers per cube where the API lacks them.
     GLenum target() const { return mTarget; }

@@ -192,10 +192,11 @@ void Texture::clearCubeDepth(int cube, float depth) {
                        &depth);
 }
 
-void Texture::clearUnsignedZero(int x, int y, int width, int height) {
+void Texture::clearUnsignedZero(int x, int y, int width, int height, int layer) {
     if (!activeCaps().clearTexture) notOnEs("clearing part of a texture");
     const GLuint zero[4] = {0, 0, 0, 0};
-    glClearTexSubImage(id(), 0, x, y, 0, width, height, 1, GL_RGBA_INTEGER, GL_UNSIGNED_INT, zero);
+    glClearTexSubImage(id(), 0, x, y, layer, width, height, 1, GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                       zero);
 }
 
 Texture Texture::layersView(const std::string& label, const Texture& source) {

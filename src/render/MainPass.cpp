@@ -6,6 +6,7 @@
 #include "gl/Caps.h"
 #include "gl/Program.h"
 #include "gl/State.h"
+#include "render/EdgeMaps.h"
 #include "render/MainPassVariants.h"
 #include "render/RayScene.h"
 #include "render/TiledLights.h"
@@ -130,6 +131,17 @@ bool MainPass::bindMaps(const MainPassInputs& in, const ShadowOptions& so) {
         gl::bindTexture(3, in.shadowCubes ? *in.shadowCubes : mDummyCubes);
         glBindSampler(2, mRawSampler.id());
         glBindSampler(3, mRawSampler.id());
+    }
+    // The casters' outlines (EdgeMaps): unit 17, read with texelFetch and gathers.
+    if (EdgeMaps::supported()) {
+        if (!in.edgeMaps && !mNoEdges) {
+            mNoEdges = gl::Texture::array2D("no caster outlines", GL_R32UI, 1, 1, 1);
+            mNoEdges.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            mNoEdges.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            mNoEdges.clearUnsignedZero(0, 0, 1, 1);
+        }
+        gl::bindTexture(17, in.edgeMaps ? *in.edgeMaps : mNoEdges);
+        glBindSampler(17, 0);
     }
     // The moments of the moment filters: unit 6, filtered bilinearly.
     if (in.shadowMoments) {

@@ -50,6 +50,9 @@ struct MainPassInputs {
     // nothing reads them (--shadow-rays all), and a 1x1 stand-in is bound instead.
     const gl::Texture* shadowMaps = nullptr;
     const gl::Texture* shadowCubes = nullptr;
+    // The 2D maps' caster edges (EdgeMaps) under --shadow-rays uncertain; null: none drawn,
+    // and a 1x1 array without edges is bound instead.
+    const gl::Texture* edgeMaps = nullptr;
     // The 2D maps' blurred moments (MomentPass) for the moment filters; null otherwise.
     const gl::Texture* shadowMoments = nullptr;
     // The view's depth at the output's size (ViewDepthPass) when contact shadows are on (and
@@ -154,7 +157,7 @@ private:
     gl::Sampler mMomentSampler;  // moments: LINEAR, clamped (one bilinear lookup filters them)
     gl::Sampler mTintSampler;    // 2D transmittance maps: LINEAR, clamped
     int mMapSamplerKey = -1, mCubeSamplerKey = -1;          // the filters they were made for
-    gl::Texture mDummyMaps, mDummyCubes;                    // bound when a kind of map is absent
+    gl::Texture mDummyMaps, mDummyCubes, mNoEdges;          // bound when a kind of map is absent
     std::vector<std::pair<float, std::uint32_t>> mBlended;  // distance, item: reused per frame
     std::vector<std::uint32_t> mBackFaces;  // opaque double-sided items: reused per frame
     RayMarks mRayMarks;

@@ -1,5 +1,7 @@
 #include "render/MainVariant.h"
 
+#include "render/EdgeMaps.h"
+
 #include "render/MainPassVariants.h"
 
 namespace gnomon::render {
@@ -88,6 +90,7 @@ std::vector<std::string> choiceDefines(const MainVariant& v) {
     if (v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain) ||
         v.shadowRays == MainVariant::kRaysMarked)
         d.push_back("SHADOW_RAYS_UNCERTAIN");
+    if (v.casterOutlines) d.push_back("EDGE_MAPS");
     if (v.shadowRays == MainVariant::kRaysMarked) d.push_back("SHADOW_RAYS_MARK");
     if (v.raysResolve) d.push_back("SHADOW_RAYS_RESOLVE");
     if (v.rayOverflow) d.push_back("RAY_JOB_OVERFLOW");
@@ -155,6 +158,8 @@ MainVariant variantOf(const RenderOptions& options, bool floor, bool receiverOnl
         v.dither = options.shading.output == OutputEncoding::Srgb ? 2 : 1;
     v.shadowedFactor = options.shading.shadowedRule == ShadowedRule::Factor;
     v.shadowRays = tracesShadowRays(s) ? MainVariant::Bits(s.shadowRays) : 0;
+    v.casterOutlines = v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain) &&
+                       s.casterOutlines && EdgeMaps::supported();
     v.debugRays = options.debugView == DebugView::Rays;
     v.floor = floor;
     return v;

@@ -60,8 +60,8 @@ struct MainVariant {
     // job's two (RAY_JOB_OVERFLOW: the draw may have more than two shadowed lights).
     Bits raysResolve : 1 = 0;
     Bits rayOverflow : 1 = 0;
-    Bits rayCutouts : 1 = 0;  // some caster a ray meets is masked or blended (BVH_CUTOUTS)
-    Bits unused : 1 = 0;
+    Bits rayCutouts : 1 = 0;      // some caster a ray meets is masked or blended (BVH_CUTOUTS)
+    Bits casterOutlines : 1 = 0;  // uncertain reads the maps' outlines (EDGE_MAPS)
 
     // The bits as one number (memcpy: libc++ 14, the web build's, has no std::bit_cast).
     std::uint64_t key() const {

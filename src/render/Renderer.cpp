@@ -182,6 +182,9 @@ struct Renderer::Impl {
     void drawRelative(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility,
                       const Camera* fitCamera) {
         scene.sync(s, options.time, options.shadow.casterDetail);
+        if (options.shadow.shadowRays == ShadowRayMode::Uncertain &&
+            options.shadow.casterOutlines && render::EdgeMaps::supported())
+            shadows.depth().edges().sync(s, scene, options.time);
 
         const float aspect = float(options.width) / float(options.height);
         // The view's own depth (the view depth pass, the main pass, what is read back from

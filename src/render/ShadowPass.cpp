@@ -162,7 +162,7 @@ std::size_t ShadowPass::bytes() const {
         if (*t)
             total += std::size_t(t->width()) * t->height() * t->layers() * texelBytes(t->format());
     }
-    return total;
+    return total + (mEdges.allocated() ? mEdges.bytes() : 0);
 }
 
 void ShadowPass::setDepthState(const ShadowOptions& options, bool depthClamp) const {
@@ -327,6 +327,10 @@ void ShadowPass::drawMap(const GpuScene& scene, const shadow::FramePlan& plan,
             if (square) glDisable(GL_SCISSOR_TEST);
         }
         drawCasters(scene, plan, light, options, variant, 1, [&] { gl::uniform(1, m[0]); });
+        if (mEdgesOn) {
+            mEdges.draw(scene, plan, light, m[0]);
+            scene.bind();
+        }
     } else {
         // Only this light's six faces are cleared; other cubes keep their maps. Without
         // texture clears (ES), through the faces' framebuffers, which that path always has.
@@ -381,6 +385,14 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePla
                                    const ShadowOptions& options, PassClock* clock,
                                    std::vector<PassTiming>* timings) {
     allocate(plan.layout());
+    const bool edges = options.shadowRays == ShadowRayMode::Uncertain && options.casterOutlines &&
+                       EdgeMaps::supported() && mMaps && !isColourFormat(mMapFormat);
+    if (edges) {
+        mEdges.allocate(mMaps.width(), mMaps.layers());
+    } else {
+        mEdges.release();
+    }
+    mEdgesOn = edges;
     const std::vector<ShadowedLight>& lights = plan.shadowed();
     const std::size_t count2D = orderPasses(lights);
     mHeld.maps2D.resize(count2D);

@@ -15,6 +15,7 @@
 #include "gl/Objects.h"
 #include "gnomon/Options.h"
 #include "gnomon/Renderer.h"
+#include "render/EdgeMaps.h"
 #include "render/GpuScene.h"
 #include "shadow/FramePlan.h"
 
@@ -76,6 +77,10 @@ public:
     // The maps the last render() drew (the others were kept): indices into its `lights`.
     const std::vector<int>& drawn() const { return mDrawn; }
     std::size_t bytes() const;
+    // The 2D maps' caster edges (EdgeMaps), drawn under --shadow-rays uncertain where the
+    // driver can; null otherwise.
+    const gl::Texture* edgeMaps() const { return mEdges.allocated() ? &mEdges.maps() : nullptr; }
+    EdgeMaps& edges() { return mEdges; }
     // A light's map as 16-bit grey, top row first (darker = nearer); cubes unfold as a
     // horizontal strip of the six faces +X, -X, +Y, -Y, +Z, -Z.
     Image16 readBack(const ShadowedLight& light) const;
@@ -128,6 +133,8 @@ private:
     // llvmpipe among them), else square by square.
     enum class LayerClear : std::uint8_t { Whole, Done, Squares };
     std::vector<LayerClear> mLayerClears;
+    EdgeMaps mEdges;
+    bool mEdgesOn = false;   // this frame's 2D maps draw their casters' edges too
     gl::Texture mBareDepth;  // bareDepthPass's target
     gl::Framebuffer mBareFramebuffer;
     int mGeneration = 0;

@@ -60,6 +60,7 @@ void ShadowPasses::draw(const GpuScene& scene, const shadow::FramePlan& plan,
     // only where the lookups read them.
     in.shadowMaps = any2D && !rays ? &mDepth.maps() : nullptr;
     in.shadowCubes = anyCube && !rays ? &mDepth.cubes() : nullptr;
+    in.edgeMaps = any2D && !rays ? mDepth.edgeMaps() : nullptr;
     in.shadowMoments = any2D && moments ? &mMoments.moments() : nullptr;
     in.transmittance = tinted ? &mTransmittance : nullptr;
 }

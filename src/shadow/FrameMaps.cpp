@@ -149,6 +149,7 @@ void FramePlan::collectCasters(const PlanScene& scene, const ShadowOptions& opti
         key.depthClamp = l.depthClamp;
         key.format = options.depthFormat;
         key.blend = options.blendShadows;
+        key.edges = options.shadowRays == ShadowRayMode::Uncertain && options.casterOutlines;
         key.faces = cube ? l.frame.faces : kAllCubeFaces;
         key.eye = glm::vec3(glm::inverse(l.frame.lightFromWorld)[3]);
         key.near = l.frame.near;

@@ -54,6 +54,7 @@ struct MapKey {
     bool depthClamp = false;
     DepthFormat format = DepthFormat::Depth32F;
     BlendShadows blend = BlendShadows::Dithered;
+    bool edges = false;                  // with the casters' edges beside it (render/EdgeMaps.h)
     std::uint8_t faces = kAllCubeFaces;  // cubes: the faces drawn
     // What a lookup needs of the camera besides clipFromWorld (all follow from it): where it
     // stood (a cube's origin), its depth range and texel size (LightCameraFrame's).
@@ -66,7 +67,8 @@ struct MapKey {
     bool samePlace(const MapKey& want) const {
         return castersHash != ~0ull && mapSize == want.mapSize && place == want.place &&
                cull == want.cull && slope == want.slope && units == want.units &&
-               depthClamp == want.depthClamp && format == want.format && blend == want.blend;
+               depthClamp == want.depthClamp && format == want.format && blend == want.blend &&
+               edges == want.edges;
     }
     // A map drawn as `this` serves `want`: the same, its faces a superset of want's.
     bool serves(const MapKey& want) const {
