@@ -34,15 +34,15 @@ void EdgeMaps::allocate(int size, int layers) {
         release();
         throw Error(ErrorKind::Gl, "--shadow-rays uncertain: the casters' outline maps need " +
                                        std::to_string(bytes >> 20) +
-                                       " MiB, which the OpenGL driver refused; lower --map-size "
-                                       "or trace every lookup (--shadow-rays all)");
+                                       " MiB, which the OpenGL driver refused; lower --map-size, "
+                                       "leave them out (--caster-outlines off) or trace every "
+                                       "lookup (--shadow-rays all)");
     }
     mEdges.setParameter(GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     mEdges.setParameter(GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     mTarget = gl::Framebuffer("caster outlines");
     mTarget.emptyOfSize(size, size);
-    // Cleared as colour targets: llvmpipe clears a target's tiles in its own threads, where a
-    // texture clear is one memset on the caller's.
+    // Per layer, a framebuffer to clear a map's square through, as the maps' own are cleared.
     for (int layer = 0; layer < layers; ++layer) {
         gl::Framebuffer fb("caster outlines layer " + std::to_string(layer));
         fb.attachLayer(GL_COLOR_ATTACHMENT0, mEdges, layer);
