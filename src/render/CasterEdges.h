@@ -23,6 +23,7 @@ struct EdgeVertex {
     glm::vec3 cornerA;   // the far corner of a triangle on the edge
     glm::vec4 cornerB;   // the other triangle's (w 1), or w 0: no second triangle
 };
+static_assert(sizeof(EdgeVertex) == 13 * sizeof(float), "CasterEdges::sync's attribute offsets");
 
 // `mesh`'s edges as line vertices (two per edge). Corners at the same position are one corner
 // (meshes repeat a vertex where its normal or texture coordinates change).

@@ -14,6 +14,11 @@ bool EdgeMaps::supported() {
     return gl::activeCaps().api == gl::Api::Gl45;
 }
 
+bool EdgeMaps::wanted(const ShadowOptions& options) {
+    return options.shadowRays == ShadowRayMode::Uncertain && tracesShadowRays(options) &&
+           options.casterOutlines && supported();
+}
+
 void EdgeMaps::sync(const Scene& scene, const GpuScene& gpu, double seconds) {
     mLines.sync(scene, gpu.geometryHash());
     if (mRevision == gpu.revision()) return;

@@ -24,6 +24,8 @@ class EdgeMaps {
 public:
     // Whether this driver draws them (OpenGL 4.5).
     static bool supported();
+    // Whether a frame with `options` draws them: uncertain rays traced, outlines on, supported.
+    static bool wanted(const ShadowOptions& options);
     // The outlines of `scene`'s meshes, made again when its geometry changed (`gpu`'s hash),
     // and its objects' places at `seconds`, read again when they changed (`gpu`'s revision).
     void sync(const Scene& scene, const GpuScene& gpu, double seconds);

@@ -158,8 +158,7 @@ MainVariant variantOf(const RenderOptions& options, bool floor, bool receiverOnl
         v.dither = options.shading.output == OutputEncoding::Srgb ? 2 : 1;
     v.shadowedFactor = options.shading.shadowedRule == ShadowedRule::Factor;
     v.shadowRays = tracesShadowRays(s) ? MainVariant::Bits(s.shadowRays) : 0;
-    v.casterOutlines = v.shadowRays == MainVariant::Bits(ShadowRayMode::Uncertain) &&
-                       s.casterOutlines && EdgeMaps::supported();
+    v.casterOutlines = v.shadowRays != 0 && EdgeMaps::wanted(s);
     v.debugRays = options.debugView == DebugView::Rays;
     v.floor = floor;
     return v;

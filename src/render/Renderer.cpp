@@ -182,8 +182,7 @@ struct Renderer::Impl {
     void drawRelative(const Scene& s, const RenderOptions& options, ShadowVisibility* visibility,
                       const Camera* fitCamera) {
         scene.sync(s, options.time, options.shadow.casterDetail);
-        if (options.shadow.shadowRays == ShadowRayMode::Uncertain &&
-            options.shadow.casterOutlines && render::EdgeMaps::supported())
+        if (render::EdgeMaps::wanted(options.shadow))
             shadows.depth().edges().sync(s, scene, options.time);
 
         const float aspect = float(options.width) / float(options.height);

@@ -385,8 +385,7 @@ ShadowPassStats ShadowPass::render(const GpuScene& scene, const shadow::FramePla
                                    const ShadowOptions& options, PassClock* clock,
                                    std::vector<PassTiming>* timings) {
     allocate(plan.layout());
-    const bool edges = options.shadowRays == ShadowRayMode::Uncertain && options.casterOutlines &&
-                       EdgeMaps::supported() && mMaps && !isColourFormat(mMapFormat);
+    const bool edges = EdgeMaps::wanted(options) && mMaps && !isColourFormat(mMapFormat);
     if (edges) {
         mEdges.allocate(mMaps.width(), mMaps.layers());
     } else {
