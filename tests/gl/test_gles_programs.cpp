@@ -372,6 +372,11 @@ TEST(GlesPrograms, WebGL2Lacks) {
                                    {GL_FRAGMENT_SHADER, "ray_list.frag.glsl"}},
                                   {"AT_NEAR"}),
                  Error);
+    // The casters' outlines (render/EdgeMaps.h) store with an image atomic.
+    EXPECT_THROW(
+        gl::buildProgram("shadow caster outlines", {{GL_VERTEX_SHADER, "edge.vert.glsl"},
+                                                    {GL_FRAGMENT_SHADER, "edge.frag.glsl"}}),
+        Error);
     try {
         gl::buildProgram("shadow depth cube", {{GL_VERTEX_SHADER, "depth_cube.vert.glsl"}});
         ADD_FAILURE() << "depth_cube.vert compiled in GLSL ES: build it there too";
@@ -429,7 +434,7 @@ TEST(GlesPrograms, EveryRootShaderIsBuilt) {
         "debug_lines.frag.glsl", "main.vert.glsl",         "main.frag.glsl",
         "depth_cube.vert.glsl",  "bvh_rays.frag.glsl",     "ray_marks.frag.glsl",
         "ray_pyramid.frag.glsl", "ray_trace.vert.glsl",    "ray_trace.frag.glsl",
-        "ray_list.frag.glsl"};
+        "ray_list.frag.glsl",    "edge.vert.glsl",         "edge.frag.glsl"};
     for (const std::string& name : gl::embeddedShaderNames()) {
         if (name.ends_with(".vert.glsl") || name.ends_with(".frag.glsl")) {
             EXPECT_EQ(built.count(name), 1u) << name;
